@@ -1,0 +1,27 @@
+// Handles to world objects. An id is an index plus a generation: using an id after its object
+// was destroyed is detected (the generation no longer matches) and refused with InvalidArgument.
+#pragma once
+
+#include <cstdint>
+
+namespace meff
+{
+
+template <typename Tag>
+struct Id
+{
+    std::int32_t index = -1;      ///< slot in the world's pool
+    std::uint32_t generation = 0; ///< 0 never names a live object
+
+    bool IsNull() const { return generation == 0; }
+    friend bool operator==(Id a, Id b) = default;
+};
+
+struct BodyTag;
+struct ShapeTag;
+struct JointTag;
+using BodyId = Id<BodyTag>;
+using ShapeId = Id<ShapeTag>;
+using JointId = Id<JointTag>;
+
+} // namespace meff

@@ -1,0 +1,32 @@
+// Shape definitions: material and filtering of one piece of geometry attached to a body.
+#pragma once
+
+#include "meff/math.h"
+
+#include <cstdint>
+
+namespace meff
+{
+
+/// Collision filtering, as Box2D: two shapes collide when each one's category is in the other's
+/// mask, unless they share a non-zero group (positive: always collide, negative: never).
+struct Filter
+{
+    std::uint16_t categoryBits = 0x0001;
+    std::uint16_t maskBits = 0xFFFF;
+    std::int16_t groupIndex = 0;
+};
+
+/// Everything but the geometry needed to create a shape.
+struct ShapeDef
+{
+    Real density = 1;              ///< kg/m² (area density); 0 gives the shape no mass
+    Real friction = Real(0.6);     ///< Coulomb coefficient, ≥ 0; mixed as sqrt(μA·μB)
+    Real restitution = 0;          ///< coefficient e in [0,1]; mixed as max(eA, eB)
+    Real restitutionThreshold = 1; ///< m/s; slower approaches do not bounce; mixed as min
+    Filter filter;
+    bool isSensor = false;         ///< detects overlap, never collides
+    std::uint64_t userData = 0;    ///< yours; meff never reads it
+};
+
+} // namespace meff

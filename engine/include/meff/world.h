@@ -1,0 +1,185 @@
+// The world: owns bodies, shapes, joints and contacts, and advances them in time.
+#pragma once
+
+#include "meff/body.h"
+#include "meff/collision.h"
+#include "meff/error.h"
+#include "meff/ids.h"
+#include "meff/joint.h"
+#include "meff/math.h"
+#include "meff/shape.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+namespace meff
+{
+
+/// Length tolerances of the solver and collision. Defaults are Box2D 2.4.1's constants.
+struct Tolerances
+{
+    Real linearSlop = Real(0.005);          ///< allowed penetration / joint error (m)
+    Real polygonSkin = Real(0.01);          ///< radius added to polygons and segments (m)
+    Real aabbMargin = Real(0.1);            ///< fattening of broad-phase boxes (m)
+    Real maxLinearCorrection = Real(0.2);   ///< largest position correction per iteration (m)
+    Real maxAngularCorrection = Real(8.0 / 180.0 * 3.14159265359); ///< rad
+    Real angularSlop = Real(2.0 / 180.0 * 3.14159265359);          ///< rad
+    Real maxTranslation = 2;                ///< largest move of a body in one step (m)
+    Real maxRotation = Real(0.5 * 3.14159265359); ///< largest turn of a body in one step (rad)
+    Real baumgarte = Real(0.2);             ///< fraction of overlap removed per position iteration
+};
+
+/// How the solver works. Every member may be changed between steps.
+struct SolverSettings
+{
+    int velocityIterations = 8; ///< sequential-impulse sweeps per step, ≥ 1
+    int positionIterations = 3; ///< non-linear Gauss-Seidel sweeps per step, ≥ 0
+    bool warmStarting = true;   ///< start each step from last step's impulses
+    /// Solve a two-point manifold's normal rows together as a 2×2 block (Box2D's block
+    /// solver). Off: every row alone with its scalar effective mass.
+    bool blockSolver = true;
+    /// Solve a revolute joint's point constraint as a 2×2 block (Box2D). Off: two scalar rows.
+    bool blockJoints = true;
+};
+
+/// Everything needed to create a world.
+struct WorldDef
+{
+    Vec2 gravity{0, -10}; ///< m/s²
+    SolverSettings solver;
+    Tolerances tolerances;
+    bool allowSleep = false; ///< reserved: sleeping is not modelled yet, bodies never sleep
+};
+
+/// One contact point after a step: Box2D's PostSolve data plus where the point is.
+struct ContactPointReport
+{
+    BodyId bodyA;
+    BodyId bodyB;
+    ShapeId shapeA;
+    ShapeId shapeB;
+    Vec2 point;              ///< world point midway between the surfaces (m)
+    Vec2 normal;             ///< unit normal from A to B
+    Real separation = 0;     ///< m, negative when overlapping
+    Real normalImpulse = 0;  ///< accumulated over the step's velocity iterations (N·s)
+    Real tangentImpulse = 0; ///< friction impulse along the tangent cross(normal, 1) (N·s)
+    std::uint32_t featureKey = 0; ///< ContactFeature::Key(), the point's identity
+    int pointIndex = 0;           ///< 0 or 1 within its manifold
+};
+
+/// Two shapes started or stopped touching during the last step.
+struct ContactEvent
+{
+    ShapeId shapeA;
+    ShapeId shapeB;
+};
+
+/// A joint's reaction on body B, as Box2D's GetReactionForce/GetReactionTorque.
+struct JointReaction
+{
+    Vec2 force;      ///< N
+    Real torque = 0; ///< N·m
+};
+
+namespace detail
+{
+struct WorldState;
+}
+
+class World
+{
+public:
+    explicit World(const WorldDef& def = {});
+    ~World();
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+
+    // Bodies
+    BodyId CreateBody(const BodyDef& def);
+    void DestroyBody(BodyId id); ///< also destroys its shapes, joints and contacts
+    bool IsValid(BodyId id) const;
+    BodyType GetType(BodyId id) const;
+    Vec2 GetPosition(BodyId id) const; ///< world position of the body origin (m)
+    Real GetAngle(BodyId id) const;    ///< rad
+    Transform GetTransform(BodyId id) const;
+    Vec2 GetWorldCenter(BodyId id) const; ///< centre of mass (m)
+    Vec2 GetLocalCenter(BodyId id) const; ///< centre of mass in body coordinates (m)
+    Vec2 GetLinearVelocity(BodyId id) const; ///< of the centre of mass (m/s)
+    Real GetAngularVelocity(BodyId id) const; ///< rad/s
+    Real GetMass(BodyId id) const;            ///< kg
+    Real GetRotationalInertia(BodyId id) const; ///< about the centre of mass (kg·m²)
+    std::uint64_t GetUserData(BodyId id) const;
+    Vec2 GetWorldPoint(BodyId id, Vec2 localPoint) const;
+    Vec2 GetLocalPoint(BodyId id, Vec2 worldPoint) const;
+    void SetTransform(BodyId id, Vec2 position, Real angle);
+    void SetLinearVelocity(BodyId id, Vec2 v);
+    void SetAngularVelocity(BodyId id, Real w);
+    void ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint); ///< N, until the step ends
+    void ApplyForceToCenter(BodyId id, Vec2 force);           ///< N
+    void ApplyTorque(BodyId id, Real torque);                 ///< N·m
+    void ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint); ///< N·s
+    void ApplyAngularImpulse(BodyId id, Real impulse);                 ///< N·m·s
+    /// Live bodies in creation order.
+    std::span<const BodyId> GetBodies() const;
+
+    // Shapes
+    ShapeId CreateShape(BodyId body, const ShapeDef& def, const Circle& circle);
+    ShapeId CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    ShapeId CreateShape(BodyId body, const ShapeDef& def, const Segment& segment);
+    void DestroyShape(ShapeId id);
+    bool IsValid(ShapeId id) const;
+    BodyId GetBody(ShapeId id) const;
+    ShapeType GetShapeType(ShapeId id) const;
+    const Circle& GetCircle(ShapeId id) const;   ///< throws unless a circle
+    const Polygon& GetPolygon(ShapeId id) const; ///< throws unless a polygon
+    const Segment& GetSegment(ShapeId id) const; ///< throws unless a segment
+    const ShapeDef& GetShapeDef(ShapeId id) const;
+    /// A body's shapes, newest first (Box2D's fixture-list order).
+    std::span<const ShapeId> GetShapes(BodyId body) const;
+
+    // Joints
+    JointId CreateJoint(const RevoluteJointDef& def);
+    JointId CreateJoint(const DistanceJointDef& def);
+    void DestroyJoint(JointId id);
+    bool IsValid(JointId id) const;
+    JointType GetJointType(JointId id) const;
+    BodyId GetBodyA(JointId id) const;
+    BodyId GetBodyB(JointId id) const;
+    Vec2 GetAnchorA(JointId id) const; ///< world point (m)
+    Vec2 GetAnchorB(JointId id) const; ///< world point (m)
+    /// Reaction on body B over the last step: the joint's accumulated impulse times invDt.
+    JointReaction GetReaction(JointId id, Real invDt) const;
+    /// Live joints in creation order.
+    std::span<const JointId> GetJoints() const;
+    /// Definition helpers from world points, as Box2D's b2*JointDef::Initialize.
+    RevoluteJointDef MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
+    DistanceJointDef MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAnchorA,
+                                          Vec2 worldAnchorB) const;
+
+    // Stepping
+    /// Advances the world by dt seconds (> 0 and finite). Throws SimulationError if a body's
+    /// state becomes non-finite; the world is then frozen but readable.
+    void Step(Real dt);
+    std::uint64_t GetStepCount() const;
+    const SolverSettings& GetSolverSettings() const;
+    void SetSolverSettings(const SolverSettings& settings);
+    Vec2 GetGravity() const;
+    void SetGravity(Vec2 gravity);
+    const Tolerances& GetTolerances() const;
+
+    // Reports of the last step
+    /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).
+    std::span<const ContactPointReport> GetContactReports() const;
+    std::span<const ContactEvent> GetContactBeginEvents() const;
+    std::span<const ContactEvent> GetContactEndEvents() const;
+    int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
+    int GetTouchingContactCount() const;
+
+private:
+    std::unique_ptr<detail::WorldState> m_state;
+};
+
+} // namespace meff

@@ -1,0 +1,119 @@
+// The broad phase: a dynamic AABB tree of fattened shape boxes plus a buffer of moved proxies,
+// reporting the new overlapping pairs each step.
+//
+// It follows Box2D 2.4.1's b2BroadPhase/b2DynamicTree algorithms (node pool and free list,
+// surface-area insertion heuristic, AVL-style rotations, fat AABBs extended by the margin and
+// by 4x the displacement, moved flags, pair order) so that contacts are created in the same
+// order as in Box2D and the solver sweeps them in the same order.
+#pragma once
+
+#include "meff/math.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meff::detail
+{
+
+inline constexpr std::int32_t kNullProxy = -1;
+
+class DynamicTree
+{
+public:
+    explicit DynamicTree(Real aabbMargin);
+
+    /// Inserts a leaf with the box fattened by the margin; returns its proxy id.
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData);
+    void DestroyProxy(std::int32_t proxyId);
+    /// Re-inserts the leaf when `aabb` leaves the fat box (or the fat box is far too large);
+    /// returns true when it did.
+    bool MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
+
+    std::int32_t GetUserData(std::int32_t proxyId) const { return m_nodes[proxyId].userData; }
+    const AABB& GetFatAABB(std::int32_t proxyId) const { return m_nodes[proxyId].aabb; }
+    bool WasMoved(std::int32_t proxyId) const { return m_nodes[proxyId].moved; }
+    void ClearMoved(std::int32_t proxyId) { m_nodes[proxyId].moved = false; }
+
+    /// Calls callback(proxyId) -> bool for every leaf whose fat box overlaps `aabb`, until it
+    /// returns false. Traversal order is Box2D's (stack, child1 pushed before child2).
+    template <typename Callback>
+    void Query(const AABB& aabb, Callback&& callback) const;
+
+    int GetHeight() const;
+    /// Checks parent links, heights and boxes of the whole tree; for tests.
+    bool Validate() const;
+
+    struct Node
+    {
+        AABB aabb;
+        std::int32_t userData = -1;
+        std::int32_t parentOrNext = kNullProxy; ///< parent, or next free node
+        std::int32_t child1 = kNullProxy;
+        std::int32_t child2 = kNullProxy;
+        std::int32_t height = -1; ///< leaf 0, free -1
+        bool moved = false;
+        bool IsLeaf() const { return child1 == kNullProxy; }
+    };
+
+private:
+    std::int32_t AllocateNode();
+    void FreeNode(std::int32_t node);
+    void InsertLeaf(std::int32_t leaf);
+    void RemoveLeaf(std::int32_t leaf);
+    std::int32_t Balance(std::int32_t index);
+
+    std::vector<Node> m_nodes;
+    std::int32_t m_root = kNullProxy;
+    std::int32_t m_freeList = kNullProxy;
+    std::int32_t m_nodeCount = 0;
+    Real m_margin;
+    mutable std::vector<std::int32_t> m_stack; ///< reused by Query: no allocation per step
+};
+
+class BroadPhase
+{
+public:
+    explicit BroadPhase(Real aabbMargin) : m_tree(aabbMargin) {}
+
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData);
+    void DestroyProxy(std::int32_t proxyId);
+    void MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
+    /// Makes the proxy report its pairs again at the next UpdatePairs.
+    void TouchProxy(std::int32_t proxyId);
+
+    const AABB& GetFatAABB(std::int32_t proxyId) const { return m_tree.GetFatAABB(proxyId); }
+    std::int32_t GetUserData(std::int32_t proxyId) const { return m_tree.GetUserData(proxyId); }
+    bool TestOverlap(std::int32_t proxyIdA, std::int32_t proxyIdB) const;
+    int GetProxyCount() const { return m_proxyCount; }
+    const DynamicTree& GetTree() const { return m_tree; }
+
+    /// Calls addPair(userDataA, userDataB) for each new overlapping pair involving a moved
+    /// proxy, in Box2D 2.4.1's order (A has the smaller proxy id), then clears the move buffer.
+    template <typename AddPair>
+    void UpdatePairs(AddPair&& addPair);
+
+    template <typename Callback>
+    void Query(const AABB& aabb, Callback&& callback) const
+    {
+        m_tree.Query(aabb, callback);
+    }
+
+private:
+    void BufferMove(std::int32_t proxyId);
+    void UnBufferMove(std::int32_t proxyId);
+
+    struct Pair
+    {
+        std::int32_t proxyIdA;
+        std::int32_t proxyIdB;
+    };
+
+    DynamicTree m_tree;
+    int m_proxyCount = 0;
+    std::vector<std::int32_t> m_moveBuffer;
+    std::vector<Pair> m_pairBuffer;
+};
+
+} // namespace meff::detail
+
+#include "collision/broad_phase_inl.h"

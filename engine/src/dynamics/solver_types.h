@@ -1,0 +1,43 @@
+// State shared by the solver stages of one step: body positions and velocities in solver
+// order (an island's bodies are contiguous), and the step's constants.
+#pragma once
+
+#include "meff/math.h"
+#include "meff/world.h"
+
+namespace meff::detail
+{
+
+/// Centre of mass and angle of a body during the step.
+struct Position
+{
+    Vec2 c;
+    Real a = 0;
+};
+
+/// Linear velocity of the centre of mass and angular velocity during the step.
+struct Velocity
+{
+    Vec2 v;
+    Real w = 0;
+};
+
+struct StepContext
+{
+    Real dt = 0;      ///< s
+    Real invDt = 0;   ///< 1/s, 0 when dt is 0
+    Real dtRatio = 1; ///< dt / previous dt, scales warm-start impulses
+    SolverSettings solver;
+    Tolerances tolerances;
+};
+
+/// What a joint or contact sees of the step: the constants and the island's state arrays,
+/// indexed by each body's solver index.
+struct SolverData
+{
+    StepContext step;
+    Position* positions = nullptr;
+    Velocity* velocities = nullptr;
+};
+
+} // namespace meff::detail

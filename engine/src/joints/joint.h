@@ -1,0 +1,90 @@
+// Joints inside the solver. Each joint type lives in its own file (revolute_joint.cpp,
+// distance_joint.cpp) and is reached through the functions at the bottom, which switch on the
+// type. Every constraint row is solved with the scalar effective mass
+//   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB   (seed: effective-mass.md)
+// and λ = −(Jv + bias)/k, following Box2D 2.4.1's sequential-impulse formulation.
+#pragma once
+
+#include "dynamics/solver_types.h"
+#include "meff/joint.h"
+#include "meff/world.h"
+
+#include <cstdint>
+#include <variant>
+
+namespace meff::detail
+{
+
+/// What a joint needs of each of its bodies when a step begins.
+struct JointBody
+{
+    std::int32_t solverIndex = -1; ///< index into SolverData::positions/velocities
+    Vec2 localCenter;              ///< centre of mass in body coordinates (m)
+    Real invMass = 0;              ///< 1/kg, 0 for static/kinematic
+    Real invI = 0;                 ///< 1/(kg·m²), 0 for static/kinematic/fixed rotation
+};
+
+struct RevoluteJoint
+{
+    // Definition
+    Vec2 localAnchorA, localAnchorB;
+    Real referenceAngle = 0;
+    bool enableLimit = false;
+    Real lowerAngle = 0, upperAngle = 0;
+    bool enableMotor = false;
+    Real motorSpeed = 0, maxMotorTorque = 0;
+    // Accumulated impulses, carried from step to step for warm starting
+    Vec2 impulse;
+    Real motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+    // Solver temporaries, set by InitJointVelocityConstraints
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 rA, rB, localCenterA, localCenterB;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Mat22 K;
+    Real angle = 0, axialMass = 0;
+};
+
+struct DistanceJoint
+{
+    // Definition
+    Vec2 localAnchorA, localAnchorB;
+    Real length = 1, minLength = 0, maxLength = kMaxReal;
+    Real stiffness = 0; ///< N/m, from hertz and the bodies' masses at creation
+    Real damping = 0;   ///< N·s/m
+    // Accumulated impulses
+    Real impulse = 0, lowerImpulse = 0, upperImpulse = 0;
+    // Solver temporaries
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 u, rA, rB, localCenterA, localCenterB;
+    Real currentLength = 0;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Real softMass = 0, mass = 0, gamma = 0, bias = 0;
+};
+
+struct Joint
+{
+    JointType type = JointType::Revolute;
+    std::int32_t bodyA = -1; ///< world body index
+    std::int32_t bodyB = -1;
+    bool collideConnected = false;
+    std::variant<RevoluteJoint, DistanceJoint> data;
+};
+
+/// Builds the solver joint from a definition whose ids the world has already checked.
+/// massA/massB (kg, 0 for static) set a distance spring's stiffness as Box2D's
+/// b2LinearStiffness does. Throws InvalidArgument for non-finite or out-of-range values.
+Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
+Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
+                Real massB, const Tolerances& tolerances);
+
+/// Prepares the rows for this step and applies the warm-start impulse (or zeroes the
+/// accumulated impulses when warm starting is off): Box2D's InitVelocityConstraints.
+void InitJointVelocityConstraints(Joint& joint, const JointBody& a, const JointBody& b,
+                                  SolverData& data);
+void SolveJointVelocityConstraints(Joint& joint, SolverData& data);
+/// One non-linear Gauss-Seidel correction; returns true when the joint is within tolerance.
+bool SolveJointPositionConstraints(Joint& joint, SolverData& data);
+/// Reaction on body B: accumulated impulse × invDt (force, N) and torque (N·m).
+JointReaction GetJointReaction(const Joint& joint, Real invDt);
+
+} // namespace meff::detail
