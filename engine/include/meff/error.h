@@ -11,7 +11,7 @@ namespace meff
 /// Base class of every error meff throws.
 class Error : public std::runtime_error
 {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -19,7 +19,7 @@ public:
 /// polygon, a stale id, ...). The world is unchanged.
 class InvalidArgument : public Error
 {
-public:
+  public:
     using Error::Error;
 };
 
@@ -27,7 +27,7 @@ public:
 /// detected to be bad and stays readable; stepping it again is refused.
 class SimulationError : public Error
 {
-public:
+  public:
     SimulationError(const std::string& what, std::uint64_t step_, std::int32_t bodyIndex_)
         : Error(what), step(step_), bodyIndex(bodyIndex_)
     {

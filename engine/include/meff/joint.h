@@ -30,8 +30,8 @@ struct RevoluteJointDef
     Real lowerAngle = 0; ///< rad, ≤ upperAngle
     Real upperAngle = 0; ///< rad
     bool enableMotor = false;
-    Real motorSpeed = 0;          ///< target relative angular speed (rad/s)
-    Real maxMotorTorque = 0;      ///< N·m, ≥ 0
+    Real motorSpeed = 0;           ///< target relative angular speed (rad/s)
+    Real maxMotorTorque = 0;       ///< N·m, ≥ 0
     bool collideConnected = false; ///< may the two bodies' shapes collide
 };
 

@@ -24,7 +24,10 @@ inline constexpr Real kEpsilon = std::numeric_limits<Real>::epsilon();
 inline constexpr Real kMaxReal = std::numeric_limits<Real>::max();
 inline constexpr Real kPi = Real(3.14159265359);
 
-inline bool IsValid(Real x) { return std::isfinite(x); }
+inline bool IsValid(Real x)
+{
+    return std::isfinite(x);
+}
 
 struct Vec2
 {
@@ -76,32 +79,81 @@ struct Vec2
     bool IsValid() const { return meff::IsValid(x) && meff::IsValid(y); }
 };
 
-inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
-inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-inline Vec2 operator*(Real s, Vec2 a) { return {s * a.x, s * a.y}; }
-inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
-inline bool operator!=(Vec2 a, Vec2 b) { return !(a == b); }
+inline Vec2 operator+(Vec2 a, Vec2 b)
+{
+    return {a.x + b.x, a.y + b.y};
+}
+inline Vec2 operator-(Vec2 a, Vec2 b)
+{
+    return {a.x - b.x, a.y - b.y};
+}
+inline Vec2 operator*(Real s, Vec2 a)
+{
+    return {s * a.x, s * a.y};
+}
+inline bool operator==(Vec2 a, Vec2 b)
+{
+    return a.x == b.x && a.y == b.y;
+}
+inline bool operator!=(Vec2 a, Vec2 b)
+{
+    return !(a == b);
+}
 
-inline Real Dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline Real Dot(Vec2 a, Vec2 b)
+{
+    return a.x * b.x + a.y * b.y;
+}
 /// 2D cross product a × b (the z component of the 3D one).
-inline Real Cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline Real Cross(Vec2 a, Vec2 b)
+{
+    return a.x * b.y - a.y * b.x;
+}
 /// v × s: the vector v crossed with the out-of-plane scalar s.
-inline Vec2 Cross(Vec2 a, Real s) { return {s * a.y, -s * a.x}; }
+inline Vec2 Cross(Vec2 a, Real s)
+{
+    return {s * a.y, -s * a.x};
+}
 /// s × v: the out-of-plane scalar s crossed with v (angular velocity × lever arm).
-inline Vec2 Cross(Real s, Vec2 a) { return {-s * a.y, s * a.x}; }
-inline Real Distance(Vec2 a, Vec2 b) { return (a - b).Length(); }
+inline Vec2 Cross(Real s, Vec2 a)
+{
+    return {-s * a.y, s * a.x};
+}
+inline Real Distance(Vec2 a, Vec2 b)
+{
+    return (a - b).Length();
+}
 inline Real DistanceSquared(Vec2 a, Vec2 b)
 {
     const Vec2 c = a - b;
     return Dot(c, c);
 }
-inline Vec2 Abs(Vec2 a) { return {std::abs(a.x), std::abs(a.y)}; }
-inline Vec2 Min(Vec2 a, Vec2 b) { return {std::min(a.x, b.x), std::min(a.y, b.y)}; }
-inline Vec2 Max(Vec2 a, Vec2 b) { return {std::max(a.x, b.x), std::max(a.y, b.y)}; }
-template <typename T>
-inline T Clamp(T a, T low, T high)
+inline Vec2 Abs(Vec2 a)
 {
-    return std::max(low, std::min(a, high));
+    return {std::abs(a.x), std::abs(a.y)};
+}
+// Min and Max pick the same operand as Box2D's b2Min/b2Max on ties (a < b ? a : b), which
+// differs from std::min for −0 and +0.
+inline Real Min(Real a, Real b)
+{
+    return a < b ? a : b;
+}
+inline Real Max(Real a, Real b)
+{
+    return a > b ? a : b;
+}
+inline Vec2 Min(Vec2 a, Vec2 b)
+{
+    return {Min(a.x, b.x), Min(a.y, b.y)};
+}
+inline Vec2 Max(Vec2 a, Vec2 b)
+{
+    return {Max(a.x, b.x), Max(a.y, b.y)};
+}
+/// Clamps a to [low, high], with Box2D's b2Clamp tie rule: Max(low, Min(a, high)).
+inline Real Clamp(Real a, Real low, Real high)
+{
+    return Max(low, Min(a, high));
 }
 
 /// A 2×2 matrix stored by columns.
@@ -162,9 +214,15 @@ struct Rot
 };
 
 /// q·v
-inline Vec2 Mul(Rot q, Vec2 v) { return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; }
+inline Vec2 Mul(Rot q, Vec2 v)
+{
+    return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+}
 /// qᵀ·v
-inline Vec2 MulT(Rot q, Vec2 v) { return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y}; }
+inline Vec2 MulT(Rot q, Vec2 v)
+{
+    return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
+}
 /// q·r
 inline Rot Mul(Rot q, Rot r)
 {
@@ -225,10 +283,10 @@ inline Transform MulT(const Transform& A, const Transform& B)
 /// The motion of a body's centre of mass over one step, for continuous collision.
 struct Sweep
 {
-    Vec2 localCenter; ///< centre of mass in body coordinates (m)
-    Vec2 c0, c;       ///< centre of mass in world coordinates at t0 and now (m)
+    Vec2 localCenter;   ///< centre of mass in body coordinates (m)
+    Vec2 c0, c;         ///< centre of mass in world coordinates at t0 and now (m)
     Real a0 = 0, a = 0; ///< angle at t0 and now (rad)
-    Real alpha0 = 0;  ///< fraction of the step already advanced, in [0,1)
+    Real alpha0 = 0;    ///< fraction of the step already advanced, in [0,1)
 
     /// The body transform at fraction beta of the step.
     Transform GetTransform(Real beta) const

@@ -25,8 +25,8 @@ struct ShapeDef
     Real restitution = 0;          ///< coefficient e in [0,1]; mixed as max(eA, eB)
     Real restitutionThreshold = 1; ///< m/s; slower approaches do not bounce; mixed as min
     Filter filter;
-    bool isSensor = false;         ///< detects overlap, never collides
-    std::uint64_t userData = 0;    ///< yours; meff never reads it
+    bool isSensor = false;      ///< detects overlap, never collides
+    std::uint64_t userData = 0; ///< yours; meff never reads it
 };
 
 } // namespace meff

@@ -19,15 +19,15 @@ namespace meff
 /// Length tolerances of the solver and collision. Defaults are Box2D 2.4.1's constants.
 struct Tolerances
 {
-    Real linearSlop = Real(0.005);          ///< allowed penetration / joint error (m)
-    Real polygonSkin = Real(0.01);          ///< radius added to polygons and segments (m)
-    Real aabbMargin = Real(0.1);            ///< fattening of broad-phase boxes (m)
-    Real maxLinearCorrection = Real(0.2);   ///< largest position correction per iteration (m)
-    Real maxAngularCorrection = Real(8.0 / 180.0 * 3.14159265359); ///< rad
-    Real angularSlop = Real(2.0 / 180.0 * 3.14159265359);          ///< rad
-    Real maxTranslation = 2;                ///< largest move of a body in one step (m)
-    Real maxRotation = Real(0.5 * 3.14159265359); ///< largest turn of a body in one step (rad)
-    Real baumgarte = Real(0.2);             ///< fraction of overlap removed per position iteration
+    Real linearSlop = Real(0.005);        ///< allowed penetration / joint error (m)
+    Real polygonSkin = Real(0.01);        ///< radius added to polygons and segments (m)
+    Real aabbMargin = Real(0.1);          ///< fattening of broad-phase boxes (m)
+    Real maxLinearCorrection = Real(0.2); ///< largest position correction per iteration (m)
+    Real maxAngularCorrection = Real(8) / Real(180) * kPi; ///< rad
+    Real angularSlop = Real(2) / Real(180) * kPi;          ///< rad
+    Real maxTranslation = 2;            ///< largest move of a body in one step (m)
+    Real maxRotation = Real(0.5) * kPi; ///< largest turn of a body in one step (rad)
+    Real baumgarte = Real(0.2);         ///< fraction of overlap removed per position iteration
 };
 
 /// How the solver works. Every member may be changed between steps.
@@ -59,11 +59,11 @@ struct ContactPointReport
     BodyId bodyB;
     ShapeId shapeA;
     ShapeId shapeB;
-    Vec2 point;              ///< world point midway between the surfaces (m)
-    Vec2 normal;             ///< unit normal from A to B
-    Real separation = 0;     ///< m, negative when overlapping
-    Real normalImpulse = 0;  ///< accumulated over the step's velocity iterations (N·s)
-    Real tangentImpulse = 0; ///< friction impulse along the tangent cross(normal, 1) (N·s)
+    Vec2 point;                   ///< world point midway between the surfaces (m)
+    Vec2 normal;                  ///< unit normal from A to B
+    Real separation = 0;          ///< m, negative when overlapping
+    Real normalImpulse = 0;       ///< accumulated over the step's velocity iterations (N·s)
+    Real tangentImpulse = 0;      ///< friction impulse along the tangent cross(normal, 1) (N·s)
     std::uint32_t featureKey = 0; ///< ContactFeature::Key(), the point's identity
     int pointIndex = 0;           ///< 0 or 1 within its manifold
 };
@@ -89,7 +89,7 @@ struct WorldState;
 
 class World
 {
-public:
+  public:
     explicit World(const WorldDef& def = {});
     ~World();
     World(const World&) = delete;
@@ -105,11 +105,11 @@ public:
     Vec2 GetPosition(BodyId id) const; ///< world position of the body origin (m)
     Real GetAngle(BodyId id) const;    ///< rad
     Transform GetTransform(BodyId id) const;
-    Vec2 GetWorldCenter(BodyId id) const; ///< centre of mass (m)
-    Vec2 GetLocalCenter(BodyId id) const; ///< centre of mass in body coordinates (m)
-    Vec2 GetLinearVelocity(BodyId id) const; ///< of the centre of mass (m/s)
-    Real GetAngularVelocity(BodyId id) const; ///< rad/s
-    Real GetMass(BodyId id) const;            ///< kg
+    Vec2 GetWorldCenter(BodyId id) const;       ///< centre of mass (m)
+    Vec2 GetLocalCenter(BodyId id) const;       ///< centre of mass in body coordinates (m)
+    Vec2 GetLinearVelocity(BodyId id) const;    ///< of the centre of mass (m/s)
+    Real GetAngularVelocity(BodyId id) const;   ///< rad/s
+    Real GetMass(BodyId id) const;              ///< kg
     Real GetRotationalInertia(BodyId id) const; ///< about the centre of mass (kg·m²)
     std::uint64_t GetUserData(BodyId id) const;
     Vec2 GetWorldPoint(BodyId id, Vec2 localPoint) const;
@@ -117,9 +117,9 @@ public:
     void SetTransform(BodyId id, Vec2 position, Real angle);
     void SetLinearVelocity(BodyId id, Vec2 v);
     void SetAngularVelocity(BodyId id, Real w);
-    void ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint); ///< N, until the step ends
-    void ApplyForceToCenter(BodyId id, Vec2 force);           ///< N
-    void ApplyTorque(BodyId id, Real torque);                 ///< N·m
+    void ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint);           ///< N, until the step ends
+    void ApplyForceToCenter(BodyId id, Vec2 force);                    ///< N
+    void ApplyTorque(BodyId id, Real torque);                          ///< N·m
     void ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint); ///< N·s
     void ApplyAngularImpulse(BodyId id, Real impulse);                 ///< N·m·s
     /// Live bodies in creation order.
@@ -178,7 +178,7 @@ public:
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
     int GetTouchingContactCount() const;
 
-private:
+  private:
     std::unique_ptr<detail::WorldState> m_state;
 };
 

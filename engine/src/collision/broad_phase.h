@@ -19,7 +19,7 @@ inline constexpr std::int32_t kNullProxy = -1;
 
 class DynamicTree
 {
-public:
+  public:
     explicit DynamicTree(Real aabbMargin);
 
     /// Inserts a leaf with the box fattened by the margin; returns its proxy id.
@@ -55,7 +55,7 @@ public:
         bool IsLeaf() const { return child1 == kNullProxy; }
     };
 
-private:
+  private:
     std::int32_t AllocateNode();
     void FreeNode(std::int32_t node);
     void InsertLeaf(std::int32_t leaf);
@@ -72,7 +72,7 @@ private:
 
 class BroadPhase
 {
-public:
+  public:
     explicit BroadPhase(Real aabbMargin) : m_tree(aabbMargin) {}
 
     std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData);
@@ -98,7 +98,7 @@ public:
         m_tree.Query(aabb, callback);
     }
 
-private:
+  private:
     void BufferMove(std::int32_t proxyId);
     void UnBufferMove(std::int32_t proxyId);
 

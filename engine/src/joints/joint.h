@@ -87,4 +87,18 @@ bool SolveJointPositionConstraints(Joint& joint, SolverData& data);
 /// Reaction on body B: accumulated impulse × invDt (force, N) and torque (N·m).
 JointReaction GetJointReaction(const Joint& joint, Real invDt);
 
+// Per-type implementations behind the dispatchers above (revolute_joint.cpp,
+// distance_joint.cpp). Same contracts as the dispatchers.
+void InitVelocityConstraints(RevoluteJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(RevoluteJoint& joint, SolverData& data);
+bool SolvePositionConstraints(RevoluteJoint& joint, SolverData& data);
+JointReaction GetReaction(const RevoluteJoint& joint, Real invDt);
+
+void InitVelocityConstraints(DistanceJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(DistanceJoint& joint, SolverData& data);
+bool SolvePositionConstraints(DistanceJoint& joint, SolverData& data);
+JointReaction GetReaction(const DistanceJoint& joint, Real invDt);
+
 } // namespace meff::detail

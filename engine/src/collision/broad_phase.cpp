@@ -1,0 +1,60 @@
+// The broad phase: proxies in a dynamic tree, plus the buffer of proxies whose pairs must be
+// looked for at the next UpdatePairs (Box2D 2.4.1's b2BroadPhase).
+#include "collision/broad_phase.h"
+
+namespace meff::detail
+{
+
+std::int32_t BroadPhase::CreateProxy(const AABB& aabb, std::int32_t userData)
+{
+    const std::int32_t proxyId = m_tree.CreateProxy(aabb, userData);
+    ++m_proxyCount;
+    BufferMove(proxyId);
+    return proxyId;
+}
+
+void BroadPhase::DestroyProxy(std::int32_t proxyId)
+{
+    UnBufferMove(proxyId);
+    --m_proxyCount;
+    m_tree.DestroyProxy(proxyId);
+}
+
+void BroadPhase::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement)
+{
+    if (m_tree.MoveProxy(proxyId, aabb, displacement))
+    {
+        BufferMove(proxyId);
+    }
+}
+
+void BroadPhase::TouchProxy(std::int32_t proxyId)
+{
+    BufferMove(proxyId);
+}
+
+bool BroadPhase::TestOverlap(std::int32_t proxyIdA, std::int32_t proxyIdB) const
+{
+    return meff::TestOverlap(m_tree.GetFatAABB(proxyIdA), m_tree.GetFatAABB(proxyIdB));
+}
+
+// A proxy may be buffered more than once (moved then touched): its queries then run twice and
+// report the same pairs twice, as in Box2D. The contact manager filters existing contacts.
+void BroadPhase::BufferMove(std::int32_t proxyId)
+{
+    m_moveBuffer.push_back(proxyId);
+}
+
+// Entries are blanked rather than erased so that the order of the others is kept.
+void BroadPhase::UnBufferMove(std::int32_t proxyId)
+{
+    for (std::int32_t& id : m_moveBuffer)
+    {
+        if (id == proxyId)
+        {
+            id = kNullProxy;
+        }
+    }
+}
+
+} // namespace meff::detail

@@ -1,0 +1,460 @@
+// The dynamic AABB tree of the broad phase.
+//
+// Node ids are what the rest of the engine calls proxy ids, and they decide the order in which
+// contacts are created, so every step that hands out or recycles a node, and every step that
+// reshapes the tree, reproduces Box2D 2.4.1's b2DynamicTree:
+//  - the pool starts with 16 nodes and doubles; the fresh nodes are chained in increasing
+//    order and a freed node goes to the head of the free list;
+//  - a leaf is inserted next to the sibling chosen by the perimeter (surface area) heuristic,
+//    then every ancestor is rebalanced by at most one rotation on the way back up;
+//  - removing a leaf frees its parent before the ancestors are rebalanced.
+// Floating-point expressions keep Box2D's operation order so that fat boxes and costs round
+// identically.
+#include "collision/broad_phase.h"
+
+#include <algorithm>
+
+namespace meff::detail
+{
+
+namespace
+{
+
+constexpr std::int32_t kInitialNodeCapacity = 16;
+/// Box2D's b2_aabbMultiplier: how far ahead of the motion the fat box is stretched.
+constexpr Real kDisplacementMultiplier = Real(4);
+
+} // namespace
+
+DynamicTree::DynamicTree(Real aabbMargin) : m_margin(aabbMargin)
+{
+    m_nodes.resize(kInitialNodeCapacity);
+    for (std::int32_t i = 0; i < kInitialNodeCapacity; ++i)
+    {
+        m_nodes[i].parentOrNext = i + 1 < kInitialNodeCapacity ? i + 1 : kNullProxy;
+        m_nodes[i].height = -1;
+    }
+    m_freeList = 0;
+}
+
+std::int32_t DynamicTree::AllocateNode()
+{
+    if (m_freeList == kNullProxy)
+    {
+        // Every slot is in use: double the pool and chain the new slots in increasing order,
+        // exactly as Box2D does, so that later ids match.
+        const auto oldCapacity = static_cast<std::int32_t>(m_nodes.size());
+        const std::int32_t newCapacity = 2 * oldCapacity;
+        m_nodes.resize(static_cast<std::size_t>(newCapacity));
+        for (std::int32_t i = oldCapacity; i < newCapacity; ++i)
+        {
+            m_nodes[i].parentOrNext = i + 1 < newCapacity ? i + 1 : kNullProxy;
+            m_nodes[i].height = -1;
+        }
+        m_freeList = oldCapacity;
+    }
+
+    const std::int32_t id = m_freeList;
+    Node& node = m_nodes[id];
+    m_freeList = node.parentOrNext;
+    node.parentOrNext = kNullProxy;
+    node.child1 = kNullProxy;
+    node.child2 = kNullProxy;
+    node.height = 0;
+    node.userData = -1;
+    node.moved = false;
+    ++m_nodeCount;
+    return id;
+}
+
+void DynamicTree::FreeNode(std::int32_t id)
+{
+    Node& node = m_nodes[id];
+    node.parentOrNext = m_freeList;
+    node.height = -1;
+    m_freeList = id;
+    --m_nodeCount;
+}
+
+std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData)
+{
+    const std::int32_t proxyId = AllocateNode();
+
+    const Vec2 r(m_margin, m_margin);
+    Node& node = m_nodes[proxyId];
+    node.aabb.lowerBound = aabb.lowerBound - r;
+    node.aabb.upperBound = aabb.upperBound + r;
+    node.userData = userData;
+    node.height = 0;
+    node.moved = true;
+
+    InsertLeaf(proxyId);
+    return proxyId;
+}
+
+void DynamicTree::DestroyProxy(std::int32_t proxyId)
+{
+    RemoveLeaf(proxyId);
+    FreeNode(proxyId);
+}
+
+bool DynamicTree::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement)
+{
+    // The candidate fat box: the margin all round, then stretched along the predicted motion
+    // (only on the side the shape is heading to).
+    const Vec2 r(m_margin, m_margin);
+    AABB fat;
+    fat.lowerBound = aabb.lowerBound - r;
+    fat.upperBound = aabb.upperBound + r;
+
+    const Vec2 d = kDisplacementMultiplier * displacement;
+    if (d.x < Real(0))
+    {
+        fat.lowerBound.x += d.x;
+    }
+    else
+    {
+        fat.upperBound.x += d.x;
+    }
+    if (d.y < Real(0))
+    {
+        fat.lowerBound.y += d.y;
+    }
+    else
+    {
+        fat.upperBound.y += d.y;
+    }
+
+    const AABB& current = m_nodes[proxyId].aabb;
+    if (current.Contains(aabb))
+    {
+        // The shape is still inside its box. Keep the box unless it is oversized, i.e. it sticks
+        // out of the candidate grown by four more margins (a fast body that came to rest).
+        const Vec2 slack = Real(4) * r;
+        AABB huge;
+        huge.lowerBound = fat.lowerBound - slack;
+        huge.upperBound = fat.upperBound + slack;
+        if (huge.Contains(current))
+        {
+            return false;
+        }
+    }
+
+    RemoveLeaf(proxyId);
+    m_nodes[proxyId].aabb = fat;
+    InsertLeaf(proxyId);
+    m_nodes[proxyId].moved = true;
+    return true;
+}
+
+void DynamicTree::InsertLeaf(std::int32_t leaf)
+{
+    if (m_root == kNullProxy)
+    {
+        m_root = leaf;
+        m_nodes[leaf].parentOrNext = kNullProxy;
+        return;
+    }
+
+    // Walk down from the root towards the cheapest sibling. Creating a parent here costs twice
+    // the combined perimeter; going down costs the growth of this node (paid by every ancestor
+    // of the eventual parent) plus the child's own growth, or its full combined perimeter when
+    // the child is a leaf.
+    const AABB leafBox = m_nodes[leaf].aabb;
+    std::int32_t index = m_root;
+    while (!m_nodes[index].IsLeaf())
+    {
+        const Node& node = m_nodes[index];
+        const std::int32_t child1 = node.child1;
+        const std::int32_t child2 = node.child2;
+
+        const Real perimeter = node.aabb.GetPerimeter();
+        const Real combinedPerimeter = Combine(node.aabb, leafBox).GetPerimeter();
+
+        const Real cost = Real(2) * combinedPerimeter;
+        const Real inheritedCost = Real(2) * (combinedPerimeter - perimeter);
+
+        auto descentCost = [&](std::int32_t child)
+        {
+            const Node& c = m_nodes[child];
+            const Real grown = Combine(leafBox, c.aabb).GetPerimeter();
+            if (c.IsLeaf())
+            {
+                return grown + inheritedCost;
+            }
+            return (grown - c.aabb.GetPerimeter()) + inheritedCost;
+        };
+        const Real cost1 = descentCost(child1);
+        const Real cost2 = descentCost(child2);
+
+        if (cost < cost1 && cost < cost2)
+        {
+            break;
+        }
+        // Ties go to child2.
+        index = cost1 < cost2 ? child1 : child2;
+    }
+
+    const std::int32_t sibling = index;
+    const std::int32_t oldParent = m_nodes[sibling].parentOrNext;
+    // May grow the pool: no Node references are held across this call.
+    const std::int32_t newParent = AllocateNode();
+    {
+        Node& parent = m_nodes[newParent];
+        parent.parentOrNext = oldParent;
+        parent.userData = -1;
+        parent.aabb = Combine(leafBox, m_nodes[sibling].aabb);
+        parent.height = m_nodes[sibling].height + 1;
+        parent.child1 = sibling;
+        parent.child2 = leaf;
+    }
+    m_nodes[sibling].parentOrNext = newParent;
+    m_nodes[leaf].parentOrNext = newParent;
+
+    if (oldParent != kNullProxy)
+    {
+        Node& grand = m_nodes[oldParent];
+        if (grand.child1 == sibling)
+        {
+            grand.child1 = newParent;
+        }
+        else
+        {
+            grand.child2 = newParent;
+        }
+    }
+    else
+    {
+        m_root = newParent;
+    }
+
+    // Back up to the root: rebalance, then refresh height and box.
+    index = m_nodes[leaf].parentOrNext;
+    while (index != kNullProxy)
+    {
+        index = Balance(index);
+
+        Node& node = m_nodes[index];
+        const Node& c1 = m_nodes[node.child1];
+        const Node& c2 = m_nodes[node.child2];
+        node.height = 1 + std::max(c1.height, c2.height);
+        node.aabb = Combine(c1.aabb, c2.aabb);
+
+        index = node.parentOrNext;
+    }
+}
+
+void DynamicTree::RemoveLeaf(std::int32_t leaf)
+{
+    if (leaf == m_root)
+    {
+        m_root = kNullProxy;
+        return;
+    }
+
+    const std::int32_t parent = m_nodes[leaf].parentOrNext;
+    const std::int32_t grand = m_nodes[parent].parentOrNext;
+    const std::int32_t sibling =
+        m_nodes[parent].child1 == leaf ? m_nodes[parent].child2 : m_nodes[parent].child1;
+
+    if (grand == kNullProxy)
+    {
+        m_root = sibling;
+        m_nodes[sibling].parentOrNext = kNullProxy;
+        FreeNode(parent);
+        return;
+    }
+
+    // The sibling takes the parent's place, and the parent is freed before the walk up (this
+    // fixes which id the next allocation gets).
+    if (m_nodes[grand].child1 == parent)
+    {
+        m_nodes[grand].child1 = sibling;
+    }
+    else
+    {
+        m_nodes[grand].child2 = sibling;
+    }
+    m_nodes[sibling].parentOrNext = grand;
+    FreeNode(parent);
+
+    std::int32_t index = grand;
+    while (index != kNullProxy)
+    {
+        index = Balance(index);
+
+        Node& node = m_nodes[index];
+        const Node& c1 = m_nodes[node.child1];
+        const Node& c2 = m_nodes[node.child2];
+        node.aabb = Combine(c1.aabb, c2.aabb);
+        node.height = 1 + std::max(c1.height, c2.height);
+
+        index = node.parentOrNext;
+    }
+}
+
+// When one child of `iA` is more than one level taller than the other, lifts that taller child
+// (C) into A's place: A keeps its shorter child, C keeps the taller of its own two children and
+// hands the shorter one to A. Returns the index now at the top of this subtree.
+std::int32_t DynamicTree::Balance(std::int32_t iA)
+{
+    Node& a = m_nodes[iA];
+    if (a.IsLeaf() || a.height < 2)
+    {
+        return iA;
+    }
+
+    const std::int32_t iB = a.child1;
+    const std::int32_t iC = a.child2;
+    const std::int32_t balance = m_nodes[iC].height - m_nodes[iB].height;
+
+    // Lifts `iUp` (a child of A) above A. `upIsChild2` tells which slot of A it occupied; the
+    // child of `up` left behind replaces it in that same slot.
+    auto rotate = [&](std::int32_t iUp, std::int32_t iStay, bool upIsChild2)
+    {
+        Node& up = m_nodes[iUp];
+        const std::int32_t iF = up.child1;
+        const std::int32_t iG = up.child2;
+
+        up.child1 = iA;
+        up.parentOrNext = a.parentOrNext;
+        a.parentOrNext = iUp;
+
+        if (up.parentOrNext != kNullProxy)
+        {
+            Node& above = m_nodes[up.parentOrNext];
+            if (above.child1 == iA)
+            {
+                above.child1 = iUp;
+            }
+            else
+            {
+                above.child2 = iUp;
+            }
+        }
+        else
+        {
+            m_root = iUp;
+        }
+
+        // The taller grandchild stays under `up`; ties keep G (up's child2).
+        const bool keepF = m_nodes[iF].height > m_nodes[iG].height;
+        const std::int32_t iKeep = keepF ? iF : iG;
+        const std::int32_t iGive = keepF ? iG : iF;
+        Node& keep = m_nodes[iKeep];
+        Node& give = m_nodes[iGive];
+        const Node& stay = m_nodes[iStay];
+
+        up.child2 = iKeep;
+        if (upIsChild2)
+        {
+            a.child2 = iGive;
+        }
+        else
+        {
+            a.child1 = iGive;
+        }
+        give.parentOrNext = iA;
+        a.aabb = Combine(stay.aabb, give.aabb);
+        up.aabb = Combine(a.aabb, keep.aabb);
+
+        a.height = 1 + std::max(stay.height, give.height);
+        up.height = 1 + std::max(a.height, keep.height);
+    };
+
+    if (balance > 1)
+    {
+        rotate(iC, iB, true);
+        return iC;
+    }
+    if (balance < -1)
+    {
+        rotate(iB, iC, false);
+        return iB;
+    }
+    return iA;
+}
+
+int DynamicTree::GetHeight() const
+{
+    if (m_root == kNullProxy)
+    {
+        return 0;
+    }
+    return m_nodes[m_root].height;
+}
+
+bool DynamicTree::Validate() const
+{
+    const auto capacity = static_cast<std::int32_t>(m_nodes.size());
+    auto inRange = [capacity](std::int32_t i) { return 0 <= i && i < capacity; };
+
+    // The free list: in range, marked free, no cycle.
+    std::int32_t freeCount = 0;
+    for (std::int32_t i = m_freeList; i != kNullProxy; i = m_nodes[i].parentOrNext)
+    {
+        if (!inRange(i) || m_nodes[i].height != -1 || freeCount > capacity)
+        {
+            return false;
+        }
+        ++freeCount;
+    }
+    if (m_nodeCount + freeCount != capacity)
+    {
+        return false;
+    }
+
+    if (m_root == kNullProxy)
+    {
+        return m_nodeCount == 0;
+    }
+    if (!inRange(m_root) || m_nodes[m_root].parentOrNext != kNullProxy)
+    {
+        return false;
+    }
+
+    // Every reachable node: links both ways, height and box consistent with the children.
+    std::int32_t reached = 0;
+    std::vector<std::int32_t> pending{m_root};
+    while (!pending.empty())
+    {
+        const std::int32_t i = pending.back();
+        pending.pop_back();
+        ++reached;
+        if (reached > m_nodeCount)
+        {
+            return false;
+        }
+        const Node& node = m_nodes[i];
+        if (node.IsLeaf())
+        {
+            if (node.child2 != kNullProxy || node.height != 0)
+            {
+                return false;
+            }
+            continue;
+        }
+        for (const std::int32_t child : {node.child1, node.child2})
+        {
+            if (!inRange(child) || m_nodes[child].parentOrNext != i || m_nodes[child].height < 0)
+            {
+                return false;
+            }
+            pending.push_back(child);
+        }
+        const Node& c1 = m_nodes[node.child1];
+        const Node& c2 = m_nodes[node.child2];
+        if (node.height != 1 + std::max(c1.height, c2.height))
+        {
+            return false;
+        }
+        const AABB box = Combine(c1.aabb, c2.aabb);
+        if (box.lowerBound != node.aabb.lowerBound || box.upperBound != node.aabb.upperBound)
+        {
+            return false;
+        }
+    }
+    return reached == m_nodeCount;
+}
+
+} // namespace meff::detail

@@ -1,0 +1,211 @@
+// Contact manifold between two convex polygons by reference-face clipping, following
+// b2CollidePolygons (with b2FindMaxSeparation and b2FindIncidentEdge) of Box2D 2.4.1.
+#include "collision/manifold_internal.h"
+
+namespace meff
+{
+
+namespace
+{
+
+/// How much deeper B's best axis must be before B's face becomes the reference face: Box2D's
+/// k_tol = 0.1 * b2_linearSlop. Written as the same float product (not the literal 0.0005,
+/// which may round differently) so that the flip decision agrees bit for bit.
+constexpr Real kReferenceFaceTolerance = Real(0.1) * detail::kCollisionLinearSlop;
+
+/// The greatest separation of poly2 from poly1 along poly1's face normals; writes the face.
+Real FindMaxSeparation(int& edgeIndex, const Polygon& poly1, const Transform& xf1,
+                       const Polygon& poly2, const Transform& xf2)
+{
+    const int count1 = poly1.count;
+    const int count2 = poly2.count;
+    const Transform xf = MulT(xf2, xf1);
+
+    int bestIndex = 0;
+    Real maxSeparation = -kMaxReal;
+    for (int i = 0; i < count1; ++i)
+    {
+        // Face i of poly1 in poly2's frame.
+        const Vec2 n = Mul(xf.q, poly1.normals[i]);
+        const Vec2 v1 = Mul(xf, poly1.vertices[i]);
+
+        // The deepest vertex of poly2 along that normal.
+        Real si = kMaxReal;
+        for (int j = 0; j < count2; ++j)
+        {
+            const Real sij = Dot(n, poly2.vertices[j] - v1);
+            if (sij < si)
+            {
+                si = sij;
+            }
+        }
+
+        if (si > maxSeparation)
+        {
+            maxSeparation = si;
+            bestIndex = i;
+        }
+    }
+
+    edgeIndex = bestIndex;
+    return maxSeparation;
+}
+
+/// The face of poly2 most anti-parallel to face `edge1` of poly1, in world coordinates.
+void FindIncidentEdge(detail::ClipVertex incident[2], const Polygon& poly1, const Transform& xf1,
+                      int edge1, const Polygon& poly2, const Transform& xf2)
+{
+    const int count2 = poly2.count;
+
+    // The reference normal in poly2's frame.
+    const Vec2 normal1 = MulT(xf2.q, Mul(xf1.q, poly1.normals[edge1]));
+
+    int index = 0;
+    Real minDot = kMaxReal;
+    for (int i = 0; i < count2; ++i)
+    {
+        const Real dot = Dot(normal1, poly2.normals[i]);
+        if (dot < minDot)
+        {
+            minDot = dot;
+            index = i;
+        }
+    }
+
+    const int i1 = index;
+    const int i2 = i1 + 1 < count2 ? i1 + 1 : 0;
+
+    incident[0].v = Mul(xf2, poly2.vertices[i1]);
+    incident[0].id.indexA = static_cast<std::uint8_t>(edge1);
+    incident[0].id.indexB = static_cast<std::uint8_t>(i1);
+    incident[0].id.typeA = ContactFeature::Face;
+    incident[0].id.typeB = ContactFeature::Vertex;
+
+    incident[1].v = Mul(xf2, poly2.vertices[i2]);
+    incident[1].id.indexA = static_cast<std::uint8_t>(edge1);
+    incident[1].id.indexB = static_cast<std::uint8_t>(i2);
+    incident[1].id.typeA = ContactFeature::Face;
+    incident[1].id.typeB = ContactFeature::Vertex;
+}
+
+} // namespace
+
+void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transform& xfA,
+                     const Polygon& polygonB, const Transform& xfB)
+{
+    manifold.pointCount = 0;
+    const Real totalRadius = polygonA.radius + polygonB.radius;
+
+    int edgeA = 0;
+    const Real separationA = FindMaxSeparation(edgeA, polygonA, xfA, polygonB, xfB);
+    if (separationA > totalRadius)
+    {
+        return;
+    }
+
+    int edgeB = 0;
+    const Real separationB = FindMaxSeparation(edgeB, polygonB, xfB, polygonA, xfA);
+    if (separationB > totalRadius)
+    {
+        return;
+    }
+
+    // Reference polygon 1 and incident polygon 2. A's face is preferred unless B's is clearly
+    // better, so that the reference face does not flicker between the two.
+    const Polygon* poly1;
+    const Polygon* poly2;
+    Transform xf1, xf2;
+    int edge1;
+    bool flip;
+    if (separationB > separationA + kReferenceFaceTolerance)
+    {
+        poly1 = &polygonB;
+        poly2 = &polygonA;
+        xf1 = xfB;
+        xf2 = xfA;
+        edge1 = edgeB;
+        manifold.type = Manifold::Type::FaceB;
+        flip = true;
+    }
+    else
+    {
+        poly1 = &polygonA;
+        poly2 = &polygonB;
+        xf1 = xfA;
+        xf2 = xfB;
+        edge1 = edgeA;
+        manifold.type = Manifold::Type::FaceA;
+        flip = false;
+    }
+
+    detail::ClipVertex incidentEdge[2];
+    FindIncidentEdge(incidentEdge, *poly1, xf1, edge1, *poly2, xf2);
+
+    const int count1 = poly1->count;
+    const int iv1 = edge1;
+    const int iv2 = edge1 + 1 < count1 ? edge1 + 1 : 0;
+
+    Vec2 v11 = poly1->vertices[iv1];
+    Vec2 v12 = poly1->vertices[iv2];
+
+    Vec2 localTangent = v12 - v11;
+    localTangent.Normalize();
+
+    const Vec2 localNormal = Cross(localTangent, Real(1));
+    const Vec2 planePoint = Real(0.5) * (v11 + v12);
+
+    const Vec2 tangent = Mul(xf1.q, localTangent);
+    const Vec2 normal = Cross(tangent, Real(1));
+
+    v11 = Mul(xf1, v11);
+    v12 = Mul(xf1, v12);
+
+    const Real frontOffset = Dot(normal, v11);
+
+    // The side planes of the reference face, pushed out by the skins.
+    const Real sideOffset1 = -Dot(tangent, v11) + totalRadius;
+    const Real sideOffset2 = Dot(tangent, v12) + totalRadius;
+
+    detail::ClipVertex clipPoints1[2];
+    detail::ClipVertex clipPoints2[2];
+
+    if (detail::ClipSegmentToLine(clipPoints1, incidentEdge, -tangent, sideOffset1, iv1) < 2)
+    {
+        return;
+    }
+    if (detail::ClipSegmentToLine(clipPoints2, clipPoints1, tangent, sideOffset2, iv2) < 2)
+    {
+        return;
+    }
+
+    manifold.localNormal = localNormal;
+    manifold.localPoint = planePoint;
+
+    int pointCount = 0;
+    for (int i = 0; i < 2; ++i)
+    {
+        const Real separation = Dot(normal, clipPoints2[i].v) - frontOffset;
+        if (separation <= totalRadius)
+        {
+            ManifoldPoint& point = manifold.points[pointCount];
+            point.localPoint = MulT(xf2, clipPoints2[i].v);
+            point.normalImpulse = 0;
+            point.tangentImpulse = 0;
+            point.id = clipPoints2[i].id;
+            if (flip)
+            {
+                // The features were found with B as the reference: swap them back to A, B.
+                const ContactFeature cf = point.id;
+                point.id.indexA = cf.indexB;
+                point.id.indexB = cf.indexA;
+                point.id.typeA = cf.typeB;
+                point.id.typeB = cf.typeA;
+            }
+            ++pointCount;
+        }
+    }
+
+    manifold.pointCount = pointCount;
+}
+
+} // namespace meff

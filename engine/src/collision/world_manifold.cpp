@@ -1,0 +1,119 @@
+// Evaluating a manifold in world space, and the segment clipping shared by the manifold
+// routines. Follows b2WorldManifold::Initialize and b2ClipSegmentToLine of Box2D 2.4.1 with
+// the same floating-point operation order.
+#include "collision/manifold_internal.h"
+
+namespace meff
+{
+
+void WorldManifold::Initialize(const Manifold& manifold, const Transform& xfA, Real radiusA,
+                               const Transform& xfB, Real radiusB)
+{
+    // As Box2D, an empty manifold leaves every field untouched.
+    if (manifold.pointCount == 0)
+    {
+        return;
+    }
+
+    switch (manifold.type)
+    {
+    case Manifold::Type::Circles:
+    {
+        normal = Vec2(1, 0);
+        const Vec2 centerA = Mul(xfA, manifold.localPoint);
+        const Vec2 centerB = Mul(xfB, manifold.points[0].localPoint);
+        // Coincident centres keep the arbitrary +x normal.
+        if (DistanceSquared(centerA, centerB) > kEpsilon * kEpsilon)
+        {
+            normal = centerB - centerA;
+            normal.Normalize();
+        }
+
+        const Vec2 surfaceA = centerA + radiusA * normal;
+        const Vec2 surfaceB = centerB - radiusB * normal;
+        points[0] = Real(0.5) * (surfaceA + surfaceB);
+        separations[0] = Dot(surfaceB - surfaceA, normal);
+        break;
+    }
+
+    case Manifold::Type::FaceA:
+    {
+        normal = Mul(xfA.q, manifold.localNormal);
+        const Vec2 planePoint = Mul(xfA, manifold.localPoint);
+
+        for (int i = 0; i < manifold.pointCount; ++i)
+        {
+            const Vec2 clipPoint = Mul(xfB, manifold.points[i].localPoint);
+            const Vec2 surfaceA =
+                clipPoint + (radiusA - Dot(clipPoint - planePoint, normal)) * normal;
+            const Vec2 surfaceB = clipPoint - radiusB * normal;
+            points[i] = Real(0.5) * (surfaceA + surfaceB);
+            separations[i] = Dot(surfaceB - surfaceA, normal);
+        }
+        break;
+    }
+
+    case Manifold::Type::FaceB:
+    {
+        normal = Mul(xfB.q, manifold.localNormal);
+        const Vec2 planePoint = Mul(xfB, manifold.localPoint);
+
+        for (int i = 0; i < manifold.pointCount; ++i)
+        {
+            const Vec2 clipPoint = Mul(xfA, manifold.points[i].localPoint);
+            const Vec2 surfaceB =
+                clipPoint + (radiusB - Dot(clipPoint - planePoint, normal)) * normal;
+            const Vec2 surfaceA = clipPoint - radiusA * normal;
+            points[i] = Real(0.5) * (surfaceA + surfaceB);
+            separations[i] = Dot(surfaceA - surfaceB, normal);
+        }
+
+        // The reference face belongs to B, so its normal points from B to A: turn it round.
+        normal = -normal;
+        break;
+    }
+    }
+}
+
+namespace detail
+{
+
+int ClipSegmentToLine(ClipVertex output[2], const ClipVertex input[2], Vec2 normal, Real offset,
+                      int vertexIndexA)
+{
+    int count = 0;
+
+    // Signed distances of the two end points to the clipping line.
+    const Real distance0 = Dot(normal, input[0].v) - offset;
+    const Real distance1 = Dot(normal, input[1].v) - offset;
+
+    // Keep the end points on the inner side (points exactly on the line are kept).
+    if (distance0 <= 0)
+    {
+        output[count++] = input[0];
+    }
+    if (distance1 <= 0)
+    {
+        output[count++] = input[1];
+    }
+
+    // The end points straddle the line: add the crossing point.
+    if (distance0 * distance1 < 0)
+    {
+        const Real interp = distance0 / (distance0 - distance1);
+        output[count].v = input[0].v + interp * (input[1].v - input[0].v);
+
+        // The new point is where a vertex of the reference shape meets the incident face.
+        output[count].id.indexA = static_cast<std::uint8_t>(vertexIndexA);
+        output[count].id.indexB = input[0].id.indexB;
+        output[count].id.typeA = ContactFeature::Vertex;
+        output[count].id.typeB = ContactFeature::Face;
+        ++count;
+    }
+
+    return count;
+}
+
+} // namespace detail
+
+} // namespace meff

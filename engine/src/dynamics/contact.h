@@ -1,0 +1,82 @@
+// A contact: a pair of shapes whose fattened boxes overlap. It owns the manifold, whose
+// impulses carry from step to step (warm starting), and sits on both bodies' edge lists.
+#pragma once
+
+#include "meff/collision.h"
+
+#include <cstdint>
+
+namespace meff::detail
+{
+
+struct Shape;
+
+/// Links a contact or joint into one body's edge list. An edge key is index·2 + side, where
+/// side 0 lives on the first body's list and side 1 on the second's.
+struct Edge
+{
+    std::int32_t other = -1; ///< the body at the other end
+    std::int32_t prev = -1;  ///< previous edge key on this body's list
+    std::int32_t next = -1;  ///< next edge key on this body's list
+};
+
+inline std::int32_t EdgeKey(std::int32_t index, int side)
+{
+    return index * 2 + side;
+}
+inline std::int32_t EdgeOwner(std::int32_t key)
+{
+    return key >> 1;
+}
+inline int EdgeSide(std::int32_t key)
+{
+    return key & 1;
+}
+
+struct Contact
+{
+    enum Flags : std::uint32_t
+    {
+        Touching = 1u << 0, ///< the manifold has points
+        Filter = 1u << 1,   ///< re-check filtering before the next narrow phase
+        Island = 1u << 2,   ///< already added to an island this step
+    };
+
+    bool alive = false;
+    std::uint32_t flags = 0;
+    std::int32_t shapeA = -1, shapeB = -1;
+    std::int32_t bodyA = -1, bodyB = -1;
+    Manifold manifold;
+    Real friction = 0;                 ///< sqrt(μA·μB)
+    Real restitution = 0;              ///< max(eA, eB)
+    Real restitutionThreshold = 0;     ///< min of the two (m/s)
+    std::int32_t prev = -1, next = -1; ///< world contact list
+    Edge edges[2];                     ///< [0] on bodyA's list, [1] on bodyB's
+
+    bool IsTouching() const { return (flags & Touching) != 0; }
+};
+
+/// Box2D 2.4.1's mixing rules.
+inline Real MixFriction(Real a, Real b)
+{
+    return std::sqrt(a * b);
+}
+inline Real MixRestitution(Real a, Real b)
+{
+    return a > b ? a : b;
+}
+inline Real MixRestitutionThreshold(Real a, Real b)
+{
+    return a < b ? a : b;
+}
+
+/// Recomputes the manifold for the shapes' current transforms and carries the old impulses
+/// over to points with the same feature key. Returns the new touching state.
+bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
+                    const Shape& shapeB, const Transform& xfB);
+
+/// Does the pair of shape types produce contacts, and which one is A? Box2D puts the polygon
+/// before the circle and the segment before anything; two segments never collide.
+bool ContactOrder(ShapeType typeA, ShapeType typeB, bool& swap);
+
+} // namespace meff::detail

@@ -1,0 +1,268 @@
+// Contact lifecycle: created from broad-phase pairs, updated by the narrow phase, destroyed
+// when the fat boxes part. Lists are kept newest first, as Box2D 2.4.1 does, because the island
+// search — and so the solver — walks them in that order.
+#include "dynamics/step_stages.h"
+
+#include "dynamics/world_state.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+bool FiltersAllow(const Filter& a, const Filter& b)
+{
+    if (a.groupIndex == b.groupIndex && a.groupIndex != 0)
+    {
+        return a.groupIndex > 0;
+    }
+    return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
+}
+
+/// At least one body dynamic, and no joint between them that forbids collision.
+bool BodiesShouldCollide(const WorldState& world, std::int32_t a, std::int32_t b)
+{
+    const Body& bodyA = world.bodies[a];
+    const Body& bodyB = world.bodies[b];
+    if (bodyA.type != BodyType::Dynamic && bodyB.type != BodyType::Dynamic)
+    {
+        return false;
+    }
+    for (std::int32_t key = bodyB.jointList; key != kNullIndex;)
+    {
+        const JointSlot& joint = world.joints[EdgeOwner(key)];
+        const Edge& edge = joint.edges[EdgeSide(key)];
+        if (edge.other == a && !joint.joint.collideConnected)
+        {
+            return false;
+        }
+        key = edge.next;
+    }
+    return true;
+}
+
+void LinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int side)
+{
+    Contact& contact = world.contacts[contactIndex];
+    Edge& edge = contact.edges[side];
+    edge.prev = kNullIndex;
+    edge.next = body.contactList;
+    if (body.contactList != kNullIndex)
+    {
+        world.contacts[EdgeOwner(body.contactList)].edges[EdgeSide(body.contactList)].prev =
+            EdgeKey(contactIndex, side);
+    }
+    body.contactList = EdgeKey(contactIndex, side);
+}
+
+void UnlinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int side)
+{
+    const Edge& edge = world.contacts[contactIndex].edges[side];
+    if (edge.prev != kNullIndex)
+    {
+        world.contacts[EdgeOwner(edge.prev)].edges[EdgeSide(edge.prev)].next = edge.next;
+    }
+    if (edge.next != kNullIndex)
+    {
+        world.contacts[EdgeOwner(edge.next)].edges[EdgeSide(edge.next)].prev = edge.prev;
+    }
+    if (body.contactList == EdgeKey(contactIndex, side))
+    {
+        body.contactList = edge.next;
+    }
+}
+
+void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
+{
+    const Shape& first = world.shapes[shapeIndexA];
+    const Shape& second = world.shapes[shapeIndexB];
+    const std::int32_t bodyA = first.body;
+    const std::int32_t bodyB = second.body;
+    if (bodyA == bodyB)
+    {
+        return;
+    }
+    // Does a contact between these two shapes exist already?
+    for (std::int32_t key = world.bodies[bodyB].contactList; key != kNullIndex;)
+    {
+        const Contact& c = world.contacts[EdgeOwner(key)];
+        const Edge& edge = c.edges[EdgeSide(key)];
+        if (edge.other == bodyA && ((c.shapeA == shapeIndexA && c.shapeB == shapeIndexB) ||
+                                    (c.shapeA == shapeIndexB && c.shapeB == shapeIndexA)))
+        {
+            return;
+        }
+        key = edge.next;
+    }
+    if (!BodiesShouldCollide(world, bodyB, bodyA) ||
+        !FiltersAllow(first.def.filter, second.def.filter))
+    {
+        return;
+    }
+    bool swap = false;
+    if (!ContactOrder(first.type, second.type, swap))
+    {
+        return;
+    }
+    const std::int32_t sA = swap ? shapeIndexB : shapeIndexA;
+    const std::int32_t sB = swap ? shapeIndexA : shapeIndexB;
+
+    std::int32_t index;
+    if (!world.freeContacts.empty())
+    {
+        index = world.freeContacts.back();
+        world.freeContacts.pop_back();
+    }
+    else
+    {
+        index = static_cast<std::int32_t>(world.contacts.size());
+        world.contacts.emplace_back();
+    }
+    Contact& contact = world.contacts[index];
+    contact = Contact{};
+    contact.alive = true;
+    contact.shapeA = sA;
+    contact.shapeB = sB;
+    contact.bodyA = world.shapes[sA].body;
+    contact.bodyB = world.shapes[sB].body;
+    const ShapeDef& defA = world.shapes[sA].def;
+    const ShapeDef& defB = world.shapes[sB].def;
+    contact.friction = MixFriction(defA.friction, defB.friction);
+    contact.restitution = MixRestitution(defA.restitution, defB.restitution);
+    contact.restitutionThreshold =
+        MixRestitutionThreshold(defA.restitutionThreshold, defB.restitutionThreshold);
+
+    contact.prev = kNullIndex;
+    contact.next = world.contactList;
+    if (world.contactList != kNullIndex)
+    {
+        world.contacts[world.contactList].prev = index;
+    }
+    world.contactList = index;
+
+    contact.edges[0].other = contact.bodyB;
+    contact.edges[1].other = contact.bodyA;
+    LinkEdge(world, world.bodies[contact.bodyA], index, 0);
+    LinkEdge(world, world.bodies[contact.bodyB], index, 1);
+    ++world.contactCount;
+}
+
+ContactEvent MakeEvent(const WorldState& world, const Contact& contact)
+{
+    return {ShapeId{contact.shapeA, world.shapes[contact.shapeA].generation},
+            ShapeId{contact.shapeB, world.shapes[contact.shapeB].generation}};
+}
+
+} // namespace
+
+void FindNewContacts(WorldState& world)
+{
+    world.broadPhase.UpdatePairs([&world](std::int32_t shapeA, std::int32_t shapeB)
+                                 { AddPair(world, shapeA, shapeB); });
+    world.newShapes = false;
+}
+
+void DestroyContact(WorldState& world, std::int32_t contactIndex)
+{
+    Contact& contact = world.contacts[contactIndex];
+    if (contact.IsTouching())
+    {
+        world.endEvents.push_back(MakeEvent(world, contact));
+    }
+    if (contact.prev != kNullIndex)
+    {
+        world.contacts[contact.prev].next = contact.next;
+    }
+    if (contact.next != kNullIndex)
+    {
+        world.contacts[contact.next].prev = contact.prev;
+    }
+    if (world.contactList == contactIndex)
+    {
+        world.contactList = contact.next;
+    }
+    UnlinkEdge(world, world.bodies[contact.bodyA], contactIndex, 0);
+    UnlinkEdge(world, world.bodies[contact.bodyB], contactIndex, 1);
+    contact.alive = false;
+    contact.flags = 0;
+    world.freeContacts.push_back(contactIndex);
+    --world.contactCount;
+}
+
+void FlagContactsForFiltering(WorldState& world, std::int32_t bodyA, std::int32_t bodyB)
+{
+    for (std::int32_t key = world.bodies[bodyB].contactList; key != kNullIndex;)
+    {
+        Contact& contact = world.contacts[EdgeOwner(key)];
+        const Edge& edge = contact.edges[EdgeSide(key)];
+        if (edge.other == bodyA)
+        {
+            contact.flags |= Contact::Filter;
+        }
+        key = edge.next;
+    }
+}
+
+void Collide(WorldState& world)
+{
+    for (std::int32_t c = world.contactList; c != kNullIndex;)
+    {
+        Contact& contact = world.contacts[c];
+        const std::int32_t next = contact.next;
+        const Shape& shapeA = world.shapes[contact.shapeA];
+        const Shape& shapeB = world.shapes[contact.shapeB];
+
+        if ((contact.flags & Contact::Filter) != 0)
+        {
+            if (!BodiesShouldCollide(world, contact.bodyB, contact.bodyA) ||
+                !FiltersAllow(shapeA.def.filter, shapeB.def.filter))
+            {
+                DestroyContact(world, c);
+                c = next;
+                continue;
+            }
+            contact.flags &= ~Contact::Filter;
+        }
+
+        const Body& bodyA = world.bodies[contact.bodyA];
+        const Body& bodyB = world.bodies[contact.bodyB];
+        const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
+        const bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
+        if (!activeA && !activeB)
+        {
+            c = next;
+            continue;
+        }
+
+        // Pairs whose fat boxes part are destroyed; the rest get a fresh manifold.
+        if (!world.broadPhase.TestOverlap(shapeA.proxyId, shapeB.proxyId))
+        {
+            DestroyContact(world, c);
+            c = next;
+            continue;
+        }
+
+        const bool wasTouching = contact.IsTouching();
+        const bool touching = UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+        if (touching)
+        {
+            contact.flags |= Contact::Touching;
+        }
+        else
+        {
+            contact.flags &= ~Contact::Touching;
+        }
+        if (touching && !wasTouching)
+        {
+            world.beginEvents.push_back(MakeEvent(world, contact));
+        }
+        else if (!touching && wasTouching)
+        {
+            world.endEvents.push_back(MakeEvent(world, contact));
+        }
+        c = next;
+    }
+}
+
+} // namespace meff::detail

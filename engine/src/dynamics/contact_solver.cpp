@@ -1,0 +1,424 @@
+#include "dynamics/contact_solver.h"
+
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
+#include "dynamics/shape.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// The scalar effective mass of one row along direction n (seed: 1/m_eff = Σ 1/m + (r×n)²/I).
+Real InverseEffectiveMass(Real mA, Real mB, Real iA, Real iB, Vec2 rA, Vec2 rB, Vec2 n)
+{
+    const Real rnA = Cross(rA, n);
+    const Real rnB = Cross(rB, n);
+    return mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+}
+
+/// Relative velocity of B's contact point with respect to A's.
+Vec2 RelativeVelocity(Vec2 vA, Real wA, Vec2 vB, Real wB, const ContactVelocityPoint& p)
+{
+    return vB + Cross(wB, p.rB) - vA - Cross(wA, p.rA);
+}
+
+/// The body transform from the solver's centre of mass and angle.
+Transform TransformFromCenter(Vec2 c, Real a, Vec2 localCenter)
+{
+    Transform xf;
+    xf.q.Set(a);
+    xf.p = c - Mul(xf.q, localCenter);
+    return xf;
+}
+
+/// Box2D's largest accepted condition number of the 2×2 block before it falls back to one
+/// point: beyond it the two rows are nearly parallel and K⁻¹ amplifies round-off.
+constexpr Real kMaxConditionNumber = 1000;
+
+} // namespace
+
+void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
+                            std::span<Contact> contacts, std::span<const Body> bodies,
+                            std::span<const Shape> shapes, SolverData& data)
+{
+    m_count = contactIndices.size();
+    if (m_velocity.size() < m_count)
+    {
+        m_velocity.resize(m_count);
+        m_position.resize(m_count);
+    }
+    const bool warmStarting = data.step.solver.warmStarting;
+    const bool blockSolver = data.step.solver.blockSolver;
+
+    for (std::size_t i = 0; i < m_count; ++i)
+    {
+        const Contact& contact = contacts[contactIndices[i]];
+        const Body& bodyA = bodies[contact.bodyA];
+        const Body& bodyB = bodies[contact.bodyB];
+        const Manifold& manifold = contact.manifold;
+
+        ContactVelocityConstraint& vc = m_velocity[i];
+        vc.friction = contact.friction;
+        vc.restitution = contact.restitution;
+        vc.threshold = contact.restitutionThreshold;
+        vc.indexA = bodyA.islandIndex;
+        vc.indexB = bodyB.islandIndex;
+        vc.invMassA = bodyA.invMass;
+        vc.invMassB = bodyB.invMass;
+        vc.invIA = bodyA.invI;
+        vc.invIB = bodyB.invI;
+        vc.contactIndex = contactIndices[i];
+        vc.pointCount = manifold.pointCount;
+        vc.K = Mat22{{0, 0}, {0, 0}};
+        vc.normalMass = Mat22{{0, 0}, {0, 0}};
+
+        ContactPositionConstraint& pc = m_position[i];
+        pc.indexA = bodyA.islandIndex;
+        pc.indexB = bodyB.islandIndex;
+        pc.invMassA = bodyA.invMass;
+        pc.invMassB = bodyB.invMass;
+        pc.invIA = bodyA.invI;
+        pc.invIB = bodyB.invI;
+        pc.localCenterA = bodyA.sweep.localCenter;
+        pc.localCenterB = bodyB.sweep.localCenter;
+        pc.localNormal = manifold.localNormal;
+        pc.localPoint = manifold.localPoint;
+        pc.type = manifold.type;
+        pc.radiusA = shapes[contact.shapeA].Radius();
+        pc.radiusB = shapes[contact.shapeB].Radius();
+        pc.pointCount = manifold.pointCount;
+
+        for (int j = 0; j < manifold.pointCount; ++j)
+        {
+            const ManifoldPoint& mp = manifold.points[j];
+            ContactVelocityPoint& vp = vc.points[j];
+            // Impulses are scaled by dt/dt0 so that a changed step size keeps the same force.
+            vp.normalImpulse = warmStarting ? data.step.dtRatio * mp.normalImpulse : Real(0);
+            vp.tangentImpulse = warmStarting ? data.step.dtRatio * mp.tangentImpulse : Real(0);
+            pc.localPoints[j] = mp.localPoint;
+        }
+
+        // Position-dependent part: lever arms, effective masses, restitution bias.
+        const Real mA = vc.invMassA, mB = vc.invMassB, iA = vc.invIA, iB = vc.invIB;
+        const Vec2 cA = data.positions[vc.indexA].c;
+        const Vec2 cB = data.positions[vc.indexB].c;
+        const Transform xfA = TransformFromCenter(cA, data.positions[vc.indexA].a, pc.localCenterA);
+        const Transform xfB = TransformFromCenter(cB, data.positions[vc.indexB].a, pc.localCenterB);
+        WorldManifold worldManifold;
+        worldManifold.Initialize(manifold, xfA, pc.radiusA, xfB, pc.radiusB);
+        vc.normal = worldManifold.normal;
+        const Vec2 tangent = Cross(vc.normal, Real(1));
+        const Velocity velA = data.velocities[vc.indexA];
+        const Velocity velB = data.velocities[vc.indexB];
+
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            ContactVelocityPoint& vp = vc.points[j];
+            vp.rA = worldManifold.points[j] - cA;
+            vp.rB = worldManifold.points[j] - cB;
+            const Real kNormal = InverseEffectiveMass(mA, mB, iA, iB, vp.rA, vp.rB, vc.normal);
+            vp.normalMass = kNormal > 0 ? Real(1) / kNormal : Real(0);
+            const Real kTangent = InverseEffectiveMass(mA, mB, iA, iB, vp.rA, vp.rB, tangent);
+            vp.tangentMass = kTangent > 0 ? Real(1) / kTangent : Real(0);
+
+            // Restitution (seed: P = (1+e)(u2−u1)·m_red): driving the normal row to the target
+            // velocity −e·vn instead of 0 makes the impulse (1+e)·m_red·|vn|.
+            vp.velocityBias = 0;
+            const Real vRel = Dot(vc.normal, RelativeVelocity(velA.v, velA.w, velB.v, velB.w, vp));
+            if (vRel < -vc.threshold)
+            {
+                vp.velocityBias = -vc.restitution * vRel;
+            }
+        }
+
+        if (vc.pointCount == 2 && blockSolver)
+        {
+            const ContactVelocityPoint& p1 = vc.points[0];
+            const ContactVelocityPoint& p2 = vc.points[1];
+            const Real rn1A = Cross(p1.rA, vc.normal), rn1B = Cross(p1.rB, vc.normal);
+            const Real rn2A = Cross(p2.rA, vc.normal), rn2B = Cross(p2.rB, vc.normal);
+            const Real k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+            const Real k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+            const Real k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+            if (k11 * k11 < kMaxConditionNumber * (k11 * k22 - k12 * k12))
+            {
+                vc.K.ex = {k11, k12};
+                vc.K.ey = {k12, k22};
+                vc.normalMass = vc.K.GetInverse();
+            }
+            else
+            {
+                // Redundant rows: solve only the first point (as Box2D; the second keeps its
+                // stored impulse and is not reported this step).
+                vc.pointCount = 1;
+            }
+        }
+    }
+}
+
+void ContactSolver::WarmStart(SolverData& data)
+{
+    for (std::size_t i = 0; i < m_count; ++i)
+    {
+        const ContactVelocityConstraint& vc = m_velocity[i];
+        Velocity& a = data.velocities[vc.indexA];
+        Velocity& b = data.velocities[vc.indexB];
+        Vec2 vA = a.v, vB = b.v;
+        Real wA = a.w, wB = b.w;
+        const Vec2 tangent = Cross(vc.normal, Real(1));
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            const ContactVelocityPoint& vp = vc.points[j];
+            const Vec2 P = vp.normalImpulse * vc.normal + vp.tangentImpulse * tangent;
+            wA -= vc.invIA * Cross(vp.rA, P);
+            vA -= vc.invMassA * P;
+            wB += vc.invIB * Cross(vp.rB, P);
+            vB += vc.invMassB * P;
+        }
+        a.v = vA;
+        a.w = wA;
+        b.v = vB;
+        b.w = wB;
+    }
+}
+
+void ContactSolver::SolveVelocities(SolverData& data)
+{
+    const bool blockSolver = data.step.solver.blockSolver;
+    for (std::size_t i = 0; i < m_count; ++i)
+    {
+        ContactVelocityConstraint& vc = m_velocity[i];
+        Velocity& a = data.velocities[vc.indexA];
+        Velocity& b = data.velocities[vc.indexB];
+        Vec2 vA = a.v, vB = b.v;
+        Real wA = a.w, wB = b.w;
+        const Real mA = vc.invMassA, mB = vc.invMassB, iA = vc.invIA, iB = vc.invIB;
+        const Vec2 normal = vc.normal;
+        const Vec2 tangent = Cross(normal, Real(1));
+
+        // Friction rows first: non-penetration, solved last, matters more.
+        // A scene with friction 0 pays nothing for them.
+        if (vc.friction > 0)
+        {
+            for (int j = 0; j < vc.pointCount; ++j)
+            {
+                ContactVelocityPoint& vp = vc.points[j];
+                const Real vt = Dot(RelativeVelocity(vA, wA, vB, wB, vp), tangent);
+                Real lambda = vp.tangentMass * (-vt);
+                const Real maxFriction = vc.friction * vp.normalImpulse;
+                const Real newImpulse =
+                    Clamp(vp.tangentImpulse + lambda, -maxFriction, maxFriction);
+                lambda = newImpulse - vp.tangentImpulse;
+                vp.tangentImpulse = newImpulse;
+                const Vec2 P = lambda * tangent;
+                vA -= mA * P;
+                wA -= iA * Cross(vp.rA, P);
+                vB += mB * P;
+                wB += iB * Cross(vp.rB, P);
+            }
+        }
+
+        if (vc.pointCount == 1 || !blockSolver)
+        {
+            for (int j = 0; j < vc.pointCount; ++j)
+            {
+                ContactVelocityPoint& vp = vc.points[j];
+                const Real vn = Dot(RelativeVelocity(vA, wA, vB, wB, vp), normal);
+                Real lambda = -vp.normalMass * (vn - vp.velocityBias);
+                const Real newImpulse = Max(vp.normalImpulse + lambda, Real(0));
+                lambda = newImpulse - vp.normalImpulse;
+                vp.normalImpulse = newImpulse;
+                const Vec2 P = lambda * normal;
+                vA -= mA * P;
+                wA -= iA * Cross(vp.rA, P);
+                vB += mB * P;
+                wB += iB * Cross(vp.rB, P);
+            }
+        }
+        else
+        {
+            SolveNormalBlock(vc, vA, wA, vB, wB);
+        }
+
+        a.v = vA;
+        a.w = wA;
+        b.v = vB;
+        b.w = wB;
+    }
+}
+
+// The two normal rows as one linear complementarity problem vn = K·x + b, x ≥ 0, vn ≥ 0,
+// x·vn = 0, solved by trying its four cases in turn (total enumeration); x is the total
+// accumulated impulse, so b is corrected by K·a for the impulse a already applied.
+void ContactSolver::SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Real& wA, Vec2& vB,
+                                     Real& wB) const
+{
+    ContactVelocityPoint& p1 = vc.points[0];
+    ContactVelocityPoint& p2 = vc.points[1];
+    const Vec2 normal = vc.normal;
+    const Vec2 a{p1.normalImpulse, p2.normalImpulse};
+
+    const Real vn1 = Dot(RelativeVelocity(vA, wA, vB, wB, p1), normal);
+    const Real vn2 = Dot(RelativeVelocity(vA, wA, vB, wB, p2), normal);
+    Vec2 b{vn1 - p1.velocityBias, vn2 - p2.velocityBias};
+    b -= Mul(vc.K, a);
+
+    const auto apply = [&](Vec2 x)
+    {
+        const Vec2 d = x - a;
+        const Vec2 P1 = d.x * normal;
+        const Vec2 P2 = d.y * normal;
+        vA -= vc.invMassA * (P1 + P2);
+        wA -= vc.invIA * (Cross(p1.rA, P1) + Cross(p2.rA, P2));
+        vB += vc.invMassB * (P1 + P2);
+        wB += vc.invIB * (Cross(p1.rB, P1) + Cross(p2.rB, P2));
+        p1.normalImpulse = x.x;
+        p2.normalImpulse = x.y;
+    };
+
+    // Case 1: both points stay in contact (vn = 0): x = −K⁻¹·b.
+    Vec2 x = -Mul(vc.normalMass, b);
+    if (x.x >= 0 && x.y >= 0)
+    {
+        apply(x);
+        return;
+    }
+    // Case 2: point 1 in contact, point 2 separating (x2 = 0).
+    x = {-p1.normalMass * b.x, 0};
+    Real v2 = vc.K.ex.y * x.x + b.y;
+    if (x.x >= 0 && v2 >= 0)
+    {
+        apply(x);
+        return;
+    }
+    // Case 3: point 2 in contact, point 1 separating (x1 = 0).
+    x = {0, -p2.normalMass * b.y};
+    Real v1 = vc.K.ey.x * x.y + b.x;
+    if (x.y >= 0 && v1 >= 0)
+    {
+        apply(x);
+        return;
+    }
+    // Case 4: both separating.
+    x = {0, 0};
+    v1 = b.x;
+    v2 = b.y;
+    if (v1 >= 0 && v2 >= 0)
+    {
+        apply(x);
+    }
+    // Otherwise no case holds (rare, from round-off); leave the impulses as they are.
+}
+
+void ContactSolver::StoreImpulses(std::span<Contact> contacts) const
+{
+    for (std::size_t i = 0; i < m_count; ++i)
+    {
+        const ContactVelocityConstraint& vc = m_velocity[i];
+        Manifold& manifold = contacts[vc.contactIndex].manifold;
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            manifold.points[j].normalImpulse = vc.points[j].normalImpulse;
+            manifold.points[j].tangentImpulse = vc.points[j].tangentImpulse;
+        }
+    }
+}
+
+namespace
+{
+
+/// Normal, point and separation of contact point `index` re-evaluated at the current
+/// transforms, from the manifold's local data.
+struct PositionPoint
+{
+    Vec2 normal, point;
+    Real separation;
+};
+
+PositionPoint EvaluatePositionPoint(const ContactPositionConstraint& pc, const Transform& xfA,
+                                    const Transform& xfB, int index)
+{
+    PositionPoint out{};
+    switch (pc.type)
+    {
+    case Manifold::Type::Circles:
+    {
+        const Vec2 pointA = Mul(xfA, pc.localPoint);
+        const Vec2 pointB = Mul(xfB, pc.localPoints[0]);
+        out.normal = pointB - pointA;
+        out.normal.Normalize();
+        out.point = Real(0.5) * (pointA + pointB);
+        out.separation = Dot(pointB - pointA, out.normal) - pc.radiusA - pc.radiusB;
+        break;
+    }
+    case Manifold::Type::FaceA:
+    {
+        out.normal = Mul(xfA.q, pc.localNormal);
+        const Vec2 planePoint = Mul(xfA, pc.localPoint);
+        const Vec2 clipPoint = Mul(xfB, pc.localPoints[index]);
+        out.separation = Dot(clipPoint - planePoint, out.normal) - pc.radiusA - pc.radiusB;
+        out.point = clipPoint;
+        break;
+    }
+    case Manifold::Type::FaceB:
+    {
+        out.normal = Mul(xfB.q, pc.localNormal);
+        const Vec2 planePoint = Mul(xfB, pc.localPoint);
+        const Vec2 clipPoint = Mul(xfA, pc.localPoints[index]);
+        out.separation = Dot(clipPoint - planePoint, out.normal) - pc.radiusA - pc.radiusB;
+        out.point = clipPoint;
+        out.normal = -out.normal; // from A to B
+        break;
+    }
+    }
+    return out;
+}
+
+} // namespace
+
+bool ContactSolver::SolvePositions(SolverData& data)
+{
+    const Tolerances& tol = data.step.tolerances;
+    Real minSeparation = 0;
+    for (std::size_t i = 0; i < m_count; ++i)
+    {
+        const ContactPositionConstraint& pc = m_position[i];
+        Position& a = data.positions[pc.indexA];
+        Position& b = data.positions[pc.indexB];
+        Vec2 cA = a.c, cB = b.c;
+        Real aA = a.a, aB = b.a;
+        const Real mA = pc.invMassA, mB = pc.invMassB, iA = pc.invIA, iB = pc.invIB;
+
+        for (int j = 0; j < pc.pointCount; ++j)
+        {
+            const Transform xfA = TransformFromCenter(cA, aA, pc.localCenterA);
+            const Transform xfB = TransformFromCenter(cB, aB, pc.localCenterB);
+            const PositionPoint pp = EvaluatePositionPoint(pc, xfA, xfB, j);
+            const Vec2 rA = pp.point - cA;
+            const Vec2 rB = pp.point - cB;
+            minSeparation = Min(minSeparation, pp.separation);
+
+            // Baumgarte-scaled correction that leaves linearSlop of overlap (so contacts
+            // persist) and never moves more than maxLinearCorrection at once.
+            const Real C = Clamp(tol.baumgarte * (pp.separation + tol.linearSlop),
+                                 -tol.maxLinearCorrection, Real(0));
+            const Real K = InverseEffectiveMass(mA, mB, iA, iB, rA, rB, pp.normal);
+            const Real impulse = K > 0 ? -C / K : Real(0);
+            const Vec2 P = impulse * pp.normal;
+            cA -= mA * P;
+            aA -= iA * Cross(rA, P);
+            cB += mB * P;
+            aB += iB * Cross(rB, P);
+        }
+        a.c = cA;
+        a.a = aA;
+        b.c = cB;
+        b.a = aB;
+    }
+    // The solver stops pushing at −linearSlop, so −3·slop is "solved".
+    return minSeparation >= Real(-3) * tol.linearSlop;
+}
+
+} // namespace meff::detail

@@ -1,0 +1,101 @@
+#include "dynamics/island.h"
+
+#include "dynamics/world_state.h"
+
+namespace meff::detail
+{
+
+void ResetIslandFlags(WorldState& world)
+{
+    for (Body& body : world.bodies)
+    {
+        body.islandFlag = false;
+    }
+    for (Contact& contact : world.contacts)
+    {
+        contact.flags &= ~Contact::Island;
+    }
+    for (JointSlot& joint : world.joints)
+    {
+        joint.islandFlag = false;
+    }
+}
+
+void BuildIsland(WorldState& world, std::int32_t seed, Island& island)
+{
+    island.Clear();
+    std::vector<std::int32_t>& stack = island.stack;
+    stack.clear();
+    stack.push_back(seed);
+    world.bodies[seed].islandFlag = true;
+
+    while (!stack.empty())
+    {
+        const std::int32_t bodyIndex = stack.back();
+        stack.pop_back();
+        Body& body = world.bodies[bodyIndex];
+        body.islandIndex = static_cast<std::int32_t>(island.bodies.size());
+        island.bodies.push_back(bodyIndex);
+        body.awake = true;
+
+        // Static bodies end the search: they do not join the islands they touch.
+        if (body.type == BodyType::Static)
+        {
+            continue;
+        }
+
+        for (std::int32_t key = body.contactList; key != kNullIndex;)
+        {
+            const std::int32_t contactIndex = EdgeOwner(key);
+            Contact& contact = world.contacts[contactIndex];
+            const Edge& edge = contact.edges[EdgeSide(key)];
+            key = edge.next;
+            if ((contact.flags & Contact::Island) != 0 || !contact.IsTouching())
+            {
+                continue;
+            }
+            contact.flags |= Contact::Island;
+            island.contacts.push_back(contactIndex);
+            Body& other = world.bodies[edge.other];
+            if (!other.islandFlag)
+            {
+                other.islandFlag = true;
+                stack.push_back(edge.other);
+            }
+        }
+
+        for (std::int32_t key = body.jointList; key != kNullIndex;)
+        {
+            const std::int32_t jointIndex = EdgeOwner(key);
+            JointSlot& joint = world.joints[jointIndex];
+            const Edge& edge = joint.edges[EdgeSide(key)];
+            key = edge.next;
+            if (joint.islandFlag)
+            {
+                continue;
+            }
+            joint.islandFlag = true;
+            island.joints.push_back(jointIndex);
+            Body& other = world.bodies[edge.other];
+            if (!other.islandFlag)
+            {
+                other.islandFlag = true;
+                stack.push_back(edge.other);
+            }
+        }
+    }
+}
+
+void ReleaseStaticBodies(WorldState& world, const Island& island)
+{
+    for (const std::int32_t bodyIndex : island.bodies)
+    {
+        Body& body = world.bodies[bodyIndex];
+        if (body.type == BodyType::Static)
+        {
+            body.islandFlag = false;
+        }
+    }
+}
+
+} // namespace meff::detail

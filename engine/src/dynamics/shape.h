@@ -1,0 +1,54 @@
+// A shape inside the world: geometry, material and its broad-phase proxy.
+#pragma once
+
+#include "meff/collision.h"
+#include "meff/shape.h"
+
+#include <cstdint>
+
+namespace meff::detail
+{
+
+struct Shape
+{
+    std::uint32_t generation = 0;
+    bool alive = false;
+    std::int32_t body = -1;
+    ShapeType type = ShapeType::Circle;
+    Circle circle;   ///< valid when type == Circle
+    Polygon polygon; ///< valid when type == Polygon
+    Segment segment; ///< valid when type == Segment
+    ShapeDef def;
+    std::int32_t proxyId = -1;
+    AABB aabb; ///< the box last given to the broad phase (swept over the step)
+
+    /// Collision radius: the circle's radius, or the skin of a polygon or segment.
+    Real Radius() const
+    {
+        switch (type)
+        {
+        case ShapeType::Circle:
+            return circle.radius;
+        case ShapeType::Polygon:
+            return polygon.radius;
+        case ShapeType::Segment:
+            return segment.radius;
+        }
+        return 0;
+    }
+    AABB ComputeAABB(const Transform& xf) const
+    {
+        switch (type)
+        {
+        case ShapeType::Circle:
+            return meff::ComputeAABB(circle, xf);
+        case ShapeType::Polygon:
+            return meff::ComputeAABB(polygon, xf);
+        case ShapeType::Segment:
+            return meff::ComputeAABB(segment, xf);
+        }
+        return {};
+    }
+};
+
+} // namespace meff::detail

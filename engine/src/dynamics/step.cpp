@@ -1,0 +1,295 @@
+// One step of the world, as named stages. The order is Box2D 2.4.1's (b2World::Step,
+// b2World::Solve, b2Island::Solve), so the same scene agrees between the two engines:
+//
+//   find new contacts → collide → for each island: integrate velocities, prepare, warm start,
+//   solve velocities, integrate positions, correct positions, finish bodies, report →
+//   synchronize shapes → find new contacts → clear forces
+#include "dynamics/step_stages.h"
+
+#include "dynamics/world_state.h"
+#include "meff/world.h"
+
+#include <string>
+
+namespace meff
+{
+
+using namespace detail;
+
+void World::Step(Real dt)
+{
+    WorldState& world = *m_state;
+    if (!(dt > 0) || !meff::IsValid(dt))
+    {
+        throw InvalidArgument("World::Step: dt must be finite and > 0, got " + std::to_string(dt));
+    }
+    if (world.failed)
+    {
+        throw Error("World::Step: an earlier step produced a non-finite state; the world is "
+                    "frozen (read it, then rebuild it)");
+    }
+
+    const StepContext step = BeginStep(world, dt);
+    if (world.newShapes)
+    {
+        FindNewContacts(world);
+    }
+    Collide(world);
+
+    ResetIslandFlags(world);
+    for (std::int32_t seed = world.bodyList; seed != kNullIndex; seed = world.bodies[seed].next)
+    {
+        if (CanSeedIsland(world.bodies[seed]))
+        {
+            BuildIsland(world, seed, world.island);
+            SolveIsland(world, world.island, step);
+            ReleaseStaticBodies(world, world.island);
+        }
+    }
+
+    SynchronizeShapes(world);
+    FindNewContacts(world);
+    ClearForces(world);
+    world.invDt0 = step.invDt;
+    ++world.stepCount;
+}
+
+namespace detail
+{
+
+StepContext BeginStep(WorldState& world, Real dt)
+{
+    StepContext step;
+    step.dt = dt;
+    step.invDt = Real(1) / dt;
+    step.dtRatio = world.invDt0 * dt;
+    step.solver = world.solver;
+    step.tolerances = world.tolerances;
+    world.contactReports.clear();
+    world.beginEvents.clear();
+    world.endEvents.clear();
+    return step;
+}
+
+bool CanSeedIsland(const Body& body)
+{
+    return body.alive && !body.islandFlag && body.awake && body.type != BodyType::Static;
+}
+
+void SolveIsland(WorldState& world, Island& island, const StepContext& step)
+{
+    SolverData data{step, nullptr, nullptr};
+    IntegrateVelocities(world, island, step);
+    data.positions = island.positions.data();
+    data.velocities = island.velocities.data();
+
+    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, world.shapes, data);
+    if (step.solver.warmStarting)
+    {
+        world.contactSolver.WarmStart(data);
+    }
+    PrepareJoints(world, island, data);
+
+    for (int i = 0; i < step.solver.velocityIterations; ++i)
+    {
+        for (const std::int32_t j : island.joints)
+        {
+            SolveJointVelocityConstraints(world.joints[j].joint, data);
+        }
+        world.contactSolver.SolveVelocities(data);
+    }
+    world.contactSolver.StoreImpulses(world.contacts);
+
+    IntegratePositions(island, step);
+    CorrectPositions(world, island, data);
+    FinishBodies(world, island);
+    ReportContacts(world);
+}
+
+void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step)
+{
+    const std::size_t count = island.bodies.size();
+    island.positions.resize(count);
+    island.velocities.resize(count);
+    const Real h = step.dt;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        Body& body = world.bodies[island.bodies[i]];
+        Vec2 v = body.linearVelocity;
+        Real w = body.angularVelocity;
+        body.sweep.c0 = body.sweep.c;
+        body.sweep.a0 = body.sweep.a;
+        if (body.type == BodyType::Dynamic)
+        {
+            // Semi-implicit Euler: v += h·(g + F/m), then the damping ODE dv/dt = −c·v solved
+            // implicitly (stable for any c·h).
+            v += h * body.invMass * (body.gravityScale * body.mass * world.gravity + body.force);
+            w += h * body.invI * body.torque;
+            v *= Real(1) / (Real(1) + h * body.linearDamping);
+            w *= Real(1) / (Real(1) + h * body.angularDamping);
+        }
+        island.positions[i] = {body.sweep.c, body.sweep.a};
+        island.velocities[i] = {v, w};
+    }
+}
+
+void PrepareJoints(WorldState& world, Island& island, SolverData& data)
+{
+    for (const std::int32_t j : island.joints)
+    {
+        Joint& joint = world.joints[j].joint;
+        const auto info = [&](std::int32_t bodyIndex)
+        {
+            const Body& body = world.bodies[bodyIndex];
+            return JointBody{body.islandIndex, body.sweep.localCenter, body.invMass, body.invI};
+        };
+        InitJointVelocityConstraints(joint, info(joint.bodyA), info(joint.bodyB), data);
+    }
+}
+
+void IntegratePositions(Island& island, const StepContext& step)
+{
+    const Real h = step.dt;
+    const Tolerances& tol = step.tolerances;
+    const Real maxTranslationSquared = tol.maxTranslation * tol.maxTranslation;
+    const Real maxRotationSquared = tol.maxRotation * tol.maxRotation;
+    for (std::size_t i = 0; i < island.bodies.size(); ++i)
+    {
+        Vec2 c = island.positions[i].c;
+        Real a = island.positions[i].a;
+        Vec2 v = island.velocities[i].v;
+        Real w = island.velocities[i].w;
+
+        // Clamp the motion of one step: a body cannot outrun the broad phase's margins.
+        const Vec2 translation = h * v;
+        if (Dot(translation, translation) > maxTranslationSquared)
+        {
+            v *= tol.maxTranslation / translation.Length();
+        }
+        const Real rotation = h * w;
+        if (rotation * rotation > maxRotationSquared)
+        {
+            w *= tol.maxRotation / std::abs(rotation);
+        }
+
+        c += h * v;
+        a += h * w;
+        island.positions[i] = {c, a};
+        island.velocities[i] = {v, w};
+    }
+}
+
+void CorrectPositions(WorldState& world, Island& island, SolverData& data)
+{
+    for (int i = 0; i < data.step.solver.positionIterations; ++i)
+    {
+        const bool contactsOkay = world.contactSolver.SolvePositions(data);
+        bool jointsOkay = true;
+        for (const std::int32_t j : island.joints)
+        {
+            const bool jointOkay = SolveJointPositionConstraints(world.joints[j].joint, data);
+            jointsOkay = jointsOkay && jointOkay;
+        }
+        if (contactsOkay && jointsOkay)
+        {
+            break; // every constraint within tolerance: later sweeps would only add drift
+        }
+    }
+}
+
+void FinishBodies(WorldState& world, Island& island)
+{
+    // Refuse a non-finite state before any of this island is written back, so the bodies keep
+    // their last good state and stay readable.
+    for (std::size_t i = 0; i < island.bodies.size(); ++i)
+    {
+        const Position& p = island.positions[i];
+        const Velocity& v = island.velocities[i];
+        if (!p.c.IsValid() || !meff::IsValid(p.a) || !v.v.IsValid() || !meff::IsValid(v.w))
+        {
+            world.failed = true;
+            const std::int32_t bodyIndex = island.bodies[i];
+            throw SimulationError("step " + std::to_string(world.stepCount) + ": body " +
+                                      std::to_string(bodyIndex) + " (user data " +
+                                      std::to_string(world.bodies[bodyIndex].userData) +
+                                      ") has a non-finite position or velocity",
+                                  world.stepCount, bodyIndex);
+        }
+    }
+    for (std::size_t i = 0; i < island.bodies.size(); ++i)
+    {
+        Body& body = world.bodies[island.bodies[i]];
+        body.sweep.c = island.positions[i].c;
+        body.sweep.a = island.positions[i].a;
+        body.linearVelocity = island.velocities[i].v;
+        body.angularVelocity = island.velocities[i].w;
+        SynchronizeTransform(body);
+    }
+}
+
+void ReportContacts(WorldState& world)
+{
+    for (const ContactVelocityConstraint& vc : world.contactSolver.VelocityConstraints())
+    {
+        const Contact& contact = world.contacts[vc.contactIndex];
+        const Shape& shapeA = world.shapes[contact.shapeA];
+        const Shape& shapeB = world.shapes[contact.shapeB];
+        const Body& bodyA = world.bodies[contact.bodyA];
+        const Body& bodyB = world.bodies[contact.bodyB];
+        WorldManifold wm;
+        wm.Initialize(contact.manifold, bodyA.xf, shapeA.Radius(), bodyB.xf, shapeB.Radius());
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            ContactPointReport report;
+            report.bodyA = {contact.bodyA, bodyA.generation};
+            report.bodyB = {contact.bodyB, bodyB.generation};
+            report.shapeA = {contact.shapeA, shapeA.generation};
+            report.shapeB = {contact.shapeB, shapeB.generation};
+            report.point = wm.points[j];
+            report.normal = wm.normal;
+            report.separation = wm.separations[j];
+            report.normalImpulse = vc.points[j].normalImpulse;
+            report.tangentImpulse = vc.points[j].tangentImpulse;
+            report.featureKey = contact.manifold.points[j].id.Key();
+            report.pointIndex = j;
+            world.contactReports.push_back(report);
+        }
+    }
+}
+
+void SynchronizeShapes(WorldState& world)
+{
+    for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
+    {
+        Body& body = world.bodies[b];
+        // A body outside every island did not move; static bodies never move in a step.
+        if (!body.islandFlag || body.type == BodyType::Static)
+        {
+            continue;
+        }
+        Transform xf0;
+        xf0.q.Set(body.sweep.a0);
+        xf0.p = body.sweep.c0 - Mul(xf0.q, body.sweep.localCenter);
+        for (const std::int32_t s : body.shapes)
+        {
+            Shape& shape = world.shapes[s];
+            const AABB box0 = shape.ComputeAABB(xf0);
+            const AABB box1 = shape.ComputeAABB(body.xf);
+            shape.aabb = Combine(box0, box1);
+            world.broadPhase.MoveProxy(shape.proxyId, shape.aabb,
+                                       box1.GetCenter() - box0.GetCenter());
+        }
+    }
+}
+
+void ClearForces(WorldState& world)
+{
+    for (Body& body : world.bodies)
+    {
+        body.force = {0, 0};
+        body.torque = 0;
+    }
+}
+
+} // namespace detail
+} // namespace meff

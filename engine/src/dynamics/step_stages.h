@@ -1,0 +1,37 @@
+// The named stages of World::Step (step.cpp) and the contact lifecycle (contact_manager.cpp).
+#pragma once
+
+#include "dynamics/solver_types.h"
+
+#include <cstdint>
+
+namespace meff::detail
+{
+
+struct WorldState;
+struct Body;
+struct Island;
+
+StepContext BeginStep(WorldState& world, Real dt);
+bool CanSeedIsland(const Body& body);
+void SolveIsland(WorldState& world, Island& island, const StepContext& step);
+void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step);
+void PrepareJoints(WorldState& world, Island& island, SolverData& data);
+void IntegratePositions(Island& island, const StepContext& step);
+void CorrectPositions(WorldState& world, Island& island, SolverData& data);
+void FinishBodies(WorldState& world, Island& island);
+void ReportContacts(WorldState& world);
+void SynchronizeShapes(WorldState& world);
+void ClearForces(WorldState& world);
+
+// Contact lifecycle
+/// Creates contacts for the broad phase's new pairs.
+void FindNewContacts(WorldState& world);
+/// The narrow phase: re-filters flagged contacts, destroys contacts whose fat boxes no longer
+/// overlap, updates the manifolds of the rest and records begin/end events.
+void Collide(WorldState& world);
+void DestroyContact(WorldState& world, std::int32_t contactIndex);
+/// Flags every contact between two bodies for re-filtering (a joint was added or removed).
+void FlagContactsForFiltering(WorldState& world, std::int32_t bodyA, std::int32_t bodyB);
+
+} // namespace meff::detail

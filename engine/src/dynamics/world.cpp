@@ -1,0 +1,829 @@
+// The World's public API: creation and destruction, accessors, and argument checking. The step
+// itself is in step.cpp.
+#include "meff/world.h"
+
+#include "dynamics/step_stages.h"
+#include "dynamics/world_state.h"
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+
+namespace meff
+{
+
+using namespace detail;
+
+namespace
+{
+
+std::string Describe(Vec2 v)
+{
+    std::ostringstream out;
+    out << "(" << v.x << ", " << v.y << ")";
+    return out.str();
+}
+
+void Require(bool condition, const std::string& what)
+{
+    if (!condition)
+    {
+        throw InvalidArgument(what);
+    }
+}
+
+void RequireFinite(Real value, const char* where)
+{
+    Require(meff::IsValid(value),
+            std::string(where) + ": must be finite, got " + std::to_string(value));
+}
+
+void RequireFinite(Vec2 value, const char* where)
+{
+    Require(value.IsValid(), std::string(where) + ": must be finite, got " + Describe(value));
+}
+
+void RequireNonNegative(Real value, const char* where)
+{
+    Require(meff::IsValid(value) && value >= 0,
+            std::string(where) + ": must be finite and >= 0, got " + std::to_string(value));
+}
+
+/// Takes a slot from the free list or grows the pool; returns its index.
+template <typename T>
+std::int32_t AllocateSlot(std::vector<T>& pool, std::vector<std::int32_t>& freeList)
+{
+    if (!freeList.empty())
+    {
+        const std::int32_t index = freeList.back();
+        freeList.pop_back();
+        return index;
+    }
+    pool.emplace_back();
+    return static_cast<std::int32_t>(pool.size() - 1);
+}
+
+/// Looks an id up in a pool, refusing null, out-of-range and stale ids.
+template <typename T, typename IdType>
+T& Resolve(std::vector<T>& pool, IdType id, const char* kind)
+{
+    if (id.index < 0 || static_cast<std::size_t>(id.index) >= pool.size() || id.IsNull() ||
+        !pool[id.index].alive || pool[id.index].generation != id.generation)
+    {
+        throw InvalidArgument(std::string("invalid ") + kind + " id (index " +
+                              std::to_string(id.index) + ", generation " +
+                              std::to_string(id.generation) + "): null, or already destroyed");
+    }
+    return pool[id.index];
+}
+
+/// Box2D 2.4.1's b2Body::ResetMassData: mass and centre from the shapes' densities, inertia
+/// moved to the centre of mass, and the centre's velocity updated for the moved centre.
+void ResetMassData(WorldState& world, Body& body)
+{
+    body.mass = 0;
+    body.invMass = 0;
+    body.I = 0;
+    body.invI = 0;
+    body.sweep.localCenter = {0, 0};
+    if (body.type != BodyType::Dynamic)
+    {
+        body.sweep.c0 = body.xf.p;
+        body.sweep.c = body.xf.p;
+        body.sweep.a0 = body.sweep.a;
+        return;
+    }
+    Vec2 localCenter{0, 0};
+    for (const std::int32_t s : body.shapes)
+    {
+        const Shape& shape = world.shapes[s];
+        if (shape.def.density == 0 || shape.type == ShapeType::Segment)
+        {
+            continue;
+        }
+        const MassData md = shape.type == ShapeType::Circle
+                                ? ComputeMass(shape.circle, shape.def.density)
+                                : ComputeMass(shape.polygon, shape.def.density);
+        body.mass += md.mass;
+        localCenter += md.mass * md.center;
+        body.I += md.rotationalInertia;
+    }
+    if (body.mass > 0)
+    {
+        body.invMass = Real(1) / body.mass;
+        localCenter *= body.invMass;
+    }
+    else
+    {
+        // A dynamic body needs a positive mass to respond to anything.
+        body.mass = 1;
+        body.invMass = 1;
+    }
+    if (body.I > 0 && !body.fixedRotation)
+    {
+        body.I -= body.mass * Dot(localCenter, localCenter); // parallel-axis theorem
+        body.invI = Real(1) / body.I;
+    }
+    else
+    {
+        body.I = 0;
+        body.invI = 0;
+    }
+    const Vec2 oldCenter = body.sweep.c;
+    body.sweep.localCenter = localCenter;
+    body.sweep.c = Mul(body.xf, body.sweep.localCenter);
+    body.sweep.c0 = body.sweep.c;
+    body.linearVelocity += Cross(body.angularVelocity, body.sweep.c - oldCenter);
+}
+
+void LinkJointEdge(WorldState& world, std::int32_t jointIndex, int side, std::int32_t bodyIndex,
+                   std::int32_t other)
+{
+    Body& body = world.bodies[bodyIndex];
+    Edge& edge = world.joints[jointIndex].edges[side];
+    edge.other = other;
+    edge.prev = kNullIndex;
+    edge.next = body.jointList;
+    if (body.jointList != kNullIndex)
+    {
+        world.joints[EdgeOwner(body.jointList)].edges[EdgeSide(body.jointList)].prev =
+            EdgeKey(jointIndex, side);
+    }
+    body.jointList = EdgeKey(jointIndex, side);
+}
+
+void UnlinkJointEdge(WorldState& world, std::int32_t jointIndex, int side, std::int32_t bodyIndex)
+{
+    Body& body = world.bodies[bodyIndex];
+    const Edge& edge = world.joints[jointIndex].edges[side];
+    if (edge.prev != kNullIndex)
+    {
+        world.joints[EdgeOwner(edge.prev)].edges[EdgeSide(edge.prev)].next = edge.next;
+    }
+    if (edge.next != kNullIndex)
+    {
+        world.joints[EdgeOwner(edge.next)].edges[EdgeSide(edge.next)].prev = edge.prev;
+    }
+    if (body.jointList == EdgeKey(jointIndex, side))
+    {
+        body.jointList = edge.next;
+    }
+}
+
+void ValidateShapeDef(const ShapeDef& def)
+{
+    RequireNonNegative(def.density, "ShapeDef::density");
+    RequireNonNegative(def.friction, "ShapeDef::friction");
+    Require(meff::IsValid(def.restitution) && def.restitution >= 0 && def.restitution <= 1,
+            "ShapeDef::restitution: must be in [0, 1], got " + std::to_string(def.restitution));
+    RequireNonNegative(def.restitutionThreshold, "ShapeDef::restitutionThreshold");
+    Require(!def.isSensor, "ShapeDef::isSensor: sensors are not supported yet");
+}
+
+} // namespace
+
+World::World(const WorldDef& def)
+{
+    RequireFinite(def.gravity, "WorldDef::gravity");
+    const Tolerances& t = def.tolerances;
+    for (const Real value :
+         {t.linearSlop, t.polygonSkin, t.aabbMargin, t.maxLinearCorrection, t.maxAngularCorrection,
+          t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte})
+    {
+        RequireNonNegative(value, "WorldDef::tolerances");
+    }
+    m_state = std::make_unique<WorldState>(def);
+    SetSolverSettings(def.solver);
+}
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+// ---------------------------------------------------------------------------------------------
+// Bodies
+
+BodyId World::CreateBody(const BodyDef& def)
+{
+    WorldState& world = *m_state;
+    RequireFinite(def.position, "BodyDef::position");
+    RequireFinite(def.angle, "BodyDef::angle");
+    RequireFinite(def.linearVelocity, "BodyDef::linearVelocity");
+    RequireFinite(def.angularVelocity, "BodyDef::angularVelocity");
+    RequireNonNegative(def.linearDamping, "BodyDef::linearDamping");
+    RequireNonNegative(def.angularDamping, "BodyDef::angularDamping");
+    RequireFinite(def.gravityScale, "BodyDef::gravityScale");
+
+    const std::int32_t index = AllocateSlot(world.bodies, world.freeBodies);
+    Body& body = world.bodies[index];
+    const std::uint32_t generation = body.generation + 1;
+    body = Body{};
+    body.generation = generation;
+    body.alive = true;
+    body.type = def.type;
+    body.xf.Set(def.position, def.angle);
+    body.sweep.localCenter = {0, 0};
+    body.sweep.c0 = body.sweep.c = def.position;
+    body.sweep.a0 = body.sweep.a = def.angle;
+    body.linearVelocity = def.type == BodyType::Static ? Vec2{} : def.linearVelocity;
+    body.angularVelocity = def.type == BodyType::Static ? Real(0) : def.angularVelocity;
+    body.linearDamping = def.linearDamping;
+    body.angularDamping = def.angularDamping;
+    body.gravityScale = def.gravityScale;
+    body.fixedRotation = def.fixedRotation;
+    body.bullet = def.bullet;
+    body.allowSleep = def.allowSleep;
+    body.awake = true; // sleeping is not modelled yet
+    body.userData = def.userData;
+    if (def.type == BodyType::Dynamic)
+    {
+        body.mass = 1;
+        body.invMass = 1;
+    }
+
+    body.prev = kNullIndex;
+    body.next = world.bodyList;
+    if (world.bodyList != kNullIndex)
+    {
+        world.bodies[world.bodyList].prev = index;
+    }
+    world.bodyList = index;
+
+    const BodyId id{index, generation};
+    world.bodyIds.push_back(id);
+    return id;
+}
+
+void World::DestroyBody(BodyId id)
+{
+    WorldState& world = *m_state;
+    Body& body = Resolve(world.bodies, id, "body");
+    while (body.jointList != kNullIndex)
+    {
+        const std::int32_t j = EdgeOwner(body.jointList);
+        DestroyJoint({j, world.joints[j].generation});
+    }
+    while (body.contactList != kNullIndex)
+    {
+        DestroyContact(world, EdgeOwner(body.contactList));
+    }
+    while (!body.shapeIds.empty())
+    {
+        const ShapeId shapeId = body.shapeIds.back();
+        Shape& shape = world.shapes[shapeId.index];
+        world.broadPhase.DestroyProxy(shape.proxyId);
+        shape.alive = false;
+        world.freeShapes.push_back(shapeId.index);
+        body.shapeIds.pop_back();
+    }
+    body.shapes.clear();
+
+    if (body.prev != kNullIndex)
+    {
+        world.bodies[body.prev].next = body.next;
+    }
+    if (body.next != kNullIndex)
+    {
+        world.bodies[body.next].prev = body.prev;
+    }
+    if (world.bodyList == id.index)
+    {
+        world.bodyList = body.next;
+    }
+    body.alive = false;
+    world.freeBodies.push_back(id.index);
+    world.bodyIds.erase(std::find(world.bodyIds.begin(), world.bodyIds.end(), id));
+}
+
+bool World::IsValid(BodyId id) const
+{
+    const auto& pool = m_state->bodies;
+    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
+           pool[id.index].alive && pool[id.index].generation == id.generation;
+}
+
+BodyType World::GetType(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").type;
+}
+Vec2 World::GetPosition(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").xf.p;
+}
+Real World::GetAngle(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").sweep.a;
+}
+Transform World::GetTransform(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").xf;
+}
+Vec2 World::GetWorldCenter(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").sweep.c;
+}
+Vec2 World::GetLocalCenter(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").sweep.localCenter;
+}
+Vec2 World::GetLinearVelocity(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").linearVelocity;
+}
+Real World::GetAngularVelocity(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").angularVelocity;
+}
+Real World::GetMass(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").mass;
+}
+Real World::GetRotationalInertia(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").I;
+}
+std::uint64_t World::GetUserData(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").userData;
+}
+Vec2 World::GetWorldPoint(BodyId id, Vec2 localPoint) const
+{
+    return Mul(Resolve(m_state->bodies, id, "body").xf, localPoint);
+}
+Vec2 World::GetLocalPoint(BodyId id, Vec2 worldPoint) const
+{
+    return MulT(Resolve(m_state->bodies, id, "body").xf, worldPoint);
+}
+
+void World::SetTransform(BodyId id, Vec2 position, Real angle)
+{
+    WorldState& world = *m_state;
+    Body& body = Resolve(world.bodies, id, "body");
+    RequireFinite(position, "World::SetTransform: position");
+    RequireFinite(angle, "World::SetTransform: angle");
+    body.xf.Set(position, angle);
+    body.sweep.c = Mul(body.xf, body.sweep.localCenter);
+    body.sweep.a = angle;
+    body.sweep.c0 = body.sweep.c;
+    body.sweep.a0 = angle;
+    for (const std::int32_t s : body.shapes)
+    {
+        Shape& shape = world.shapes[s];
+        shape.aabb = shape.ComputeAABB(body.xf);
+        world.broadPhase.MoveProxy(shape.proxyId, shape.aabb, {0, 0});
+    }
+    world.newShapes = true;
+}
+
+void World::SetLinearVelocity(BodyId id, Vec2 v)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    RequireFinite(v, "World::SetLinearVelocity: v");
+    if (body.type != BodyType::Static)
+    {
+        body.linearVelocity = v;
+    }
+}
+
+void World::SetAngularVelocity(BodyId id, Real w)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    RequireFinite(w, "World::SetAngularVelocity: w");
+    if (body.type != BodyType::Static)
+    {
+        body.angularVelocity = w;
+    }
+}
+
+void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    RequireFinite(force, "World::ApplyForce: force");
+    RequireFinite(worldPoint, "World::ApplyForce: point");
+    if (body.type == BodyType::Dynamic)
+    {
+        body.force += force;
+        body.torque += Cross(worldPoint - body.sweep.c, force);
+    }
+}
+
+void World::ApplyForceToCenter(BodyId id, Vec2 force)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    RequireFinite(force, "World::ApplyForceToCenter: force");
+    if (body.type == BodyType::Dynamic)
+    {
+        body.force += force;
+    }
+}
+
+void World::ApplyTorque(BodyId id, Real torque)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    RequireFinite(torque, "World::ApplyTorque: torque");
+    if (body.type == BodyType::Dynamic)
+    {
+        body.torque += torque;
+    }
+}
+
+void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    RequireFinite(impulse, "World::ApplyLinearImpulse: impulse");
+    RequireFinite(worldPoint, "World::ApplyLinearImpulse: point");
+    if (body.type == BodyType::Dynamic)
+    {
+        body.linearVelocity += body.invMass * impulse;
+        body.angularVelocity += body.invI * Cross(worldPoint - body.sweep.c, impulse);
+    }
+}
+
+void World::ApplyAngularImpulse(BodyId id, Real impulse)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    RequireFinite(impulse, "World::ApplyAngularImpulse: impulse");
+    if (body.type == BodyType::Dynamic)
+    {
+        body.angularVelocity += body.invI * impulse;
+    }
+}
+
+std::span<const BodyId> World::GetBodies() const
+{
+    return m_state->bodyIds;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shapes
+
+namespace
+{
+
+ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape prototype)
+{
+    Body& body = Resolve(world.bodies, bodyId, "body");
+    ValidateShapeDef(def);
+    const std::int32_t index = AllocateSlot(world.shapes, world.freeShapes);
+    Shape& shape = world.shapes[index];
+    const std::uint32_t generation = shape.generation + 1;
+    shape = prototype;
+    shape.generation = generation;
+    shape.alive = true;
+    shape.body = bodyId.index;
+    shape.def = def;
+    shape.aabb = shape.ComputeAABB(body.xf);
+    shape.proxyId = world.broadPhase.CreateProxy(shape.aabb, index);
+
+    const ShapeId id{index, generation};
+    body.shapes.insert(body.shapes.begin(), index); // newest first, as Box2D's fixture list
+    body.shapeIds.insert(body.shapeIds.begin(), id);
+    if (def.density > 0)
+    {
+        ResetMassData(world, body);
+    }
+    world.newShapes = true;
+    return id;
+}
+
+} // namespace
+
+ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circle)
+{
+    RequireFinite(circle.center, "Circle::center");
+    Require(meff::IsValid(circle.radius) && circle.radius > 0,
+            "Circle::radius: must be finite and > 0, got " + std::to_string(circle.radius));
+    Shape shape;
+    shape.type = ShapeType::Circle;
+    shape.circle = circle;
+    return AddShape(*m_state, body, def, shape);
+}
+
+ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon)
+{
+    Require(polygon.count >= 3 && polygon.count <= kMaxPolygonVertices,
+            "Polygon::count: must be in [3, 8] (build polygons with MakePolygon or MakeBox), got " +
+                std::to_string(polygon.count));
+    for (int i = 0; i < polygon.count; ++i)
+    {
+        RequireFinite(polygon.vertices[i], "Polygon::vertices");
+    }
+    Shape shape;
+    shape.type = ShapeType::Polygon;
+    shape.polygon = polygon;
+    shape.polygon.radius = m_state->tolerances.polygonSkin;
+    return AddShape(*m_state, body, def, shape);
+}
+
+ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segment)
+{
+    RequireFinite(segment.point1, "Segment::point1");
+    RequireFinite(segment.point2, "Segment::point2");
+    Require(DistanceSquared(segment.point1, segment.point2) >
+                m_state->tolerances.linearSlop * m_state->tolerances.linearSlop,
+            "Segment: points must be further apart than the linear slop, got " +
+                Describe(segment.point1) + " and " + Describe(segment.point2));
+    Shape shape;
+    shape.type = ShapeType::Segment;
+    shape.segment = segment;
+    shape.segment.radius = m_state->tolerances.polygonSkin;
+    return AddShape(*m_state, body, def, shape);
+}
+
+void World::DestroyShape(ShapeId id)
+{
+    WorldState& world = *m_state;
+    Shape& shape = Resolve(world.shapes, id, "shape");
+    Body& body = world.bodies[shape.body];
+    for (std::int32_t key = body.contactList; key != kNullIndex;)
+    {
+        const std::int32_t c = EdgeOwner(key);
+        key = world.contacts[c].edges[EdgeSide(key)].next;
+        if (world.contacts[c].shapeA == id.index || world.contacts[c].shapeB == id.index)
+        {
+            DestroyContact(world, c);
+        }
+    }
+    world.broadPhase.DestroyProxy(shape.proxyId);
+    shape.alive = false;
+    body.shapes.erase(std::find(body.shapes.begin(), body.shapes.end(), id.index));
+    body.shapeIds.erase(std::find(body.shapeIds.begin(), body.shapeIds.end(), id));
+    world.freeShapes.push_back(id.index);
+    ResetMassData(world, body);
+}
+
+bool World::IsValid(ShapeId id) const
+{
+    const auto& pool = m_state->shapes;
+    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
+           pool[id.index].alive && pool[id.index].generation == id.generation;
+}
+
+BodyId World::GetBody(ShapeId id) const
+{
+    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    return {shape.body, m_state->bodies[shape.body].generation};
+}
+ShapeType World::GetShapeType(ShapeId id) const
+{
+    return Resolve(m_state->shapes, id, "shape").type;
+}
+const Circle& World::GetCircle(ShapeId id) const
+{
+    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    Require(shape.type == ShapeType::Circle, "World::GetCircle: the shape is not a circle");
+    return shape.circle;
+}
+const Polygon& World::GetPolygon(ShapeId id) const
+{
+    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    Require(shape.type == ShapeType::Polygon, "World::GetPolygon: the shape is not a polygon");
+    return shape.polygon;
+}
+const Segment& World::GetSegment(ShapeId id) const
+{
+    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    Require(shape.type == ShapeType::Segment, "World::GetSegment: the shape is not a segment");
+    return shape.segment;
+}
+const ShapeDef& World::GetShapeDef(ShapeId id) const
+{
+    return Resolve(m_state->shapes, id, "shape").def;
+}
+std::span<const ShapeId> World::GetShapes(BodyId body) const
+{
+    return Resolve(m_state->bodies, body, "body").shapeIds;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Joints
+
+namespace
+{
+
+JointId AddJoint(WorldState& world, Joint joint)
+{
+    const std::int32_t index = AllocateSlot(world.joints, world.freeJoints);
+    JointSlot& slot = world.joints[index];
+    const std::uint32_t generation = slot.generation + 1;
+    slot = JointSlot{};
+    slot.generation = generation;
+    slot.alive = true;
+    slot.joint = joint;
+
+    slot.prev = kNullIndex;
+    slot.next = world.jointList;
+    if (world.jointList != kNullIndex)
+    {
+        world.joints[world.jointList].prev = index;
+    }
+    world.jointList = index;
+    LinkJointEdge(world, index, 0, joint.bodyA, joint.bodyB);
+    LinkJointEdge(world, index, 1, joint.bodyB, joint.bodyA);
+    if (!joint.collideConnected)
+    {
+        FlagContactsForFiltering(world, joint.bodyA, joint.bodyB);
+    }
+    const JointId id{index, generation};
+    world.jointIds.push_back(id);
+    return id;
+}
+
+void RequireTwoBodies(WorldState& world, BodyId a, BodyId b)
+{
+    Resolve(world.bodies, a, "body");
+    Resolve(world.bodies, b, "body");
+    Require(!(a == b), "joint: bodyA and bodyB must be different bodies");
+}
+
+} // namespace
+
+JointId World::CreateJoint(const RevoluteJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
+}
+
+JointId World::CreateJoint(const DistanceJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    const Body& a = m_state->bodies[def.bodyA.index];
+    const Body& b = m_state->bodies[def.bodyB.index];
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass,
+                                        m_state->tolerances));
+}
+
+void World::DestroyJoint(JointId id)
+{
+    WorldState& world = *m_state;
+    JointSlot& slot = Resolve(world.joints, id, "joint");
+    if (slot.prev != kNullIndex)
+    {
+        world.joints[slot.prev].next = slot.next;
+    }
+    if (slot.next != kNullIndex)
+    {
+        world.joints[slot.next].prev = slot.prev;
+    }
+    if (world.jointList == id.index)
+    {
+        world.jointList = slot.next;
+    }
+    UnlinkJointEdge(world, id.index, 0, slot.joint.bodyA);
+    UnlinkJointEdge(world, id.index, 1, slot.joint.bodyB);
+    if (!slot.joint.collideConnected)
+    {
+        FlagContactsForFiltering(world, slot.joint.bodyA, slot.joint.bodyB);
+    }
+    slot.alive = false;
+    world.freeJoints.push_back(id.index);
+    world.jointIds.erase(std::find(world.jointIds.begin(), world.jointIds.end(), id));
+}
+
+bool World::IsValid(JointId id) const
+{
+    const auto& pool = m_state->joints;
+    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
+           pool[id.index].alive && pool[id.index].generation == id.generation;
+}
+
+JointType World::GetJointType(JointId id) const
+{
+    return Resolve(m_state->joints, id, "joint").joint.type;
+}
+BodyId World::GetBodyA(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    return {joint.bodyA, m_state->bodies[joint.bodyA].generation};
+}
+BodyId World::GetBodyB(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    return {joint.bodyB, m_state->bodies[joint.bodyB].generation};
+}
+
+namespace
+{
+
+Vec2 LocalAnchor(const Joint& joint, int side)
+{
+    if (const auto* r = std::get_if<RevoluteJoint>(&joint.data))
+    {
+        return side == 0 ? r->localAnchorA : r->localAnchorB;
+    }
+    const auto& d = std::get<DistanceJoint>(joint.data);
+    return side == 0 ? d.localAnchorA : d.localAnchorB;
+}
+
+} // namespace
+
+Vec2 World::GetAnchorA(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    return Mul(m_state->bodies[joint.bodyA].xf, LocalAnchor(joint, 0));
+}
+Vec2 World::GetAnchorB(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    return Mul(m_state->bodies[joint.bodyB].xf, LocalAnchor(joint, 1));
+}
+JointReaction World::GetReaction(JointId id, Real invDt) const
+{
+    return GetJointReaction(Resolve(m_state->joints, id, "joint").joint, invDt);
+}
+std::span<const JointId> World::GetJoints() const
+{
+    return m_state->jointIds;
+}
+
+RevoluteJointDef World::MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
+{
+    RequireFinite(worldAnchor, "MakeRevoluteJointDef: anchor");
+    RevoluteJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = GetLocalPoint(a, worldAnchor);
+    def.localAnchorB = GetLocalPoint(b, worldAnchor);
+    def.referenceAngle = GetAngle(b) - GetAngle(a);
+    return def;
+}
+
+DistanceJointDef World::MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAnchorA,
+                                             Vec2 worldAnchorB) const
+{
+    RequireFinite(worldAnchorA, "MakeDistanceJointDef: anchorA");
+    RequireFinite(worldAnchorB, "MakeDistanceJointDef: anchorB");
+    DistanceJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = GetLocalPoint(a, worldAnchorA);
+    def.localAnchorB = GetLocalPoint(b, worldAnchorB);
+    const Vec2 d = worldAnchorB - worldAnchorA;
+    def.length = Max(d.Length(), m_state->tolerances.linearSlop);
+    def.minLength = def.length;
+    def.maxLength = def.length;
+    return def;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Settings and reports
+
+std::uint64_t World::GetStepCount() const
+{
+    return m_state->stepCount;
+}
+const SolverSettings& World::GetSolverSettings() const
+{
+    return m_state->solver;
+}
+void World::SetSolverSettings(const SolverSettings& settings)
+{
+    Require(settings.velocityIterations >= 1,
+            "SolverSettings::velocityIterations: must be >= 1, got " +
+                std::to_string(settings.velocityIterations));
+    Require(settings.positionIterations >= 0,
+            "SolverSettings::positionIterations: must be >= 0, got " +
+                std::to_string(settings.positionIterations));
+    m_state->solver = settings;
+}
+Vec2 World::GetGravity() const
+{
+    return m_state->gravity;
+}
+void World::SetGravity(Vec2 gravity)
+{
+    RequireFinite(gravity, "World::SetGravity: gravity");
+    m_state->gravity = gravity;
+}
+const Tolerances& World::GetTolerances() const
+{
+    return m_state->tolerances;
+}
+
+std::span<const ContactPointReport> World::GetContactReports() const
+{
+    return m_state->contactReports;
+}
+std::span<const ContactEvent> World::GetContactBeginEvents() const
+{
+    return m_state->beginEvents;
+}
+std::span<const ContactEvent> World::GetContactEndEvents() const
+{
+    return m_state->endEvents;
+}
+int World::GetContactCount() const
+{
+    return m_state->contactCount;
+}
+int World::GetTouchingContactCount() const
+{
+    int count = 0;
+    for (std::int32_t c = m_state->contactList; c != kNullIndex; c = m_state->contacts[c].next)
+    {
+        count += m_state->contacts[c].IsTouching() ? 1 : 0;
+    }
+    return count;
+}
+
+} // namespace meff

@@ -1,0 +1,75 @@
+// Everything a World owns. Pools are dense vectors indexed by id.index, reused through free
+// lists so that a warmed-up world does not allocate per step.
+#pragma once
+
+#include "collision/broad_phase.h"
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
+#include "dynamics/contact_solver.h"
+#include "dynamics/island.h"
+#include "dynamics/shape.h"
+#include "joints/joint.h"
+#include "meff/world.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meff::detail
+{
+
+struct JointSlot
+{
+    std::uint32_t generation = 0;
+    bool alive = false;
+    Joint joint;
+    std::int32_t prev = kNullIndex, next = kNullIndex; ///< world joint list, newest first
+    Edge edges[2];                                     ///< [0] on bodyA's list, [1] on bodyB's
+    bool islandFlag = false;
+};
+
+struct WorldState
+{
+    explicit WorldState(const WorldDef& def)
+        : gravity(def.gravity), solver(def.solver), tolerances(def.tolerances),
+          broadPhase(def.tolerances.aabbMargin)
+    {
+    }
+
+    Vec2 gravity;
+    SolverSettings solver;
+    Tolerances tolerances;
+
+    std::vector<Body> bodies;
+    std::vector<std::int32_t> freeBodies;
+    std::vector<BodyId> bodyIds;        ///< live bodies, creation order
+    std::int32_t bodyList = kNullIndex; ///< newest first, as b2World::m_bodyList
+
+    std::vector<Shape> shapes;
+    std::vector<std::int32_t> freeShapes;
+
+    std::vector<JointSlot> joints;
+    std::vector<std::int32_t> freeJoints;
+    std::vector<JointId> jointIds; ///< live joints, creation order
+    std::int32_t jointList = kNullIndex;
+
+    std::vector<Contact> contacts;
+    std::vector<std::int32_t> freeContacts;
+    std::int32_t contactList = kNullIndex; ///< newest first, as b2ContactManager::m_contactList
+    int contactCount = 0;
+
+    BroadPhase broadPhase;
+    bool newShapes = false; ///< find new contacts before the next narrow phase
+
+    Island island;
+    ContactSolver contactSolver;
+
+    std::vector<ContactPointReport> contactReports;
+    std::vector<ContactEvent> beginEvents;
+    std::vector<ContactEvent> endEvents;
+
+    Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
+    std::uint64_t stepCount = 0;
+    bool failed = false; ///< a step produced a non-finite state; stepping is refused
+};
+
+} // namespace meff::detail
