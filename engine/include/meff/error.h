@@ -33,7 +33,7 @@ class SimulationError : public Error
     {
     }
     std::uint64_t step;     ///< index of the step that failed (0 = the first step)
-    std::int32_t bodyIndex; ///< the body whose state went non-finite
+    std::int32_t bodyIndex; ///< BodyId::index of the body whose state went non-finite
 };
 
 } // namespace meff

@@ -298,6 +298,26 @@ struct Sweep
         xf.p -= Mul(xf.q, localCenter);
         return xf;
     }
+
+    /// Moves the start of the sweep forward to fraction `alpha` of the step (alpha0 ≤ alpha <
+    /// 1): c0 and a0 become the pose at alpha, and the rest of the sweep is unchanged.
+    void Advance(Real alpha)
+    {
+        const Real beta = (alpha - alpha0) / (Real(1) - alpha0);
+        c0 += beta * (c - c0);
+        a0 += beta * (a - a0);
+        alpha0 = alpha;
+    }
+
+    /// Shifts both angles by the same whole number of turns so that a0 lies in [0, 2π): large
+    /// angles make the time-of-impact root finder lose precision.
+    void Normalize()
+    {
+        const Real twoPi = Real(2) * kPi;
+        const Real d = twoPi * std::floor(a0 / twoPi);
+        a0 -= d;
+        a -= d;
+    }
 };
 
 /// An axis-aligned bounding box.

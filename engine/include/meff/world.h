@@ -3,6 +3,7 @@
 
 #include "meff/body.h"
 #include "meff/collision.h"
+#include "meff/debug_draw.h"
 #include "meff/error.h"
 #include "meff/ids.h"
 #include "meff/joint.h"
@@ -28,6 +29,8 @@ struct Tolerances
     Real maxTranslation = 2;            ///< largest move of a body in one step (m)
     Real maxRotation = Real(0.5) * kPi; ///< largest turn of a body in one step (rad)
     Real baumgarte = Real(0.2);         ///< fraction of overlap removed per position iteration
+    /// Fraction of overlap removed per position iteration of a time-of-impact sub-step.
+    Real toiBaumgarte = Real(0.75);
 };
 
 /// How the solver works. Every member may be changed between steps.
@@ -50,6 +53,12 @@ struct WorldDef
     SolverSettings solver;
     Tolerances tolerances;
     bool allowSleep = false; ///< reserved: sleeping is not modelled yet, bodies never sleep
+    /// Continuous collision (Box2D's continuous physics, on by default there too): after each
+    /// step, fast dynamic bodies are moved back to their first time of impact with static and
+    /// kinematic shapes (bullets: with dynamic shapes too) and re-solved over the rest of the
+    /// step, so they do not tunnel through thin geometry. Off: only the discrete step runs,
+    /// and a body that moves further than a shape's thickness in one step can pass through it.
+    bool continuous = true;
 };
 
 /// One contact point after a step: Box2D's PostSolve data plus where the point is.
@@ -169,14 +178,24 @@ class World
     Vec2 GetGravity() const;
     void SetGravity(Vec2 gravity);
     const Tolerances& GetTolerances() const;
+    bool GetContinuous() const;
+    void SetContinuous(bool continuous); ///< takes effect from the next step
 
     // Reports of the last step
     /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).
+    /// With continuous collision, the contacts of each time-of-impact sub-step are appended
+    /// after the step's own, as Box2D calls PostSolve again for them, so a contact can appear
+    /// more than once in one step.
     std::span<const ContactPointReport> GetContactReports() const;
     std::span<const ContactEvent> GetContactBeginEvents() const;
     std::span<const ContactEvent> GetContactEndEvents() const;
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
     int GetTouchingContactCount() const;
+
+    // Drawing
+    /// Describes the world to `draw` (shapes, joints and, from the last step's reports,
+    /// contacts and impulses), as `flags` asks. Draws nothing itself.
+    void Draw(DebugDraw& draw, const DrawFlags& flags = {}) const;
 
   private:
     std::unique_ptr<detail::WorldState> m_state;

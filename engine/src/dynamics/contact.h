@@ -40,6 +40,9 @@ struct Contact
         Touching = 1u << 0, ///< the manifold has points
         Filter = 1u << 1,   ///< re-check filtering before the next narrow phase
         Island = 1u << 2,   ///< already added to an island this step
+        Toi = 1u << 3,      ///< `toi` holds a valid time of impact for this step
+        Disabled = 1u << 4, ///< a time-of-impact event found it not touching; skipped by the
+                            ///< continuous stage until its manifold is next updated
     };
 
     bool alive = false;
@@ -52,6 +55,8 @@ struct Contact
     Real restitutionThreshold = 0;     ///< min of the two (m/s)
     std::int32_t prev = -1, next = -1; ///< world contact list
     Edge edges[2];                     ///< [0] on bodyA's list, [1] on bodyB's
+    int toiCount = 0;                  ///< time-of-impact events this step
+    Real toi = 1;                      ///< cached time of impact (fraction of the step)
 
     bool IsTouching() const { return (flags & Touching) != 0; }
 };

@@ -243,25 +243,37 @@ void Collide(WorldState& world)
             continue;
         }
 
-        const bool wasTouching = contact.IsTouching();
-        const bool touching = UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
-        if (touching)
-        {
-            contact.flags |= Contact::Touching;
-        }
-        else
-        {
-            contact.flags &= ~Contact::Touching;
-        }
-        if (touching && !wasTouching)
-        {
-            world.beginEvents.push_back(MakeEvent(world, contact));
-        }
-        else if (!touching && wasTouching)
-        {
-            world.endEvents.push_back(MakeEvent(world, contact));
-        }
+        UpdateContact(world, c);
         c = next;
+    }
+}
+
+void UpdateContact(WorldState& world, std::int32_t contactIndex)
+{
+    Contact& contact = world.contacts[contactIndex];
+    const Shape& shapeA = world.shapes[contact.shapeA];
+    const Shape& shapeB = world.shapes[contact.shapeB];
+    const Body& bodyA = world.bodies[contact.bodyA];
+    const Body& bodyB = world.bodies[contact.bodyB];
+    contact.flags &= ~Contact::Disabled; // an updated contact takes part again (Box2D: enabled)
+
+    const bool wasTouching = contact.IsTouching();
+    const bool touching = UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+    if (touching)
+    {
+        contact.flags |= Contact::Touching;
+    }
+    else
+    {
+        contact.flags &= ~Contact::Touching;
+    }
+    if (touching && !wasTouching)
+    {
+        world.beginEvents.push_back(MakeEvent(world, contact));
+    }
+    else if (!touching && wasTouching)
+    {
+        world.endEvents.push_back(MakeEvent(world, contact));
     }
 }
 

@@ -378,18 +378,30 @@ PositionPoint EvaluatePositionPoint(const ContactPositionConstraint& pc, const T
 
 } // namespace
 
-bool ContactSolver::SolvePositions(SolverData& data)
+namespace
 {
-    const Tolerances& tol = data.step.tolerances;
+
+/// Inverse masses and inertias one position constraint uses.
+struct PositionMasses
+{
+    Real mA, mB, iA, iB;
+};
+
+/// One non-linear Gauss-Seidel sweep over the position constraints, with Baumgarte factor
+/// `baumgarte` and the inverse masses `masses(pc)` gives; returns the smallest separation seen.
+template <typename Masses>
+Real SolvePositionSweep(std::span<const ContactPositionConstraint> constraints, Position* positions,
+                        const Tolerances& tol, Real baumgarte, Masses&& masses)
+{
     Real minSeparation = 0;
-    for (std::size_t i = 0; i < m_count; ++i)
+    for (const ContactPositionConstraint& pc : constraints)
     {
-        const ContactPositionConstraint& pc = m_position[i];
-        Position& a = data.positions[pc.indexA];
-        Position& b = data.positions[pc.indexB];
+        Position& a = positions[pc.indexA];
+        Position& b = positions[pc.indexB];
         Vec2 cA = a.c, cB = b.c;
         Real aA = a.a, aB = b.a;
-        const Real mA = pc.invMassA, mB = pc.invMassB, iA = pc.invIA, iB = pc.invIB;
+        const PositionMasses m = masses(pc);
+        const Real mA = m.mA, mB = m.mB, iA = m.iA, iB = m.iB;
 
         for (int j = 0; j < pc.pointCount; ++j)
         {
@@ -402,7 +414,7 @@ bool ContactSolver::SolvePositions(SolverData& data)
 
             // Baumgarte-scaled correction that leaves linearSlop of overlap (so contacts
             // persist) and never moves more than maxLinearCorrection at once.
-            const Real C = Clamp(tol.baumgarte * (pp.separation + tol.linearSlop),
+            const Real C = Clamp(baumgarte * (pp.separation + tol.linearSlop),
                                  -tol.maxLinearCorrection, Real(0));
             const Real K = InverseEffectiveMass(mA, mB, iA, iB, rA, rB, pp.normal);
             const Real impulse = K > 0 ? -C / K : Real(0);
@@ -417,8 +429,47 @@ bool ContactSolver::SolvePositions(SolverData& data)
         b.c = cB;
         b.a = aB;
     }
+    return minSeparation;
+}
+
+} // namespace
+
+bool ContactSolver::SolvePositions(SolverData& data)
+{
+    const Tolerances& tol = data.step.tolerances;
+    const Real minSeparation =
+        SolvePositionSweep({m_position.data(), m_count}, data.positions, tol, tol.baumgarte,
+                           [](const ContactPositionConstraint& pc) {
+                               return PositionMasses{pc.invMassA, pc.invMassB, pc.invIA, pc.invIB};
+                           });
     // The solver stops pushing at −linearSlop, so −3·slop is "solved".
     return minSeparation >= Real(-3) * tol.linearSlop;
+}
+
+bool ContactSolver::SolveToiPositions(SolverData& data, std::int32_t toiIndexA,
+                                      std::int32_t toiIndexB)
+{
+    const Tolerances& tol = data.step.tolerances;
+    const auto moves = [&](std::int32_t index) { return index == toiIndexA || index == toiIndexB; };
+    const Real minSeparation =
+        SolvePositionSweep({m_position.data(), m_count}, data.positions, tol, tol.toiBaumgarte,
+                           [&](const ContactPositionConstraint& pc)
+                           {
+                               PositionMasses m{0, 0, 0, 0};
+                               if (moves(pc.indexA))
+                               {
+                                   m.mA = pc.invMassA;
+                                   m.iA = pc.invIA;
+                               }
+                               if (moves(pc.indexB))
+                               {
+                                   m.mB = pc.invMassB;
+                                   m.iB = pc.invIB;
+                               }
+                               return m;
+                           });
+    // Separation is never pushed above −linearSlop, so −1.5·slop counts as solved here.
+    return minSeparation >= Real(-1.5) * tol.linearSlop;
 }
 
 } // namespace meff::detail

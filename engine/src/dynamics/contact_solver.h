@@ -63,6 +63,10 @@ class ContactSolver
     void StoreImpulses(std::span<Contact> contacts) const;
     /// One non-linear Gauss-Seidel sweep; true when no point overlaps more than 3·slop.
     bool SolvePositions(SolverData& data);
+    /// One sweep of a time-of-impact sub-step (Box2D's SolveTOIPositionConstraints): only the
+    /// two bodies of the event (solver indices toiIndexA, toiIndexB) move, with the stronger
+    /// Tolerances::toiBaumgarte; true when no point overlaps more than 1.5·slop.
+    bool SolveToiPositions(SolverData& data, std::int32_t toiIndexA, std::int32_t toiIndexB);
 
     std::span<const ContactVelocityConstraint> VelocityConstraints() const
     {

@@ -3,7 +3,7 @@
 //
 //   find new contacts → collide → for each island: integrate velocities, prepare, warm start,
 //   solve velocities, integrate positions, correct positions, finish bodies, report →
-//   synchronize shapes → find new contacts → clear forces
+//   synchronize shapes → find new contacts → continuous collision (if on) → clear forces
 #include "dynamics/step_stages.h"
 
 #include "dynamics/world_state.h"
@@ -49,6 +49,10 @@ void World::Step(Real dt)
 
     SynchronizeShapes(world);
     FindNewContacts(world);
+    if (world.continuous)
+    {
+        SolveContinuous(world, step);
+    }
     ClearForces(world);
     world.invDt0 = step.invDt;
     ++world.stepCount;
@@ -267,18 +271,22 @@ void SynchronizeShapes(WorldState& world)
         {
             continue;
         }
-        Transform xf0;
-        xf0.q.Set(body.sweep.a0);
-        xf0.p = body.sweep.c0 - Mul(xf0.q, body.sweep.localCenter);
-        for (const std::int32_t s : body.shapes)
-        {
-            Shape& shape = world.shapes[s];
-            const AABB box0 = shape.ComputeAABB(xf0);
-            const AABB box1 = shape.ComputeAABB(body.xf);
-            shape.aabb = Combine(box0, box1);
-            world.broadPhase.MoveProxy(shape.proxyId, shape.aabb,
-                                       box1.GetCenter() - box0.GetCenter());
-        }
+        SynchronizeBodyShapes(world, body);
+    }
+}
+
+void SynchronizeBodyShapes(WorldState& world, Body& body)
+{
+    Transform xf0;
+    xf0.q.Set(body.sweep.a0);
+    xf0.p = body.sweep.c0 - Mul(xf0.q, body.sweep.localCenter);
+    for (const std::int32_t s : body.shapes)
+    {
+        Shape& shape = world.shapes[s];
+        const AABB box0 = shape.ComputeAABB(xf0);
+        const AABB box1 = shape.ComputeAABB(body.xf);
+        shape.aabb = Combine(box0, box1);
+        world.broadPhase.MoveProxy(shape.proxyId, shape.aabb, box1.GetCenter() - box0.GetCenter());
     }
 }
 

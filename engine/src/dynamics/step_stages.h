@@ -22,6 +22,12 @@ void CorrectPositions(WorldState& world, Island& island, SolverData& data);
 void FinishBodies(WorldState& world, Island& island);
 void ReportContacts(WorldState& world);
 void SynchronizeShapes(WorldState& world);
+/// Moves the broad-phase boxes of one body's shapes to cover its sweep from (c0, a0) to now.
+void SynchronizeBodyShapes(WorldState& world, Body& body);
+/// Continuous collision (continuous.cpp): Box2D 2.4.1's b2World::SolveTOI. Finds the earliest
+/// time of impact among the contacts of fast bodies, moves the pair back to it, re-solves it
+/// with its static, kinematic or bullet neighbours over the rest of the step, and repeats.
+void SolveContinuous(WorldState& world, const StepContext& step);
 void ClearForces(WorldState& world);
 
 // Contact lifecycle
@@ -30,6 +36,9 @@ void FindNewContacts(WorldState& world);
 /// The narrow phase: re-filters flagged contacts, destroys contacts whose fat boxes no longer
 /// overlap, updates the manifolds of the rest and records begin/end events.
 void Collide(WorldState& world);
+/// Re-evaluates one contact's manifold at the bodies' current transforms: touching flag,
+/// begin/end events, and clears Contact::Disabled (Box2D's b2Contact::Update).
+void UpdateContact(WorldState& world, std::int32_t contactIndex);
 void DestroyContact(WorldState& world, std::int32_t contactIndex);
 /// Flags every contact between two bodies for re-filtering (a joint was added or removed).
 void FlagContactsForFiltering(WorldState& world, std::int32_t bodyA, std::int32_t bodyB);

@@ -188,7 +188,7 @@ World::World(const WorldDef& def)
     const Tolerances& t = def.tolerances;
     for (const Real value :
          {t.linearSlop, t.polygonSkin, t.aabbMargin, t.maxLinearCorrection, t.maxAngularCorrection,
-          t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte})
+          t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte, t.toiBaumgarte})
     {
         RequireNonNegative(value, "WorldDef::tolerances");
     }
@@ -488,6 +488,55 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
 
 } // namespace
 
+namespace
+{
+
+/// Polygon is a public struct, so one built by hand reaches CreateShape without MakePolygon's
+/// checks. Collision and mass need what MakePolygon guarantees: a strictly convex,
+/// counter-clockwise outline of positive area, each normal the unit outward normal of its edge.
+/// A zero-area or inside-out polygon would otherwise only show up as a non-finite state steps
+/// later (found by the hostile-input tests).
+void RequireValidPolygon(const Polygon& polygon)
+{
+    const int n = polygon.count;
+    Real twiceArea = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        const Vec2 a = polygon.vertices[i];
+        const Vec2 b = polygon.vertices[i + 1 < n ? i + 1 : 0];
+        const Vec2 edge = b - a;
+        // Not the weld tolerance: MakeBox accepts any positive size, so only a zero edge
+        // (no direction, no normal) is refused here.
+        Require(edge.LengthSquared() > kEpsilon * kEpsilon,
+                "Polygon: edge " + std::to_string(i) + " has zero length " +
+                    "(build polygons with MakePolygon or MakeBox)");
+        const Vec2 normal = polygon.normals[i];
+        Vec2 expected = Cross(edge, Real(1));
+        expected.Normalize();
+        Require(normal.IsValid() && Dot(normal, expected) > Real(0.999) &&
+                    std::abs(normal.LengthSquared() - 1) < Real(1e-3),
+                "Polygon: normals[" + std::to_string(i) + "] is not the unit outward normal " +
+                    "of its edge, got " + Describe(normal) +
+                    " (build polygons with MakePolygon or MakeBox)");
+        for (int j = 0; j < n; ++j)
+        {
+            if (j != i && j != (i + 1 < n ? i + 1 : 0))
+            {
+                Require(Cross(edge, polygon.vertices[j] - a) > 0,
+                        "Polygon: not strictly convex and counter-clockwise at vertex " +
+                            std::to_string(j) + " (build polygons with MakePolygon or MakeBox)");
+            }
+        }
+        twiceArea += Cross(a, b);
+    }
+    Require(twiceArea > 2 * kEpsilon,
+            "Polygon: area must be positive (build polygons with MakePolygon or MakeBox)");
+    Require(polygon.centroid.IsValid(),
+            "Polygon::centroid: must be finite, got " + Describe(polygon.centroid));
+}
+
+} // namespace
+
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circle)
 {
     RequireFinite(circle.center, "Circle::center");
@@ -508,6 +557,7 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& poly
     {
         RequireFinite(polygon.vertices[i], "Polygon::vertices");
     }
+    RequireValidPolygon(polygon);
     Shape shape;
     shape.type = ShapeType::Polygon;
     shape.polygon = polygon;
@@ -798,6 +848,14 @@ void World::SetGravity(Vec2 gravity)
 const Tolerances& World::GetTolerances() const
 {
     return m_state->tolerances;
+}
+bool World::GetContinuous() const
+{
+    return m_state->continuous;
+}
+void World::SetContinuous(bool continuous)
+{
+    m_state->continuous = continuous;
 }
 
 std::span<const ContactPointReport> World::GetContactReports() const

@@ -31,13 +31,14 @@ struct WorldState
 {
     explicit WorldState(const WorldDef& def)
         : gravity(def.gravity), solver(def.solver), tolerances(def.tolerances),
-          broadPhase(def.tolerances.aabbMargin)
+          continuous(def.continuous), broadPhase(def.tolerances.aabbMargin)
     {
     }
 
     Vec2 gravity;
     SolverSettings solver;
     Tolerances tolerances;
+    bool continuous = true; ///< run SolveContinuous after the discrete step
 
     std::vector<Body> bodies;
     std::vector<std::int32_t> freeBodies;
@@ -61,6 +62,7 @@ struct WorldState
     bool newShapes = false; ///< find new contacts before the next narrow phase
 
     Island island;
+    Island toiIsland; ///< the mini-island of one time-of-impact event
     ContactSolver contactSolver;
 
     std::vector<ContactPointReport> contactReports;

@@ -1,0 +1,14 @@
+// Engine-internal side of the distance queries (meff/distance.h): proxies for world shapes.
+#pragma once
+
+#include "meff/distance.h"
+
+namespace meff::detail
+{
+
+struct Shape;
+
+/// The GJK proxy of a world shape (its geometry and collision radius).
+DistanceProxy MakeProxy(const Shape& shape);
+
+} // namespace meff::detail

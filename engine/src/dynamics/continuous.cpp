@@ -1,0 +1,351 @@
+// Continuous collision: the stage World::Step runs after the discrete step when
+// WorldState::continuous is on. It follows Box2D 2.4.1's b2World::SolveTOI and
+// b2Island::SolveTOI, in the same order, so that both engines agree:
+//
+//   reset the step's time-of-impact state → loop:
+//     find the contact with the earliest time of impact (alpha, a fraction of the step) →
+//     move its two bodies back to alpha → refresh the contact; if it does not touch there,
+//     disable it for this step and restore the bodies → else build a mini-island of the pair
+//     and the static, kinematic or bullet bodies touching them (moved to alpha too) → solve it
+//     over the rest of the step: position pass moving only the pair, velocity iterations
+//     without warm starting, integration → report its contacts → resynchronize the moved
+//     bodies' broad-phase boxes, invalidate their contacts' cached impacts → find new contacts
+//
+// Only pairs where one side is static, kinematic or a bullet are swept: two ordinary dynamic
+// bodies rely on the discrete solver. A contact takes at most kMaxSubSteps + 1 events a step.
+#include "dynamics/step_stages.h"
+
+#include "collision/distance.h"
+#include "dynamics/world_state.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// A contact that has had more events than this in one step is not swept again (b2_maxSubSteps).
+constexpr int kMaxSubSteps = 8;
+/// Capacity of an event's mini-island (b2_maxTOIContacts, and twice that for bodies).
+constexpr std::size_t kMaxToiContacts = 32;
+constexpr std::size_t kMaxToiBodies = 2 * kMaxToiContacts;
+/// Position iterations of an event's sub-step.
+constexpr int kToiPositionIterations = 20;
+
+/// Moves a body to fraction alpha of its sweep and makes that its new start (b2Body::Advance);
+/// the broad phase is not told.
+void AdvanceBody(Body& body, Real alpha)
+{
+    body.sweep.Advance(alpha);
+    body.sweep.c = body.sweep.c0;
+    body.sweep.a = body.sweep.a0;
+    SynchronizeTransform(body);
+}
+
+void RestoreSweep(Body& body, const Sweep& backup)
+{
+    body.sweep = backup;
+    SynchronizeTransform(body);
+}
+
+/// Every sweep starts at the beginning of the step, and no contact has a cached impact yet.
+void ResetContinuousState(WorldState& world)
+{
+    for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
+    {
+        Body& body = world.bodies[b];
+        body.islandFlag = false;
+        body.sweep.alpha0 = 0;
+    }
+    for (std::int32_t c = world.contactList; c != kNullIndex; c = world.contacts[c].next)
+    {
+        Contact& contact = world.contacts[c];
+        contact.flags &= ~(Contact::Toi | Contact::Island | Contact::Disabled);
+        contact.toiCount = 0;
+        contact.toi = 1;
+    }
+}
+
+/// The time of impact of one contact as a fraction of the whole step, or 1 for none; false
+/// when the contact is not swept at all (both sides inactive, or two non-bullet dynamics).
+bool ComputeImpact(WorldState& world, Contact& contact, const StepContext& step, Real& alpha)
+{
+    Body& bodyA = world.bodies[contact.bodyA];
+    Body& bodyB = world.bodies[contact.bodyB];
+    const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
+    const bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
+    if (!activeA && !activeB)
+    {
+        return false;
+    }
+    const bool sweptA = bodyA.bullet || bodyA.type != BodyType::Dynamic;
+    const bool sweptB = bodyB.bullet || bodyB.type != BodyType::Dynamic;
+    if (!sweptA && !sweptB)
+    {
+        return false;
+    }
+
+    // Put both sweeps on the same interval [alpha0, 1] by advancing the one that is behind.
+    Real alpha0 = bodyA.sweep.alpha0;
+    if (bodyA.sweep.alpha0 < bodyB.sweep.alpha0)
+    {
+        alpha0 = bodyB.sweep.alpha0;
+        bodyA.sweep.Advance(alpha0);
+    }
+    else if (bodyB.sweep.alpha0 < bodyA.sweep.alpha0)
+    {
+        alpha0 = bodyA.sweep.alpha0;
+        bodyB.sweep.Advance(alpha0);
+    }
+
+    TOIInput input;
+    input.proxyA = MakeProxy(world.shapes[contact.shapeA]);
+    input.proxyB = MakeProxy(world.shapes[contact.shapeB]);
+    input.sweepA = bodyA.sweep;
+    input.sweepB = bodyB.sweep;
+    input.tMax = 1;
+    input.linearSlop = step.tolerances.linearSlop;
+    const TOIOutput output = TimeOfImpact(input);
+
+    // output.t is a fraction of the remaining interval [alpha0, 1].
+    const Real beta = output.t;
+    if (output.state == TOIOutput::State::Touching)
+    {
+        alpha = Min(alpha0 + (Real(1) - alpha0) * beta, Real(1));
+    }
+    else
+    {
+        alpha = 1;
+    }
+    contact.toi = alpha;
+    contact.flags |= Contact::Toi;
+    return true;
+}
+
+/// The contact with the earliest impact in the step (kNullIndex for none), and its alpha.
+std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& minAlpha)
+{
+    std::int32_t minContact = kNullIndex;
+    minAlpha = 1;
+    for (std::int32_t c = world.contactList; c != kNullIndex; c = world.contacts[c].next)
+    {
+        Contact& contact = world.contacts[c];
+        if ((contact.flags & Contact::Disabled) != 0 || contact.toiCount > kMaxSubSteps)
+        {
+            continue;
+        }
+        Real alpha = 1;
+        if ((contact.flags & Contact::Toi) != 0)
+        {
+            alpha = contact.toi; // still valid: neither body has moved since
+        }
+        else if (!ComputeImpact(world, contact, step, alpha))
+        {
+            continue;
+        }
+        if (alpha < minAlpha)
+        {
+            minContact = c;
+            minAlpha = alpha;
+        }
+    }
+    return minContact;
+}
+
+/// Moves the event's two bodies to alpha and refreshes its manifold. Returns false (and
+/// restores the bodies, disabling the contact for the rest of the step) when it has no points
+/// there.
+bool AdvanceToImpact(WorldState& world, std::int32_t contactIndex, Real alpha)
+{
+    Body& bodyA = world.bodies[world.contacts[contactIndex].bodyA];
+    Body& bodyB = world.bodies[world.contacts[contactIndex].bodyB];
+    const Sweep backupA = bodyA.sweep;
+    const Sweep backupB = bodyB.sweep;
+    AdvanceBody(bodyA, alpha);
+    AdvanceBody(bodyB, alpha);
+
+    UpdateContact(world, contactIndex);
+    Contact& contact = world.contacts[contactIndex];
+    contact.flags &= ~Contact::Toi;
+    ++contact.toiCount;
+    if (!contact.IsTouching())
+    {
+        contact.flags |= Contact::Disabled;
+        RestoreSweep(bodyA, backupA);
+        RestoreSweep(bodyB, backupB);
+        return false;
+    }
+    return true;
+}
+
+void AddIslandBody(WorldState& world, Island& island, std::int32_t bodyIndex)
+{
+    Body& body = world.bodies[bodyIndex];
+    body.islandIndex = static_cast<std::int32_t>(island.bodies.size());
+    body.islandFlag = true;
+    island.bodies.push_back(bodyIndex);
+}
+
+/// The event's pair (solver indices 0 and 1) and its contact, then, for each dynamic body of
+/// the pair, its touching contacts with static, kinematic or bullet bodies (bullets: with any
+/// body), those bodies moved to alpha too.
+void BuildImpactIsland(WorldState& world, std::int32_t contactIndex, Real alpha, Island& island)
+{
+    island.Clear();
+    Contact& toiContact = world.contacts[contactIndex];
+    const std::int32_t pair[2] = {toiContact.bodyA, toiContact.bodyB};
+    AddIslandBody(world, island, pair[0]);
+    AddIslandBody(world, island, pair[1]);
+    island.contacts.push_back(contactIndex);
+    toiContact.flags |= Contact::Island;
+
+    for (const std::int32_t bodyIndex : pair)
+    {
+        const Body& body = world.bodies[bodyIndex];
+        if (body.type != BodyType::Dynamic)
+        {
+            continue;
+        }
+        for (std::int32_t key = body.contactList; key != kNullIndex;)
+        {
+            if (island.bodies.size() == kMaxToiBodies || island.contacts.size() == kMaxToiContacts)
+            {
+                break;
+            }
+            const std::int32_t c = EdgeOwner(key);
+            Contact& contact = world.contacts[c];
+            const Edge& edge = contact.edges[EdgeSide(key)];
+            key = edge.next;
+            if ((contact.flags & Contact::Island) != 0)
+            {
+                continue;
+            }
+            Body& other = world.bodies[edge.other];
+            if (other.type == BodyType::Dynamic && !body.bullet && !other.bullet)
+            {
+                continue;
+            }
+
+            // Tentatively move the neighbour to the impact time; keep it only if it touches.
+            const Sweep backup = other.sweep;
+            if (!other.islandFlag)
+            {
+                AdvanceBody(other, alpha);
+            }
+            UpdateContact(world, c);
+            if (!contact.IsTouching())
+            {
+                RestoreSweep(other, backup);
+                continue;
+            }
+            contact.flags |= Contact::Island;
+            island.contacts.push_back(c);
+            if (!other.islandFlag)
+            {
+                AddIslandBody(world, island, edge.other);
+            }
+        }
+    }
+}
+
+/// Solves the mini-island over the rest of the step, [alpha, 1] (b2Island::SolveTOI).
+void SolveImpactIsland(WorldState& world, Island& island, const StepContext& step, Real alpha)
+{
+    StepContext subStep = step;
+    subStep.dt = (Real(1) - alpha) * step.dt;
+    subStep.invDt = Real(1) / subStep.dt;
+    subStep.dtRatio = 1;
+    subStep.solver.positionIterations = kToiPositionIterations;
+    subStep.solver.warmStarting = false; // the discrete step already applied warm starting
+
+    const std::size_t count = island.bodies.size();
+    island.positions.resize(count);
+    island.velocities.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const Body& body = world.bodies[island.bodies[i]];
+        island.positions[i] = {body.sweep.c, body.sweep.a};
+        island.velocities[i] = {body.linearVelocity, body.angularVelocity};
+    }
+    SolverData data{subStep, island.positions.data(), island.velocities.data()};
+
+    // Push the pair (solver indices 0 and 1) out of overlap; the neighbours do not move.
+    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, world.shapes, data);
+    for (int i = 0; i < subStep.solver.positionIterations; ++i)
+    {
+        if (world.contactSolver.SolveToiPositions(data, 0, 1))
+        {
+            break;
+        }
+    }
+
+    // Take the corrected poses as the pair's new sweep start ("leap of faith").
+    for (std::size_t i = 0; i < 2; ++i)
+    {
+        Body& body = world.bodies[island.bodies[i]];
+        body.sweep.c0 = island.positions[i].c;
+        body.sweep.a0 = island.positions[i].a;
+    }
+
+    // Velocity constraints at the corrected poses. Impulses start from zero and are not stored
+    // back: impact impulses can be large and would spoil the next step's warm start.
+    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, world.shapes, data);
+    for (int i = 0; i < subStep.solver.velocityIterations; ++i)
+    {
+        world.contactSolver.SolveVelocities(data);
+    }
+
+    IntegratePositions(island, subStep);
+    FinishBodies(world, island);
+    ReportContacts(world);
+}
+
+/// Clears the island flags, moves the broad-phase boxes of the island's dynamic bodies and
+/// invalidates the cached impacts of all their contacts.
+void SynchronizeImpactIsland(WorldState& world, const Island& island)
+{
+    for (const std::int32_t bodyIndex : island.bodies)
+    {
+        Body& body = world.bodies[bodyIndex];
+        body.islandFlag = false;
+        if (body.type != BodyType::Dynamic)
+        {
+            continue;
+        }
+        SynchronizeBodyShapes(world, body);
+        for (std::int32_t key = body.contactList; key != kNullIndex;)
+        {
+            Contact& contact = world.contacts[EdgeOwner(key)];
+            contact.flags &= ~(Contact::Toi | Contact::Island);
+            key = contact.edges[EdgeSide(key)].next;
+        }
+    }
+}
+
+} // namespace
+
+void SolveContinuous(WorldState& world, const StepContext& step)
+{
+    ResetContinuousState(world);
+    Island& island = world.toiIsland;
+    for (;;)
+    {
+        Real minAlpha = 1;
+        const std::int32_t minContact = FindFirstImpact(world, step, minAlpha);
+        if (minContact == kNullIndex || Real(1) - Real(10) * kEpsilon < minAlpha)
+        {
+            break; // no impact left in this step
+        }
+        if (!AdvanceToImpact(world, minContact, minAlpha))
+        {
+            continue;
+        }
+        BuildImpactIsland(world, minContact, minAlpha, island);
+        SolveImpactIsland(world, island, step, minAlpha);
+        SynchronizeImpactIsland(world, island);
+        // The moved boxes may overlap new shapes: create those contacts now.
+        FindNewContacts(world);
+    }
+}
+
+} // namespace meff::detail

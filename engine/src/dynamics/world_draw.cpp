@@ -1,0 +1,204 @@
+// World::Draw: the world described to a DebugDraw, as Box2D's b2World::DebugDraw does. Only
+// reads the world; every list is walked in a fixed order so that the same world always gives
+// the same sequence of calls (a renderer built on it is then deterministic too).
+#include "dynamics/world_state.h"
+#include "joints/joint.h"
+#include "meff/debug_draw.h"
+#include "meff/world.h"
+
+#include <variant>
+
+namespace meff
+{
+
+using namespace detail;
+
+void DrawArrow(DebugDraw& draw, Vec2 tail, Vec2 tip, Real head, const DrawColor& color)
+{
+    Vec2 direction = tip - tail;
+    const Real length = direction.Normalize();
+    if (length == 0)
+    {
+        return;
+    }
+    draw.DrawSegment(tail, tip, color);
+    // A head longer than a third of the shaft would swallow short arrows.
+    const Real h = Min(head, length / Real(3));
+    const Vec2 back = tip - h * direction;
+    const Vec2 side = (Real(0.5) * h) * direction.Skew();
+    draw.DrawSegment(tip, back + side, color);
+    draw.DrawSegment(tip, back - side, color);
+}
+
+namespace
+{
+
+DrawColor BodyColor(const Body& body, const DrawPalette& colors)
+{
+    switch (body.type)
+    {
+    case BodyType::Static:
+        return colors.staticBody;
+    case BodyType::Kinematic:
+        return colors.kinematicBody;
+    case BodyType::Dynamic:
+        break;
+    }
+    return body.awake ? colors.dynamicBody : colors.sleepingBody;
+}
+
+/// Where a ray from `origin` (inside the convex polygon) along the unit `direction` leaves it:
+/// the nearest face the ray runs towards. A polygon has no axis of its own, so its angle line
+/// runs from its centroid along the body's x axis to this point.
+Vec2 PolygonExit(const Polygon& polygon, Vec2 origin, Vec2 direction)
+{
+    Real t = kMaxReal;
+    for (int i = 0; i < polygon.count; ++i)
+    {
+        const Real rate = Dot(polygon.normals[i], direction);
+        if (rate > 0)
+        {
+            t = Min(t, Dot(polygon.normals[i], polygon.vertices[i] - origin) / rate);
+        }
+    }
+    return t == kMaxReal ? origin : origin + t * direction;
+}
+
+void DrawShape(DebugDraw& draw, const Shape& shape, const Transform& xf, const DrawColor& color)
+{
+    switch (shape.type)
+    {
+    case ShapeType::Circle:
+    {
+        const Vec2 center = Mul(xf, shape.circle.center);
+        draw.DrawSolidCircle(center, shape.circle.radius, xf.q.GetXAxis(), color);
+        break;
+    }
+    case ShapeType::Polygon:
+    {
+        const Polygon& polygon = shape.polygon;
+        Vec2 vertices[kMaxPolygonVertices];
+        for (int i = 0; i < polygon.count; ++i)
+        {
+            vertices[i] = Mul(xf, polygon.vertices[i]);
+        }
+        draw.DrawSolidPolygon(std::span<const Vec2>(vertices, std::size_t(polygon.count)), color);
+        const Vec2 exit = PolygonExit(polygon, polygon.centroid, Vec2{1, 0});
+        draw.DrawSegment(Mul(xf, polygon.centroid), Mul(xf, exit), color);
+        break;
+    }
+    case ShapeType::Segment:
+        draw.DrawSegment(Mul(xf, shape.segment.point1), Mul(xf, shape.segment.point2), color);
+        break;
+    }
+}
+
+void DrawAABB(DebugDraw& draw, const AABB& box, const DrawColor& color)
+{
+    const Vec2 corners[4] = {box.lowerBound,
+                             {box.upperBound.x, box.lowerBound.y},
+                             box.upperBound,
+                             {box.lowerBound.x, box.upperBound.y}};
+    draw.DrawPolygon(corners, color);
+}
+
+Vec2 LocalAnchor(const Joint& joint, int side)
+{
+    if (const auto* r = std::get_if<RevoluteJoint>(&joint.data))
+    {
+        return side == 0 ? r->localAnchorA : r->localAnchorB;
+    }
+    const auto& d = std::get<DistanceJoint>(joint.data);
+    return side == 0 ? d.localAnchorA : d.localAnchorB;
+}
+
+} // namespace
+
+void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
+{
+    const WorldState& world = *m_state;
+    const DrawPalette& colors = flags.colors;
+
+    // Creation order, so that later bodies are drawn over earlier ones, as the scene lists them.
+    for (const BodyId id : world.bodyIds)
+    {
+        const Body& body = world.bodies[std::size_t(id.index)];
+        const DrawColor color = BodyColor(body, colors);
+        // body.shapes is newest first; drawing oldest first keeps the scene's order.
+        for (auto it = body.shapes.rbegin(); it != body.shapes.rend(); ++it)
+        {
+            const Shape& shape = world.shapes[std::size_t(*it)];
+            if (flags.shapes)
+            {
+                DrawShape(draw, shape, body.xf, color);
+            }
+            if (flags.aabbs)
+            {
+                DrawAABB(draw, shape.aabb, colors.aabb);
+            }
+        }
+        if (flags.centersOfMass)
+        {
+            draw.DrawTransform(Transform(body.sweep.c, body.xf.q));
+        }
+    }
+
+    if (flags.joints)
+    {
+        for (const JointId id : world.jointIds)
+        {
+            const Joint& joint = world.joints[std::size_t(id.index)].joint;
+            const Body& bodyA = world.bodies[std::size_t(joint.bodyA)];
+            const Body& bodyB = world.bodies[std::size_t(joint.bodyB)];
+            const Vec2 anchorA = Mul(bodyA.xf, LocalAnchor(joint, 0));
+            const Vec2 anchorB = Mul(bodyB.xf, LocalAnchor(joint, 1));
+            // As b2Joint::Draw: each moving body's centre to its anchor, then anchor to anchor
+            // (the rod of a distance joint). A static body's origin is usually far away and
+            // says nothing, so it is left out.
+            if (bodyA.type != BodyType::Static)
+            {
+                draw.DrawSegment(bodyA.sweep.c, anchorA, colors.joint);
+            }
+            if (bodyB.type != BodyType::Static)
+            {
+                draw.DrawSegment(bodyB.sweep.c, anchorB, colors.joint);
+            }
+            draw.DrawSegment(anchorA, anchorB, colors.joint);
+            draw.DrawPoint(anchorA, flags.pointSize, colors.joint);
+            draw.DrawPoint(anchorB, flags.pointSize, colors.joint);
+        }
+    }
+
+    for (const ContactPointReport& contact : world.contactReports)
+    {
+        if (flags.contacts)
+        {
+            draw.DrawPoint(contact.point, flags.pointSize, colors.contactPoint);
+            draw.DrawSegment(contact.point, contact.point + flags.normalLength * contact.normal,
+                             colors.contactNormal);
+        }
+        if (flags.contactImpulses)
+        {
+            // The impulse on body B acts along the normal (A to B).
+            const Vec2 tip =
+                contact.point + (flags.impulseScale * contact.normalImpulse) * contact.normal;
+            DrawArrow(draw, contact.point, tip, flags.arrowHead, colors.contactImpulse);
+        }
+    }
+
+    if (flags.jointReactions)
+    {
+        for (const JointId id : world.jointIds)
+        {
+            const Joint& joint = world.joints[std::size_t(id.index)].joint;
+            const Vec2 anchorB =
+                Mul(world.bodies[std::size_t(joint.bodyB)].xf, LocalAnchor(joint, 1));
+            // invDt = 1: the reaction as the last step's impulse (N·s), the contacts' unit.
+            const JointReaction reaction = GetJointReaction(joint, Real(1));
+            DrawArrow(draw, anchorB, anchorB + flags.impulseScale * reaction.force, flags.arrowHead,
+                      colors.jointReaction);
+        }
+    }
+}
+
+} // namespace meff
