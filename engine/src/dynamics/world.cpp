@@ -108,16 +108,12 @@ void ResetMassData(WorldState& world, Body& body)
         localCenter += md.mass * md.center;
         body.I += md.rotationalInertia;
     }
+    // A dynamic body without mass keeps mass 0 and inverse mass 0, as in Box2D 2.4.1: it then
+    // moves with its velocity and nothing can push it (the scene loader refuses such bodies).
     if (body.mass > 0)
     {
         body.invMass = Real(1) / body.mass;
         localCenter *= body.invMass;
-    }
-    else
-    {
-        // A dynamic body needs a positive mass to respond to anything.
-        body.mass = 1;
-        body.invMass = 1;
     }
     if (body.I > 0 && !body.fixedRotation)
     {
@@ -235,11 +231,6 @@ BodyId World::CreateBody(const BodyDef& def)
     body.allowSleep = def.allowSleep;
     body.awake = true; // sleeping is not modelled yet
     body.userData = def.userData;
-    if (def.type == BodyType::Dynamic)
-    {
-        body.mass = 1;
-        body.invMass = 1;
-    }
 
     body.prev = kNullIndex;
     body.next = world.bodyList;

@@ -1,0 +1,53 @@
+// The subcommands of the `meff` tool. Each lives in its own file and registers itself on the
+// top-level CLI11 app; main() runs the one the user chose.
+#pragma once
+
+#include "meff/scene.h"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace meff::cli
+{
+
+/// Exit statuses shared by every subcommand.
+enum ExitStatus : int
+{
+    kExitOk = 0,
+    kExitRunFailed = 1, ///< the simulation failed, or its output could not be written
+    kExitBadInput = 2,  ///< bad scene file or command line: nothing was run
+};
+
+/// A registered subcommand: `run` is called when `app` was the one parsed.
+struct Command
+{
+    CLI::App* app = nullptr;
+    std::function<int()> run;
+};
+
+/// `meff run SCENE.json [--frames N] [--trajectory OUT.csv] [--contacts OUT.csv]
+/// [--joints OUT.csv]`
+Command AddRunCommand(CLI::App& parent);
+
+/// `meff validate SCENE.json... [--frames N] [--report DIR] [--block-solver on|off|scene]
+/// [--no-plot]`
+Command AddValidateCommand(CLI::App& parent);
+
+/// `meff render SCENE.json --out DIR [--frames N] [--every K] [--size WxH]
+/// [--camera x,y,height] [--contacts] [--impulses] [--joints] [--overlay-box2d]
+/// [--gif FILE | --mp4 FILE]`
+Command AddRenderCommand(CLI::App& parent);
+
+/// `meff bench SCENE.json... [--steps N] [--runs R] [--threads T] [--json FILE]`
+Command AddBenchCommand(CLI::App& parent);
+
+/// `meff sweep SCENE.json [--out DIR] [--quick] [--seconds S] [--runs R] [--no-plot]`
+Command AddSweepCommand(CLI::App& parent);
+
+/// Loads a scene; on failure prints every problem to stderr, one per line, and returns nullopt.
+std::optional<Scene> LoadSceneOrReport(const std::string& path);
+
+} // namespace meff::cli

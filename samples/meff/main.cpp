@@ -1,0 +1,41 @@
+// `meff`: runs scene files. One subcommand per file; add new ones to the list below.
+#include "commands.h"
+
+#include <vector>
+
+int main(int argc, char** argv)
+{
+    using namespace meff::cli;
+
+    CLI::App app{"meff: a 2D rigid-body physics engine.\n"
+                 "Scenes are JSON files (see docs/scene-format.md); samples are in "
+                 "samples/scenes/.",
+                 "meff"};
+    app.require_subcommand(1);
+    app.footer("Exit status: 0 success, 1 the simulation failed or output could not be "
+               "written, 2 bad input (scene file or command line).\n"
+               "Run `meff COMMAND --help` for the options of a command.");
+
+    const std::vector<Command> commands = {
+        AddRunCommand(app),   AddValidateCommand(app), AddRenderCommand(app),
+        AddBenchCommand(app), AddSweepCommand(app),
+    };
+
+    try
+    {
+        app.parse(argc, argv);
+    }
+    catch (const CLI::ParseError& error)
+    {
+        // --help is a "parse error" with status 0; every real one is bad input.
+        return app.exit(error) == 0 ? kExitOk : kExitBadInput;
+    }
+    for (const Command& command : commands)
+    {
+        if (command.app->parsed())
+        {
+            return command.run();
+        }
+    }
+    return kExitBadInput;
+}

@@ -1,0 +1,319 @@
+// `meff run`: steps a scene and writes what happened as CSV.
+#include "commands.h"
+#include "output_file.h"
+
+#include <chrono>
+#include <cinttypes>
+#include <climits>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace meff::cli
+{
+
+namespace
+{
+
+struct RunOptions
+{
+    std::string scenePath;
+    std::optional<int> frames;
+    std::string trajectoryPath;
+    std::string contactsPath;
+    std::string jointsPath;
+};
+
+/// Enough digits that every Real reads back as the same value.
+constexpr const char* kRealFormat = sizeof(Real) == sizeof(float) ? "%.9g" : "%.17g";
+
+void WriteReal(std::FILE* stream, Real value)
+{
+    std::fputc(',', stream);
+    std::fprintf(stream, kRealFormat, double(value));
+}
+
+/// The three optional CSV outputs. Each row is written as the run goes; the files appear only
+/// when the whole run succeeded.
+class RunOutputs
+{
+  public:
+    RunOutputs(const RunOptions& options, const Scene& scene, const BuiltScene& built)
+        : m_scene(scene), m_built(built)
+    {
+        m_trajectory = Open(options.trajectoryPath, "frame,time,body,x,y,angle,vx,vy,omega\n");
+        m_contacts = Open(options.contactsPath, "frame,body_a,body_b,point,px,py,nx,ny,"
+                                                "normal_impulse,tangent_impulse\n");
+        m_joints = Open(options.jointsPath, "frame,joint,fx,fy,torque\n");
+    }
+
+    void WriteFrame(int frame)
+    {
+        WriteTrajectory(frame);
+        if (frame > 0)
+        {
+            WriteContacts(frame);
+            WriteJoints(frame);
+        }
+    }
+
+    void Commit()
+    {
+        for (OutputFile* file : {m_trajectory.get(), m_contacts.get(), m_joints.get()})
+        {
+            if (file != nullptr)
+            {
+                file->Commit();
+            }
+        }
+    }
+
+  private:
+    static std::unique_ptr<OutputFile> Open(const std::string& path, const char* header)
+    {
+        if (path.empty())
+        {
+            return nullptr;
+        }
+        auto file = std::make_unique<OutputFile>(path);
+        std::fputs(header, file->Stream());
+        return file;
+    }
+
+    const std::string& BodyName(BodyId id) const
+    {
+        static const std::string unknown = "?";
+        const std::optional<std::size_t> index = m_built.SceneIndexOf(id);
+        return index ? m_scene.bodies[*index].name : unknown;
+    }
+
+    void WriteTrajectory(int frame)
+    {
+        if (!m_trajectory)
+        {
+            return;
+        }
+        std::FILE* out = m_trajectory->Stream();
+        const World& world = m_built.world;
+        const double time = frame * m_scene.world.dt;
+        for (std::size_t i = 0; i < m_scene.bodies.size(); ++i)
+        {
+            if (m_scene.bodies[i].type == BodyType::Static)
+            {
+                continue;
+            }
+            const BodyId id = m_built.bodies[i];
+            const Vec2 position = world.GetPosition(id);
+            const Vec2 velocity = world.GetLinearVelocity(id);
+            std::fprintf(out, "%d,%.9g,%s", frame, time, m_scene.bodies[i].name.c_str());
+            WriteReal(out, position.x);
+            WriteReal(out, position.y);
+            WriteReal(out, world.GetAngle(id));
+            WriteReal(out, velocity.x);
+            WriteReal(out, velocity.y);
+            WriteReal(out, world.GetAngularVelocity(id));
+            std::fputc('\n', out);
+        }
+    }
+
+    void WriteContacts(int frame)
+    {
+        if (!m_contacts)
+        {
+            return;
+        }
+        std::FILE* out = m_contacts->Stream();
+        for (const ContactPointReport& contact : m_built.world.GetContactReports())
+        {
+            std::fprintf(out, "%d,%s,%s,%d", frame, BodyName(contact.bodyA).c_str(),
+                         BodyName(contact.bodyB).c_str(), contact.pointIndex);
+            WriteReal(out, contact.point.x);
+            WriteReal(out, contact.point.y);
+            WriteReal(out, contact.normal.x);
+            WriteReal(out, contact.normal.y);
+            WriteReal(out, contact.normalImpulse);
+            WriteReal(out, contact.tangentImpulse);
+            std::fputc('\n', out);
+        }
+    }
+
+    void WriteJoints(int frame)
+    {
+        if (!m_joints)
+        {
+            return;
+        }
+        std::FILE* out = m_joints->Stream();
+        // As Box2D computes it: the reciprocal in the engine's precision.
+        const Real inverseDt = Real(1) / Real(m_scene.world.dt);
+        for (std::size_t j = 0; j < m_scene.joints.size(); ++j)
+        {
+            const JointReaction reaction = m_built.world.GetReaction(m_built.joints[j], inverseDt);
+            std::fprintf(out, "%d,%s", frame, m_scene.joints[j].name.c_str());
+            WriteReal(out, reaction.force.x);
+            WriteReal(out, reaction.force.y);
+            WriteReal(out, reaction.torque);
+            std::fputc('\n', out);
+        }
+    }
+
+    const Scene& m_scene;
+    const BuiltScene& m_built;
+    std::unique_ptr<OutputFile> m_trajectory;
+    std::unique_ptr<OutputFile> m_contacts;
+    std::unique_ptr<OutputFile> m_joints;
+};
+
+/// Two options naming one file would race to rename over each other.
+bool OutputsAreDistinct(const RunOptions& options)
+{
+    std::vector<std::filesystem::path> seen;
+    for (const std::string* path :
+         {&options.trajectoryPath, &options.contactsPath, &options.jointsPath})
+    {
+        if (path->empty())
+        {
+            continue;
+        }
+        const std::filesystem::path normal =
+            std::filesystem::weakly_canonical(std::filesystem::absolute(*path));
+        for (const std::filesystem::path& other : seen)
+        {
+            if (other == normal)
+            {
+                std::fprintf(stderr, "meff run: %s is given for two outputs\n", path->c_str());
+                return false;
+            }
+        }
+        seen.push_back(normal);
+    }
+    return true;
+}
+
+int Run(const RunOptions& options)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const std::optional<Scene> scene = LoadSceneOrReport(options.scenePath);
+    if (!scene || !OutputsAreDistinct(options))
+    {
+        return kExitBadInput;
+    }
+    const int frames = options.frames.value_or(scene->world.frames);
+
+    std::optional<BuiltScene> built;
+    try
+    {
+        built.emplace(BuildWorld(*scene));
+    }
+    catch (const SceneError& error)
+    {
+        for (const std::string& message : error.messages())
+        {
+            std::fprintf(stderr, "%s\n", message.c_str());
+        }
+        return kExitBadInput;
+    }
+
+    std::optional<RunOutputs> outputs;
+    try
+    {
+        outputs.emplace(options, *scene, *built);
+    }
+    catch (const std::runtime_error& error)
+    {
+        std::fprintf(stderr, "meff run: %s\n", error.what());
+        return kExitBadInput;
+    }
+
+    const Real dt = Real(scene->world.dt);
+    try
+    {
+        outputs->WriteFrame(0);
+        for (int frame = 1; frame <= frames; ++frame)
+        {
+            built->world.Step(dt);
+            outputs->WriteFrame(frame);
+        }
+    }
+    catch (const SimulationError& error)
+    {
+        const std::optional<std::size_t> body = built->SceneIndexOfPoolIndex(error.bodyIndex);
+        const std::string bodyText = body ? "body \"" + scene->bodies[*body].name + "\" (bodies[" +
+                                                std::to_string(*body) + "])"
+                                          : "body #" + std::to_string(error.bodyIndex);
+        std::fprintf(
+            stderr, "%s: simulation failed at step %" PRIu64 " (frame %" PRIu64 "): %s: %s\n",
+            options.scenePath.c_str(), error.step, error.step + 1, bodyText.c_str(), error.what());
+        return kExitRunFailed;
+    }
+
+    try
+    {
+        outputs->Commit();
+    }
+    catch (const std::runtime_error& error)
+    {
+        std::fprintf(stderr, "meff run: %s\n", error.what());
+        return kExitRunFailed;
+    }
+
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: %zu bodies, %zu joints, %d frames (%.6g s simulated) in %.3f s\n",
+                scene->name.c_str(), scene->bodies.size(), scene->joints.size(), frames,
+                frames * scene->world.dt, seconds);
+    return kExitOk;
+}
+
+} // namespace
+
+std::optional<Scene> LoadSceneOrReport(const std::string& path)
+{
+    try
+    {
+        return LoadScene(path);
+    }
+    catch (const SceneError& error)
+    {
+        for (const std::string& message : error.messages())
+        {
+            std::fprintf(stderr, "%s\n", message.c_str());
+        }
+        return std::nullopt;
+    }
+}
+
+Command AddRunCommand(CLI::App& parent)
+{
+    auto options = std::make_shared<RunOptions>();
+    CLI::App* app = parent.add_subcommand(
+        "run", "Run a scene file and optionally write its trajectory, contacts and joint "
+               "reactions as CSV.\n"
+               "Each output file is written whole or not at all. Numbers have enough digits "
+               "to read back exactly.");
+    app->add_option("scene", options->scenePath, "Scene file (JSON; see docs/scene-format.md)")
+        ->required()
+        ->type_name("SCENE.json");
+    app->add_option("--frames", options->frames,
+                    "Number of steps to run (default: the scene's world.frames)")
+        ->type_name("N")
+        ->check(CLI::Range(0, INT_MAX));
+    app->add_option("--trajectory", options->trajectoryPath,
+                    "Write frame,time,body,x,y,angle,vx,vy,omega: one row per non-static body "
+                    "per frame, frame 0 being the initial state; x,y is the body origin")
+        ->type_name("OUT.csv");
+    app->add_option("--contacts", options->contactsPath,
+                    "Write frame,body_a,body_b,point,px,py,nx,ny,normal_impulse,"
+                    "tangent_impulse: every touching contact point after each step (normal "
+                    "from body_a to body_b; impulses in N·s)")
+        ->type_name("OUT.csv");
+    app->add_option("--joints", options->jointsPath,
+                    "Write frame,joint,fx,fy,torque: each joint's reaction force (N) and torque "
+                    "(N·m) on body_b after each step, i.e. its impulse divided by dt")
+        ->type_name("OUT.csv");
+    return {app, [options] { return Run(*options); }};
+}
+
+} // namespace meff::cli

@@ -1,0 +1,255 @@
+// Scene files: a whole simulation setup described once, in JSON, and run by meff, by the Box2D
+// validation mirror, by the renderer and by the benchmarks. The format is documented field by
+// field in docs/scene-format.md.
+//
+// Numbers are kept as double, exactly as written in the file, so that every consumer converts
+// them to its own scalar type the same way (meff's Real and Box2D's float agree bit for bit).
+#pragma once
+
+#include "meff/body.h"
+#include "meff/error.h"
+#include "meff/ids.h"
+#include "meff/joint.h"
+#include "meff/world.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace meff
+{
+
+/// The only version of the format there is; files say so in "meff_scene".
+inline constexpr int kSceneFormatVersion = 1;
+
+/// A point or vector as written in a scene file: [x, y].
+struct SceneVec2
+{
+    double x = 0;
+    double y = 0;
+};
+
+/// "world": gravity, time step and solver settings.
+struct SceneWorldSettings
+{
+    SceneVec2 gravity{0, -10};  ///< m/s²
+    double dt = 1.0 / 60.0;     ///< s, > 0
+    int frames = 240;           ///< steps to run, ≥ 0
+    int velocityIterations = 8; ///< 1..1000
+    int positionIterations = 3; ///< 0..1000
+    bool warmStarting = true;
+    bool blockSolver = true; ///< 2×2 block solve of two-point manifolds
+    bool blockJoints = true; ///< meff only: 2×2 block solve of revolute point constraints
+    bool allowSleep = false; ///< reserved (sleeping is not modelled yet)
+    bool continuous = false; ///< Box2D's continuous physics (time of impact)
+};
+
+enum class SceneShapeType
+{
+    Circle,
+    Box,
+    Polygon,
+    Segment,
+};
+
+/// "filter": which shapes may collide (see meff::Filter).
+struct SceneFilter
+{
+    std::uint16_t category = 0x0001;
+    std::uint16_t mask = 0xFFFF;
+    std::int16_t group = 0;
+};
+
+/// One entry of a body's "shapes". Only the geometry fields of its type are meaningful.
+struct SceneShape
+{
+    SceneShapeType type = SceneShapeType::Circle;
+    // circle
+    double radius = 0; ///< m, > 0
+    // circle and box
+    SceneVec2 center; ///< body coordinates (m)
+    // box
+    double halfWidth = 0;  ///< m, > 0
+    double halfHeight = 0; ///< m, > 0
+    double angle = 0;      ///< rad, the box's turn within the body
+    // polygon: the corners of a convex polygon, body coordinates (m), any order
+    std::vector<SceneVec2> vertices;
+    // segment: its two ends, body coordinates (m)
+    SceneVec2 point1;
+    SceneVec2 point2;
+    // material
+    double density = 1;              ///< kg/m², ≥ 0
+    double friction = 0.6;           ///< ≥ 0
+    double restitution = 0;          ///< [0, 1]
+    double restitutionThreshold = 1; ///< m/s, ≥ 0
+    SceneFilter filter;
+    bool sensor = false;
+};
+
+/// One entry of "bodies".
+struct SceneBody
+{
+    std::string name;
+    BodyType type = BodyType::Static;
+    SceneVec2 position;         ///< world position of the body origin (m)
+    double angle = 0;           ///< rad
+    SceneVec2 linearVelocity;   ///< m/s
+    double angularVelocity = 0; ///< rad/s
+    double linearDamping = 0;   ///< 1/s, ≥ 0
+    double angularDamping = 0;  ///< 1/s, ≥ 0
+    double gravityScale = 1;
+    bool fixedRotation = false;
+    bool bullet = false;
+    std::vector<SceneShape> shapes; ///< in file order, which is also creation order
+};
+
+/// One entry of "joints". Anchors are world points at creation. Only the fields of its type
+/// are meaningful.
+struct SceneJoint
+{
+    JointType type = JointType::Revolute;
+    std::string name;
+    std::string bodyA;          ///< name as written
+    std::string bodyB;          ///< name as written
+    std::size_t bodyIndexA = 0; ///< index into Scene::bodies
+    std::size_t bodyIndexB = 0; ///< index into Scene::bodies
+    bool collideConnected = false;
+    // revolute
+    SceneVec2 anchor; ///< world point (m)
+    bool enableLimit = false;
+    double lowerAngle = 0; ///< rad, ≤ upperAngle
+    double upperAngle = 0; ///< rad
+    bool enableMotor = false;
+    double motorSpeed = 0;     ///< rad/s
+    double maxMotorTorque = 0; ///< N·m, ≥ 0
+    // distance
+    SceneVec2 anchorA;       ///< world point on body A (m)
+    SceneVec2 anchorB;       ///< world point on body B (m)
+    double length = 0;       ///< m, > 0; the file's value or the distance between the anchors
+    double minLength = 0;    ///< m; the file's value or `length`
+    double maxLength = 0;    ///< m; the file's value or `length`
+    double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring
+    double dampingRatio = 0; ///< ≥ 0
+};
+
+/// "validate.tolerances": how far meff may drift from Box2D before validation fails.
+struct SceneTolerances
+{
+    double position = 1e-4; ///< m
+    double angle = 1e-4;    ///< rad
+    double velocity = 1e-3; ///< m/s and rad/s
+    double impulse = 1e-3;  ///< N·s
+    /// Impulses also pass when within this fraction of Box2D's value (whichever allows more).
+    double impulseRelative = 1e-3;
+};
+
+/// "validate.settle": checks of the final frame, for chaotic scenes.
+struct SceneSettleCheck
+{
+    double position = 0.05;              ///< m: every body's final position vs Box2D's
+    std::optional<double> angle;         ///< rad: every body's final angle vs Box2D's
+    std::optional<double> minimumHeight; ///< m: no dynamic body's origin ends below this y
+};
+
+/// "validate" beyond tolerances: how a chaotic scene (stacks, pyramids: round-off grows until
+/// the two engines part) is judged. Frame by frame up to the horizon, then the settled state.
+struct SceneValidation
+{
+    bool chaotic = false;  ///< "chaotic"
+    int horizonFrames = 0; ///< "horizon_frames": frames that must agree (chaotic scenes)
+    std::optional<SceneSettleCheck> settle; ///< "settle"
+};
+
+/// "render.camera": what the renderer shows.
+struct SceneCamera
+{
+    SceneVec2 center;   ///< world point at the middle of the image (m)
+    double height = 10; ///< world height the image spans (m), > 0
+};
+
+/// What "analytic" says the exact answer is.
+enum class SceneAnalyticKind
+{
+    Pendulum, ///< one body swinging on one joint from a static body
+    Cradle,   ///< a Newton's cradle: balls on rods, the first released, all collisions elastic
+    Bounce,   ///< a ball dropped on flat ground, rebounding by its restitution
+};
+
+/// "analytic": the scene has an exact answer (computed by `meff sweep`, which measures each
+/// setting's error against it; scenes without one are compared with a converged run).
+struct SceneAnalytic
+{
+    SceneAnalyticKind kind = SceneAnalyticKind::Pendulum;
+    /// Pendulum: its one joint ("joint"). Cradle: the rods in order along the row, the
+    /// released ball's first ("joints"). Indices into Scene::joints; body A of each is static.
+    std::vector<std::size_t> joints;
+    std::size_t body = 0;     ///< bounce: the ball ("body"), index into Scene::bodies
+    double contactHeight = 0; ///< bounce: height of its centre of mass when touching (m)
+};
+
+/// A loaded, validated scene with every default filled in.
+struct Scene
+{
+    std::string sourcePath;  ///< the file it came from, for messages
+    std::string name;        ///< "name", or the file name without ".json"
+    std::string description; ///< "description", or empty
+    SceneWorldSettings world;
+    std::vector<SceneBody> bodies;
+    std::vector<SceneJoint> joints;
+    SceneTolerances tolerances;
+    SceneValidation validation;
+    std::optional<SceneCamera> camera;     ///< absent: the renderer chooses
+    std::optional<SceneAnalytic> analytic; ///< absent: no exact answer is known
+
+    /// Index into bodies of the body with this name, or nullopt.
+    std::optional<std::size_t> FindBody(std::string_view bodyName) const;
+    /// Index into joints of the joint with this name, or nullopt.
+    std::optional<std::size_t> FindJoint(std::string_view jointName) const;
+};
+
+/// A scene that cannot be used. messages() holds every problem found, one line each, in the
+/// form "FILE: FIELD.PATH: MESSAGE, got VALUE"; what() is all of them joined by newlines.
+class SceneError : public Error
+{
+  public:
+    explicit SceneError(std::vector<std::string> messages);
+    const std::vector<std::string>& messages() const { return m_messages; }
+
+  private:
+    std::vector<std::string> m_messages;
+};
+
+/// Reads and validates a scene file. Throws SceneError listing every problem found.
+Scene LoadScene(const std::string& path);
+/// The same for text already in memory; `sourcePath` only names it in messages and gives the
+/// default scene name.
+Scene ParseScene(std::string_view text, const std::string& sourcePath);
+
+/// A world built from a scene, with the ids of everything in it in scene order.
+struct BuiltScene
+{
+    World world;
+    std::vector<BodyId> bodies{};               ///< bodies[i] is scene.bodies[i]
+    std::vector<std::vector<ShapeId>> shapes{}; ///< shapes[i][k] is scene.bodies[i].shapes[k]
+    std::vector<JointId> joints{};              ///< joints[j] is scene.joints[j]
+    std::unordered_map<std::string, BodyId> bodyByName{};
+    std::unordered_map<std::string, JointId> jointByName{};
+
+    /// The scene index of a body given its id or its pool index (BodyId::index, also
+    /// SimulationError::bodyIndex), or nullopt for a body the scene did not create.
+    std::optional<std::size_t> SceneIndexOf(BodyId id) const;
+    std::optional<std::size_t> SceneIndexOfPoolIndex(std::int32_t poolIndex) const;
+
+    /// Scene index by BodyId::index; -1 where no scene body lives.
+    std::vector<std::ptrdiff_t> sceneIndexByPoolIndex{};
+};
+
+/// Creates the scene's world, bodies, shapes and joints. Throws SceneError if the engine
+/// refuses something the loader let through (a scene that did not come from LoadScene).
+BuiltScene BuildWorld(const Scene& scene);
+
+} // namespace meff

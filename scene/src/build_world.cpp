@@ -1,0 +1,210 @@
+// Turning a validated Scene into a meff World.
+#include "meff/scene.h"
+
+#include "meff/collision.h"
+
+#include <string>
+
+namespace meff
+{
+
+namespace
+{
+
+Vec2 ToVec2(SceneVec2 v)
+{
+    return {Real(v.x), Real(v.y)};
+}
+
+/// The engine's error, said about one scene field.
+[[noreturn]] void Refused(const Scene& scene, const std::string& fieldPath, const Error& error)
+{
+    throw SceneError(
+        {scene.sourcePath + ": " + fieldPath + ": refused by the engine: " + error.what()});
+}
+
+WorldDef MakeWorldDef(const SceneWorldSettings& settings)
+{
+    WorldDef def;
+    def.gravity = ToVec2(settings.gravity);
+    def.solver.velocityIterations = settings.velocityIterations;
+    def.solver.positionIterations = settings.positionIterations;
+    def.solver.warmStarting = settings.warmStarting;
+    def.solver.blockSolver = settings.blockSolver;
+    def.solver.blockJoints = settings.blockJoints;
+    def.allowSleep = settings.allowSleep;
+    def.continuous = settings.continuous;
+    return def;
+}
+
+BodyDef MakeBodyDef(const SceneBody& body, bool allowSleep)
+{
+    BodyDef def;
+    def.type = body.type;
+    def.position = ToVec2(body.position);
+    def.angle = Real(body.angle);
+    def.linearVelocity = ToVec2(body.linearVelocity);
+    def.angularVelocity = Real(body.angularVelocity);
+    def.linearDamping = Real(body.linearDamping);
+    def.angularDamping = Real(body.angularDamping);
+    def.gravityScale = Real(body.gravityScale);
+    def.fixedRotation = body.fixedRotation;
+    def.bullet = body.bullet;
+    def.allowSleep = allowSleep;
+    return def;
+}
+
+ShapeDef MakeShapeDef(const SceneShape& shape)
+{
+    ShapeDef def;
+    def.density = Real(shape.density);
+    def.friction = Real(shape.friction);
+    def.restitution = Real(shape.restitution);
+    def.restitutionThreshold = Real(shape.restitutionThreshold);
+    def.filter.categoryBits = shape.filter.category;
+    def.filter.maskBits = shape.filter.mask;
+    def.filter.groupIndex = shape.filter.group;
+    def.isSensor = shape.sensor;
+    return def;
+}
+
+ShapeId CreateShape(World& world, BodyId body, const SceneShape& shape)
+{
+    const ShapeDef def = MakeShapeDef(shape);
+    switch (shape.type)
+    {
+    case SceneShapeType::Circle:
+    {
+        Circle circle;
+        circle.center = ToVec2(shape.center);
+        circle.radius = Real(shape.radius);
+        return world.CreateShape(body, def, circle);
+    }
+    case SceneShapeType::Box:
+        return world.CreateShape(body, def,
+                                 MakeOffsetBox(Real(shape.halfWidth), Real(shape.halfHeight),
+                                               ToVec2(shape.center), Real(shape.angle)));
+    case SceneShapeType::Polygon:
+    {
+        std::vector<Vec2> points;
+        points.reserve(shape.vertices.size());
+        for (const SceneVec2& vertex : shape.vertices)
+        {
+            points.push_back(ToVec2(vertex));
+        }
+        return world.CreateShape(body, def, MakePolygon(points));
+    }
+    case SceneShapeType::Segment:
+    {
+        Segment segment;
+        segment.point1 = ToVec2(shape.point1);
+        segment.point2 = ToVec2(shape.point2);
+        return world.CreateShape(body, def, segment);
+    }
+    }
+    throw InvalidArgument("unknown shape type");
+}
+
+JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
+{
+    const BodyId bodyA = built.bodies.at(joint.bodyIndexA);
+    const BodyId bodyB = built.bodies.at(joint.bodyIndexB);
+    if (joint.type == JointType::Revolute)
+    {
+        RevoluteJointDef def = built.world.MakeRevoluteJointDef(bodyA, bodyB, ToVec2(joint.anchor));
+        def.enableLimit = joint.enableLimit;
+        def.lowerAngle = Real(joint.lowerAngle);
+        def.upperAngle = Real(joint.upperAngle);
+        def.enableMotor = joint.enableMotor;
+        def.motorSpeed = Real(joint.motorSpeed);
+        def.maxMotorTorque = Real(joint.maxMotorTorque);
+        def.collideConnected = joint.collideConnected;
+        return built.world.CreateJoint(def);
+    }
+    DistanceJointDef def = built.world.MakeDistanceJointDef(bodyA, bodyB, ToVec2(joint.anchorA),
+                                                            ToVec2(joint.anchorB));
+    def.length = Real(joint.length);
+    def.minLength = Real(joint.minLength);
+    def.maxLength = Real(joint.maxLength);
+    def.hertz = Real(joint.stiffnessHz);
+    def.dampingRatio = Real(joint.dampingRatio);
+    def.collideConnected = joint.collideConnected;
+    return built.world.CreateJoint(def);
+}
+
+} // namespace
+
+BuiltScene BuildWorld(const Scene& scene)
+{
+    BuiltScene built{World(MakeWorldDef(scene.world))};
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        const SceneBody& body = scene.bodies[i];
+        const std::string path = "bodies[" + std::to_string(i) + "]";
+        BodyId id;
+        try
+        {
+            id = built.world.CreateBody(MakeBodyDef(body, scene.world.allowSleep));
+        }
+        catch (const InvalidArgument& error)
+        {
+            Refused(scene, path, error);
+        }
+        built.bodies.push_back(id);
+        built.bodyByName.emplace(body.name, id);
+        if (std::size_t(id.index) >= built.sceneIndexByPoolIndex.size())
+        {
+            built.sceneIndexByPoolIndex.resize(std::size_t(id.index) + 1, -1);
+        }
+        built.sceneIndexByPoolIndex[std::size_t(id.index)] = std::ptrdiff_t(i);
+
+        std::vector<ShapeId>& shapes = built.shapes.emplace_back();
+        for (std::size_t k = 0; k < body.shapes.size(); ++k)
+        {
+            try
+            {
+                shapes.push_back(CreateShape(built.world, id, body.shapes[k]));
+            }
+            catch (const InvalidArgument& error)
+            {
+                Refused(scene, path + ".shapes[" + std::to_string(k) + "]", error);
+            }
+        }
+    }
+    for (std::size_t j = 0; j < scene.joints.size(); ++j)
+    {
+        try
+        {
+            const JointId id = CreateJoint(built, scene.joints[j]);
+            built.joints.push_back(id);
+            built.jointByName.emplace(scene.joints[j].name, id);
+        }
+        catch (const InvalidArgument& error)
+        {
+            Refused(scene, "joints[" + std::to_string(j) + "]", error);
+        }
+    }
+    return built;
+}
+
+std::optional<std::size_t> BuiltScene::SceneIndexOf(BodyId id) const
+{
+    const std::optional<std::size_t> index = SceneIndexOfPoolIndex(id.index);
+    if (index && bodies[*index] == id)
+    {
+        return index;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::size_t> BuiltScene::SceneIndexOfPoolIndex(std::int32_t poolIndex) const
+{
+    if (poolIndex < 0 || std::size_t(poolIndex) >= sceneIndexByPoolIndex.size() ||
+        sceneIndexByPoolIndex[std::size_t(poolIndex)] < 0)
+    {
+        return std::nullopt;
+    }
+    return std::size_t(sceneIndexByPoolIndex[std::size_t(poolIndex)]);
+}
+
+} // namespace meff

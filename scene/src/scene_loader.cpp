@@ -1,0 +1,860 @@
+// Reading and validating scene files. The rule throughout: report every problem that can be
+// found without guessing, each once, and never let a bad value reach the engine.
+#include "json_document.h"
+
+#include "meff/collision.h"
+#include "meff/scene.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
+
+namespace meff
+{
+
+using scene_detail::CheckInRange;
+using scene_detail::CheckNonNegative;
+using scene_detail::CheckPositive;
+using scene_detail::Diagnostics;
+using scene_detail::IndexPath;
+using scene_detail::Json;
+using scene_detail::ObjectReader;
+
+namespace
+{
+
+// Names end up unquoted in CSV columns and in file names, so keep them plain.
+constexpr std::size_t kMaxNameLength = 64;
+
+bool IsPlainName(const std::string& name)
+{
+    if (name.empty() || name.size() > kMaxNameLength)
+    {
+        return false;
+    }
+    for (const char c : name)
+    {
+        const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                           (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+        if (!plain)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+template <typename T, typename U>
+void Assign(T& target, const std::optional<U>& value)
+{
+    if (value)
+    {
+        target = static_cast<T>(*value);
+    }
+}
+
+std::optional<std::string> ReadName(ObjectReader& reader)
+{
+    std::optional<std::string> name = reader.String("name", std::nullopt);
+    if (name && !IsPlainName(*name))
+    {
+        reader.Fail("name", "must be 1 to 64 letters, digits, '_', '-' or '.'");
+        return std::nullopt;
+    }
+    return name;
+}
+
+/// Reads a number that must be > 0 (or >= 0); returns it only when it passed.
+std::optional<double> ReadPositive(ObjectReader& reader, std::string_view key,
+                                   std::optional<double> fallback)
+{
+    std::optional<double> value = reader.Number(key, fallback);
+    if (value && !CheckPositive(reader, key, *value))
+    {
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<double> ReadNonNegative(ObjectReader& reader, std::string_view key,
+                                      std::optional<double> fallback)
+{
+    std::optional<double> value = reader.Number(key, fallback);
+    if (value && !CheckNonNegative(reader, key, *value))
+    {
+        return std::nullopt;
+    }
+    return value;
+}
+
+/// A string field that must be one of a few words; returns the index of the word.
+std::optional<std::size_t> ReadChoice(ObjectReader& reader, std::string_view key,
+                                      std::initializer_list<const char*> choices)
+{
+    const std::optional<std::string> word = reader.String(key, std::nullopt);
+    if (!word)
+    {
+        return std::nullopt;
+    }
+    std::string listed;
+    std::size_t index = 0;
+    for (const char* choice : choices)
+    {
+        if (*word == choice)
+        {
+            return index;
+        }
+        listed += (index == 0 ? "\"" : ", \"") + std::string(choice) + "\"";
+        ++index;
+    }
+    reader.Fail(key, "must be one of " + listed);
+    return std::nullopt;
+}
+
+Vec2 ToEngine(SceneVec2 v)
+{
+    return {Real(v.x), Real(v.y)};
+}
+
+void ReadWorld(ObjectReader& reader, SceneWorldSettings& world)
+{
+    const SceneWorldSettings defaults;
+    Assign(world.gravity, reader.Vector("gravity", defaults.gravity));
+    Assign(world.dt, ReadPositive(reader, "dt", defaults.dt));
+    Assign(world.frames, reader.Integer("frames", defaults.frames, 0, INT_MAX));
+    Assign(world.velocityIterations,
+           reader.Integer("velocity_iterations", defaults.velocityIterations, 1, 1000));
+    // Zero position iterations is legitimate: it shows what the velocity solver alone does.
+    Assign(world.positionIterations,
+           reader.Integer("position_iterations", defaults.positionIterations, 0, 1000));
+    Assign(world.warmStarting, reader.Boolean("warm_starting", defaults.warmStarting));
+    Assign(world.blockSolver, reader.Boolean("block_solver", defaults.blockSolver));
+    Assign(world.blockJoints, reader.Boolean("block_joints", defaults.blockJoints));
+    Assign(world.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
+    Assign(world.continuous, reader.Boolean("continuous", defaults.continuous));
+    reader.Finish();
+}
+
+void ReadFilter(ObjectReader& reader, SceneFilter& filter)
+{
+    const SceneFilter defaults;
+    Assign(filter.category, reader.Integer("category", defaults.category, 0, 0xFFFF));
+    Assign(filter.mask, reader.Integer("mask", defaults.mask, 0, 0xFFFF));
+    Assign(filter.group, reader.Integer("group", defaults.group, INT16_MIN, INT16_MAX));
+    reader.Finish();
+}
+
+void ReadPolygonVertices(ObjectReader& reader, SceneShape& shape)
+{
+    const std::optional<std::vector<SceneVec2>> vertices = reader.VectorList("vertices");
+    if (!vertices)
+    {
+        return;
+    }
+    if (vertices->size() < 3 || vertices->size() > std::size_t(kMaxPolygonVertices))
+    {
+        reader.Fail("vertices",
+                    "must list 3 to " + std::to_string(kMaxPolygonVertices) + " points");
+        return;
+    }
+    std::vector<Vec2> points;
+    for (const SceneVec2& vertex : *vertices)
+    {
+        points.push_back(ToEngine(vertex));
+    }
+    // The engine takes the convex hull of whatever it is given; a point the hull drops would
+    // silently change the shape the user drew, so that is refused too.
+    try
+    {
+        const Polygon polygon = MakePolygon(points);
+        if (std::size_t(polygon.count) != points.size())
+        {
+            reader.Fail("vertices", "must be the corners of a convex polygon (a point lies "
+                                    "inside the hull, or two points are closer than " +
+                                        scene_detail::FormatReal(kPolygonWeldTolerance) + " m)");
+            return;
+        }
+    }
+    catch (const InvalidArgument&)
+    {
+        reader.Fail("vertices", "must enclose a non-zero area (the points are collinear or "
+                                "coincide)");
+        return;
+    }
+    shape.vertices = *vertices;
+}
+
+void ReadSegmentPoints(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
+{
+    const std::optional<std::vector<SceneVec2>> points = reader.VectorList("points");
+    if (!points)
+    {
+        return;
+    }
+    if (points->size() != 2)
+    {
+        reader.Fail("points", "must be two points [[x1, y1], [x2, y2]]");
+        return;
+    }
+    const Real minimumLength = Tolerances{}.linearSlop;
+    if (!(Distance(ToEngine((*points)[0]), ToEngine((*points)[1])) > minimumLength))
+    {
+        reader.Fail("points",
+                    "must be more than " + scene_detail::FormatReal(minimumLength) + " m apart");
+        return;
+    }
+    // A segment has no area and so no mass, and the engine does not collide two segments:
+    // it is meant for ground and walls.
+    if (bodyType == BodyType::Dynamic)
+    {
+        reader.Fail("type", "must not be \"segment\" on a dynamic body (segments have no mass; "
+                            "use them for static or kinematic bodies)");
+        return;
+    }
+    shape.point1 = (*points)[0];
+    shape.point2 = (*points)[1];
+}
+
+void ReadShape(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
+{
+    const std::optional<std::size_t> type =
+        ReadChoice(reader, "type", {"circle", "box", "polygon", "segment"});
+    if (!type)
+    {
+        // Which other fields belong here depends on the type: say nothing more.
+        return;
+    }
+    shape.type = SceneShapeType(*type);
+    switch (shape.type)
+    {
+    case SceneShapeType::Circle:
+        Assign(shape.radius, ReadPositive(reader, "radius", std::nullopt));
+        Assign(shape.center, reader.Vector("center", SceneVec2{}));
+        break;
+    case SceneShapeType::Box:
+    {
+        const std::optional<double> halfWidth = ReadPositive(reader, "half_width", std::nullopt);
+        const std::optional<double> halfHeight = ReadPositive(reader, "half_height", std::nullopt);
+        Assign(shape.halfWidth, halfWidth);
+        Assign(shape.halfHeight, halfHeight);
+        Assign(shape.center, reader.Vector("center", SceneVec2{}));
+        Assign(shape.angle, reader.Number("angle", 0.0));
+        break;
+    }
+    case SceneShapeType::Polygon:
+        ReadPolygonVertices(reader, shape);
+        break;
+    case SceneShapeType::Segment:
+        ReadSegmentPoints(reader, bodyType, shape);
+        break;
+    }
+    const SceneShape defaults;
+    Assign(shape.density, ReadNonNegative(reader, "density", defaults.density));
+    Assign(shape.friction, ReadNonNegative(reader, "friction", defaults.friction));
+    if (const std::optional<double> restitution =
+            reader.Number("restitution", defaults.restitution))
+    {
+        if (CheckInRange(reader, "restitution", *restitution, 0, 1))
+        {
+            shape.restitution = *restitution;
+        }
+    }
+    Assign(shape.restitutionThreshold,
+           ReadNonNegative(reader, "restitution_threshold", defaults.restitutionThreshold));
+    if (const Json* filter = reader.Object("filter", false))
+    {
+        ObjectReader filterReader(reader.Diag(), *filter, reader.PathOf("filter"));
+        ReadFilter(filterReader, shape.filter);
+    }
+    Assign(shape.sensor, reader.Boolean("sensor", defaults.sensor));
+    reader.Finish();
+}
+
+void ReadBody(ObjectReader& reader, SceneBody& body)
+{
+    Assign(body.name, ReadName(reader));
+    const std::optional<std::size_t> type =
+        ReadChoice(reader, "type", {"static", "kinematic", "dynamic"});
+    constexpr BodyType kTypes[] = {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic};
+    if (type)
+    {
+        body.type = kTypes[*type];
+    }
+    const SceneBody defaults;
+    Assign(body.position, reader.Vector("position", defaults.position));
+    Assign(body.angle, reader.Number("angle", defaults.angle));
+    Assign(body.linearVelocity, reader.Vector("linear_velocity", defaults.linearVelocity));
+    Assign(body.angularVelocity, reader.Number("angular_velocity", defaults.angularVelocity));
+    // A static body never moves; a velocity on one is a mistake, not something to ignore.
+    if (type && body.type == BodyType::Static)
+    {
+        if (body.linearVelocity.x != 0 || body.linearVelocity.y != 0)
+        {
+            reader.Fail("linear_velocity", "must be [0, 0] for a static body");
+        }
+        if (body.angularVelocity != 0)
+        {
+            reader.Fail("angular_velocity", "must be 0 for a static body");
+        }
+    }
+    Assign(body.linearDamping, ReadNonNegative(reader, "linear_damping", defaults.linearDamping));
+    Assign(body.angularDamping,
+           ReadNonNegative(reader, "angular_damping", defaults.angularDamping));
+    Assign(body.gravityScale, reader.Number("gravity_scale", defaults.gravityScale));
+    Assign(body.fixedRotation, reader.Boolean("fixed_rotation", defaults.fixedRotation));
+    Assign(body.bullet, reader.Boolean("bullet", defaults.bullet));
+    if (const Json* shapes = reader.Array("shapes", false))
+    {
+        for (std::size_t i = 0; i < shapes->size(); ++i)
+        {
+            const std::string path = IndexPath(reader.PathOf("shapes"), i);
+            const Json& entry = (*shapes)[i];
+            if (!entry.is_object())
+            {
+                reader.Diag().Report(path, "must be an object", entry);
+                continue;
+            }
+            ObjectReader shapeReader(reader.Diag(), entry, path);
+            SceneShape& shape = body.shapes.emplace_back();
+            // Without a valid body type, segments are checked as if the body were static
+            // rather than reported twice.
+            ReadShape(shapeReader, type ? body.type : BodyType::Static, shape);
+        }
+    }
+    // Without mass a dynamic body would be pushed by nothing (Box2D 2.4.1 gives it mass 0),
+    // which is never what a scene means.
+    if (type && body.type == BodyType::Dynamic &&
+        std::none_of(body.shapes.begin(), body.shapes.end(),
+                     [](const SceneShape& shape) { return shape.density > 0; }))
+    {
+        reader.Fail("shapes", "a dynamic body needs mass: give one of its shapes a density > 0");
+    }
+    if (type)
+    {
+        reader.Finish();
+    }
+}
+
+void ReadRevoluteFields(ObjectReader& reader, SceneJoint& joint)
+{
+    Assign(joint.anchor, reader.Vector("anchor", std::nullopt));
+    const SceneJoint defaults;
+    Assign(joint.enableLimit, reader.Boolean("enable_limit", defaults.enableLimit));
+    const std::optional<double> lower = reader.Number("lower_angle", defaults.lowerAngle);
+    const std::optional<double> upper = reader.Number("upper_angle", defaults.upperAngle);
+    if (lower && upper && *lower > *upper)
+    {
+        reader.Fail("upper_angle",
+                    "must be >= lower_angle (" + scene_detail::FormatNumber(*lower) + ")");
+    }
+    Assign(joint.lowerAngle, lower);
+    Assign(joint.upperAngle, upper);
+    Assign(joint.enableMotor, reader.Boolean("enable_motor", defaults.enableMotor));
+    Assign(joint.motorSpeed, reader.Number("motor_speed", defaults.motorSpeed));
+    Assign(joint.maxMotorTorque,
+           ReadNonNegative(reader, "max_motor_torque", defaults.maxMotorTorque));
+}
+
+void ReadDistanceFields(ObjectReader& reader, SceneJoint& joint)
+{
+    const std::optional<SceneVec2> anchorA = reader.Vector("anchor_a", std::nullopt);
+    const std::optional<SceneVec2> anchorB = reader.Vector("anchor_b", std::nullopt);
+    Assign(joint.anchorA, anchorA);
+    Assign(joint.anchorB, anchorB);
+    // Computed in double from the file's numbers, so meff and the Box2D mirror both start
+    // from this one value instead of each measuring in its own precision.
+    std::optional<double> length;
+    if (reader.Find("length") != nullptr)
+    {
+        length = ReadPositive(reader, "length", std::nullopt);
+    }
+    else if (anchorA && anchorB)
+    {
+        length = std::hypot(anchorB->x - anchorA->x, anchorB->y - anchorA->y);
+        if (!(*length > 0))
+        {
+            reader.Fail("length", "is missing and anchor_a and anchor_b coincide; give a "
+                                  "length > 0");
+            length.reset();
+        }
+    }
+    Assign(joint.length, length);
+    // Both limits default to the length: a rigid rod. (Box2D's defaults, 0 and FLT_MAX, would
+    // make a joint without a spring do nothing at all.)
+    const std::optional<double> minLength =
+        ReadNonNegative(reader, "min_length", length ? length : std::optional<double>(0.0));
+    const std::optional<double> maxLength =
+        reader.Number("max_length", length ? length : std::optional<double>(0.0));
+    if (minLength && maxLength && *maxLength < *minLength)
+    {
+        reader.Fail("max_length",
+                    "must be >= min_length (" + scene_detail::FormatNumber(*minLength) + ")");
+    }
+    Assign(joint.minLength, minLength);
+    Assign(joint.maxLength, maxLength);
+    Assign(joint.stiffnessHz, ReadNonNegative(reader, "stiffness_hz", 0.0));
+    Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", 0.0));
+}
+
+/// Looks up body_a or body_b; returns the body index when the name is defined.
+std::optional<std::size_t> ReadBodyReference(ObjectReader& reader, std::string_view key,
+                                             const std::map<std::string, std::size_t>& bodies,
+                                             std::string& name)
+{
+    const std::optional<std::string> reference = reader.String(key, std::nullopt);
+    if (!reference)
+    {
+        return std::nullopt;
+    }
+    name = *reference;
+    const auto found = bodies.find(*reference);
+    if (found == bodies.end())
+    {
+        reader.Fail(key, "no body has this name");
+        return std::nullopt;
+    }
+    return found->second;
+}
+
+void ReadJoint(ObjectReader& reader, const Scene& scene,
+               const std::map<std::string, std::size_t>& bodyIndexByName, SceneJoint& joint)
+{
+    const std::optional<std::size_t> type = ReadChoice(reader, "type", {"revolute", "distance"});
+    Assign(joint.name, ReadName(reader));
+    const std::optional<std::size_t> bodyA =
+        ReadBodyReference(reader, "body_a", bodyIndexByName, joint.bodyA);
+    const std::optional<std::size_t> bodyB =
+        ReadBodyReference(reader, "body_b", bodyIndexByName, joint.bodyB);
+    if (bodyA && bodyB)
+    {
+        joint.bodyIndexA = *bodyA;
+        joint.bodyIndexB = *bodyB;
+        if (*bodyA == *bodyB)
+        {
+            reader.Fail("body_b", "must differ from body_a");
+        }
+        else if (scene.bodies[*bodyA].type != BodyType::Dynamic &&
+                 scene.bodies[*bodyB].type != BodyType::Dynamic)
+        {
+            reader.Fail("body_b", "must be dynamic when body_a is not (a joint between two "
+                                  "bodies that cannot move does nothing)");
+        }
+    }
+    Assign(joint.collideConnected, reader.Boolean("collide_connected", false));
+    if (!type)
+    {
+        return;
+    }
+    joint.type = *type == 0 ? JointType::Revolute : JointType::Distance;
+    if (joint.type == JointType::Revolute)
+    {
+        ReadRevoluteFields(reader, joint);
+    }
+    else
+    {
+        ReadDistanceFields(reader, joint);
+    }
+    reader.Finish();
+}
+
+void ReadTolerances(ObjectReader& reader, SceneTolerances& tolerances)
+{
+    const SceneTolerances defaults;
+    Assign(tolerances.position, ReadNonNegative(reader, "position", defaults.position));
+    Assign(tolerances.angle, ReadNonNegative(reader, "angle", defaults.angle));
+    Assign(tolerances.velocity, ReadNonNegative(reader, "velocity", defaults.velocity));
+    Assign(tolerances.impulse, ReadNonNegative(reader, "impulse", defaults.impulse));
+    Assign(tolerances.impulseRelative,
+           ReadNonNegative(reader, "impulse_relative", defaults.impulseRelative));
+    reader.Finish();
+}
+
+void ReadSettle(ObjectReader& reader, SceneSettleCheck& settle)
+{
+    const SceneSettleCheck defaults;
+    Assign(settle.position, ReadNonNegative(reader, "position", defaults.position));
+    if (reader.Find("angle") != nullptr)
+    {
+        settle.angle = ReadNonNegative(reader, "angle", std::nullopt);
+    }
+    if (reader.Find("min_height") != nullptr)
+    {
+        settle.minimumHeight = reader.Number("min_height", std::nullopt);
+    }
+    reader.Finish();
+}
+
+void ReadValidation(ObjectReader& reader, SceneValidation& validation)
+{
+    Assign(validation.chaotic, reader.Boolean("chaotic", false));
+    Assign(validation.horizonFrames, reader.Integer("horizon_frames", 0, 0, INT_MAX));
+    if (validation.horizonFrames > 0 && !validation.chaotic)
+    {
+        reader.Fail("horizon_frames", "is only meaningful with \"chaotic\": true");
+    }
+    if (validation.chaotic && reader.Find("horizon_frames") == nullptr)
+    {
+        reader.Fail("horizon_frames", "is required with \"chaotic\": true (how many frames "
+                                      "must agree before round-off may part the engines)");
+    }
+}
+
+void ReadCamera(ObjectReader& reader, SceneCamera& camera)
+{
+    const SceneCamera defaults;
+    Assign(camera.center, reader.Vector("center", defaults.center));
+    Assign(camera.height, ReadPositive(reader, "height", defaults.height));
+    reader.Finish();
+}
+
+/// Looks up a joint name in "analytic"; returns its index when it names a joint whose body A
+/// is static (the pivot the exact solutions assume fixed).
+std::optional<std::size_t> ReadAnalyticJoint(ObjectReader& reader, const std::string& key,
+                                             const Json& value, const Scene& scene,
+                                             const std::map<std::string, std::size_t>& joints)
+{
+    if (!value.is_string())
+    {
+        reader.Diag().Report(reader.PathOf(key), "must be a joint name", value);
+        return std::nullopt;
+    }
+    const auto found = joints.find(value.get<std::string>());
+    if (found == joints.end())
+    {
+        reader.Diag().Report(reader.PathOf(key), "no joint has this name", value);
+        return std::nullopt;
+    }
+    const SceneJoint& joint = scene.joints[found->second];
+    if (scene.bodies[joint.bodyIndexA].type != BodyType::Static)
+    {
+        reader.Diag().Report(reader.PathOf(key),
+                             "must name a joint whose body_a is static (the fixed pivot)", value);
+        return std::nullopt;
+    }
+    return found->second;
+}
+
+void ReadAnalytic(ObjectReader& reader, const Scene& scene,
+                  const std::map<std::string, std::size_t>& bodyIndexByName,
+                  const std::map<std::string, std::size_t>& jointIndexByName,
+                  SceneAnalytic& analytic)
+{
+    const std::optional<std::size_t> kind =
+        ReadChoice(reader, "kind", {"pendulum", "cradle", "bounce"});
+    if (!kind)
+    {
+        return; // the other fields depend on the kind
+    }
+    analytic.kind = static_cast<SceneAnalyticKind>(*kind);
+    // Each kind has its own fields; another kind's field is refused rather than ignored.
+    const auto refuse = [&](std::string_view key, const char* kinds)
+    {
+        if (reader.Find(key) != nullptr)
+        {
+            reader.Fail(key, std::string("is only meaningful with \"kind\": ") + kinds);
+        }
+    };
+    if (analytic.kind == SceneAnalyticKind::Pendulum)
+    {
+        refuse("joints", "\"cradle\"");
+        if (const Json* joint = reader.Find("joint"))
+        {
+            if (const std::optional<std::size_t> index =
+                    ReadAnalyticJoint(reader, "joint", *joint, scene, jointIndexByName))
+            {
+                analytic.joints = {*index};
+            }
+        }
+        else
+        {
+            reader.Fail("joint", "is required with \"kind\": \"pendulum\"");
+        }
+    }
+    else
+    {
+        refuse("joint", "\"pendulum\"");
+    }
+    if (analytic.kind == SceneAnalyticKind::Cradle)
+    {
+        if (const Json* joints = reader.Array("joints", true))
+        {
+            if (joints->size() < 2)
+            {
+                reader.Fail("joints", "must name at least two joints");
+            }
+            for (std::size_t i = 0; i < joints->size(); ++i)
+            {
+                if (const std::optional<std::size_t> index = ReadAnalyticJoint(
+                        reader, IndexPath("joints", i), (*joints)[i], scene, jointIndexByName))
+                {
+                    analytic.joints.push_back(*index);
+                }
+            }
+        }
+    }
+    if (analytic.kind == SceneAnalyticKind::Bounce)
+    {
+        std::string name;
+        if (const std::optional<std::size_t> body =
+                ReadBodyReference(reader, "body", bodyIndexByName, name))
+        {
+            analytic.body = *body;
+            if (scene.bodies[*body].type != BodyType::Dynamic)
+            {
+                reader.Fail("body", "must be a dynamic body");
+            }
+        }
+        Assign(analytic.contactHeight, reader.Number("contact_height", std::nullopt));
+    }
+    else
+    {
+        refuse("body", "\"bounce\"");
+        refuse("contact_height", "\"bounce\"");
+    }
+    reader.Finish();
+}
+
+/// Reads an optional nested object with `read` and reports its unknown fields.
+template <typename ReadFunction>
+void ReadSection(ObjectReader& parent, std::string_view key, ReadFunction read)
+{
+    if (const Json* section = parent.Object(key, false))
+    {
+        ObjectReader reader(parent.Diag(), *section, parent.PathOf(key));
+        read(reader);
+    }
+}
+
+/// Every key of an array of objects, with the path of each object, skipping (after reporting)
+/// entries that are not objects.
+template <typename ReadFunction>
+void ReadObjectArray(ObjectReader& parent, std::string_view key, bool required, ReadFunction read)
+{
+    const Json* entries = parent.Array(key, required);
+    if (entries == nullptr)
+    {
+        return;
+    }
+    for (std::size_t i = 0; i < entries->size(); ++i)
+    {
+        const std::string path = IndexPath(parent.PathOf(key), i);
+        const Json& entry = (*entries)[i];
+        if (!entry.is_object())
+        {
+            parent.Diag().Report(path, "must be an object", entry);
+            continue;
+        }
+        ObjectReader reader(parent.Diag(), entry, path);
+        read(reader, i);
+    }
+}
+
+/// Reports names used twice; returns the index of the first holder of each name (names[i] and
+/// paths[i] belong to scene.bodies[i] or scene.joints[i]).
+std::map<std::string, std::size_t> IndexNames(Diagnostics& diagnostics,
+                                              const std::vector<std::string>& names,
+                                              const std::vector<std::string>& paths)
+{
+    std::map<std::string, std::size_t> indexByName;
+    for (std::size_t i = 0; i < names.size(); ++i)
+    {
+        if (names[i].empty())
+        {
+            continue; // no valid name: already reported
+        }
+        const auto [existing, inserted] = indexByName.emplace(names[i], i);
+        if (!inserted)
+        {
+            diagnostics.Report(paths[i] + ".name",
+                               "duplicate name (also used by " + paths[existing->second] + ")",
+                               Json(names[i]));
+        }
+    }
+    return indexByName;
+}
+
+Scene ReadScene(const Json& document, const std::string& sourcePath, Diagnostics& diagnostics)
+{
+    Scene scene;
+    scene.sourcePath = sourcePath;
+    if (!document.is_object())
+    {
+        diagnostics.Report("", "the scene must be a JSON object", document);
+        return scene;
+    }
+    ObjectReader top(diagnostics, document, "");
+
+    // An unknown version may mean anything at all: refuse it before reading further.
+    const Json* version = top.Find("meff_scene");
+    if (version == nullptr)
+    {
+        top.Fail("meff_scene", "required field is missing (the format version: write "
+                               "\"meff_scene\": 1)");
+    }
+    else if (!version->is_number_integer() || version->get<long long>() != kSceneFormatVersion)
+    {
+        top.Fail("meff_scene", "must be 1 (the only version of the format)");
+        return scene;
+    }
+
+    scene.name = std::filesystem::path(sourcePath).stem().string();
+    if (const std::optional<std::string> name = top.String("name", scene.name))
+    {
+        if (name->empty())
+        {
+            top.Fail("name", "must not be empty");
+        }
+        else
+        {
+            scene.name = *name;
+        }
+    }
+    Assign(scene.description, top.String("description", std::string()));
+    ReadSection(top, "world", [&](ObjectReader& reader) { ReadWorld(reader, scene.world); });
+
+    std::vector<std::string> bodyNames;
+    std::vector<std::string> bodyPaths;
+    ReadObjectArray(top, "bodies", true,
+                    [&](ObjectReader& reader, std::size_t)
+                    {
+                        SceneBody& body = scene.bodies.emplace_back();
+                        ReadBody(reader, body);
+                        bodyNames.push_back(body.name);
+                        bodyPaths.push_back(reader.Path());
+                    });
+    const std::map<std::string, std::size_t> bodyIndexByName =
+        IndexNames(diagnostics, bodyNames, bodyPaths);
+
+    std::vector<std::string> jointNames;
+    std::vector<std::string> jointPaths;
+    ReadObjectArray(top, "joints", false,
+                    [&](ObjectReader& reader, std::size_t)
+                    {
+                        SceneJoint& joint = scene.joints.emplace_back();
+                        ReadJoint(reader, scene, bodyIndexByName, joint);
+                        jointNames.push_back(joint.name);
+                        jointPaths.push_back(reader.Path());
+                    });
+    const std::map<std::string, std::size_t> jointIndexByName =
+        IndexNames(diagnostics, jointNames, jointPaths);
+
+    ReadSection(top, "validate",
+                [&](ObjectReader& validate)
+                {
+                    ReadSection(validate, "tolerances",
+                                [&](ObjectReader& reader)
+                                { ReadTolerances(reader, scene.tolerances); });
+                    ReadValidation(validate, scene.validation);
+                    ReadSection(validate, "settle",
+                                [&](ObjectReader& reader)
+                                { ReadSettle(reader, scene.validation.settle.emplace()); });
+                    validate.Finish();
+                });
+    ReadSection(top, "render",
+                [&](ObjectReader& render)
+                {
+                    ReadSection(render, "camera",
+                                [&](ObjectReader& reader)
+                                { ReadCamera(reader, scene.camera.emplace()); });
+                    render.Finish();
+                });
+    ReadSection(top, "analytic",
+                [&](ObjectReader& reader) {
+                    ReadAnalytic(reader, scene, bodyIndexByName, jointIndexByName,
+                                 scene.analytic.emplace());
+                });
+    top.Finish();
+    return scene;
+}
+
+} // namespace
+
+SceneError::SceneError(std::vector<std::string> messages)
+    : Error(
+          [&]
+          {
+              std::string joined;
+              for (const std::string& message : messages)
+              {
+                  joined += joined.empty() ? message : "\n" + message;
+              }
+              return joined;
+          }()),
+      m_messages(std::move(messages))
+{
+}
+
+std::optional<std::size_t> Scene::FindBody(std::string_view bodyName) const
+{
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+        if (bodies[i].name == bodyName)
+        {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<std::size_t> Scene::FindJoint(std::string_view jointName) const
+{
+    for (std::size_t i = 0; i < joints.size(); ++i)
+    {
+        if (joints[i].name == jointName)
+        {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+Scene ParseScene(std::string_view text, const std::string& sourcePath)
+{
+    Diagnostics diagnostics(sourcePath);
+    const std::optional<Json> document = scene_detail::ParseDocument(text, diagnostics);
+    if (!document)
+    {
+        diagnostics.Throw();
+    }
+    Scene scene = ReadScene(*document, sourcePath, diagnostics);
+    if (diagnostics.HasErrors())
+    {
+        diagnostics.Throw();
+    }
+    return scene;
+}
+
+Scene LoadScene(const std::string& path)
+{
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+    {
+        throw SceneError({path + ": is a directory, not a scene file"});
+    }
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr)
+    {
+        throw SceneError({path + ": cannot open: " + std::strerror(errno)});
+    }
+    std::string text;
+    char buffer[1 << 16];
+    std::size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0)
+    {
+        text.append(buffer, count);
+    }
+    const bool failed = std::ferror(file) != 0;
+    std::fclose(file);
+    if (failed)
+    {
+        throw SceneError({path + ": cannot read: " + std::strerror(errno)});
+    }
+    return ParseScene(text, path);
+}
+
+} // namespace meff

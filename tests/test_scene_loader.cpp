@@ -1,0 +1,337 @@
+// The scene loader: every bundled sample loads and builds; every class of bad input is refused
+// with exactly the message a user should see.
+#include "meff/scene.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace meff;
+
+namespace
+{
+
+/// The messages ParseScene throws for `text`, or an empty list when it loads.
+std::vector<std::string> ErrorsOf(const std::string& text)
+{
+    try
+    {
+        ParseScene(text, "x.json");
+    }
+    catch (const SceneError& error)
+    {
+        return error.messages();
+    }
+    return {};
+}
+
+/// A valid scene with one dynamic body whose single shape is `shape` (JSON text).
+std::string SceneWithShape(const std::string& shape)
+{
+    return R"({ "meff_scene": 1, "bodies": [ { "name": "b", "type": "dynamic", "shapes": [ )" +
+           shape + R"( ] } ] })";
+}
+
+using Messages = std::vector<std::string>;
+
+} // namespace
+
+TEST_CASE("Every bundled sample loads, describes itself and builds", "[scene]")
+{
+    const std::filesystem::path directory =
+        std::filesystem::path(MEFF_SOURCE_DIR) / "samples" / "scenes";
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(directory))
+    {
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        ++count;
+        const std::string path = entry.path().string();
+        INFO(path);
+        Scene scene;
+        REQUIRE_NOTHROW(scene = LoadScene(path));
+        CHECK(scene.name == entry.path().stem().string());
+        CHECK(scene.description.size() > 50);
+        CHECK(scene.world.dt == Approx(1.0 / 60.0));
+        CHECK(scene.world.frames > 0);
+        CHECK_FALSE(scene.bodies.empty());
+        const BuiltScene built = BuildWorld(scene);
+        CHECK(built.bodies.size() == scene.bodies.size());
+        CHECK(built.joints.size() == scene.joints.size());
+        CHECK(built.world.GetBodies().size() == scene.bodies.size());
+    }
+    // The issue lists 15 scenes; more may come, none may go.
+    CHECK(count >= 15);
+}
+
+TEST_CASE("A minimal scene gets every default", "[scene]")
+{
+    const Scene scene = ParseScene(R"({
+        "meff_scene": 1,
+        "bodies": [
+            { "name": "ground", "type": "static" },
+            { "name": "bob", "type": "dynamic", "position": [3, 4],
+              "shapes": [ { "type": "circle", "radius": 0.5 } ] } ],
+        "joints": [ { "type": "distance", "name": "rod", "body_a": "ground", "body_b": "bob",
+                      "anchor_a": [0, 0], "anchor_b": [3, 4] } ] })",
+                                   "dir/minimal.json");
+    CHECK(scene.name == "minimal");
+    CHECK(scene.description.empty());
+    CHECK(scene.world.gravity.x == 0);
+    CHECK(scene.world.gravity.y == -10);
+    CHECK(scene.world.dt == 1.0 / 60.0);
+    CHECK(scene.world.frames == 240);
+    CHECK(scene.world.velocityIterations == 8);
+    CHECK(scene.world.positionIterations == 3);
+    CHECK(scene.world.warmStarting);
+    CHECK(scene.world.blockSolver);
+    CHECK_FALSE(scene.world.allowSleep);
+    CHECK_FALSE(scene.world.continuous);
+    CHECK_FALSE(scene.camera.has_value());
+
+    const SceneShape& shape = scene.bodies[1].shapes[0];
+    CHECK(shape.density == 1);
+    CHECK(shape.friction == 0.6);
+    CHECK(shape.restitution == 0);
+    CHECK(shape.restitutionThreshold == 1);
+    CHECK(shape.filter.category == 1);
+    CHECK(shape.filter.mask == 0xFFFF);
+    CHECK(shape.filter.group == 0);
+
+    // A distance joint given only its anchors is a rigid rod of the anchors' distance.
+    const SceneJoint& rod = scene.joints[0];
+    CHECK(rod.bodyIndexA == 0);
+    CHECK(rod.bodyIndexB == 1);
+    CHECK(rod.length == 5);
+    CHECK(rod.minLength == 5);
+    CHECK(rod.maxLength == 5);
+    CHECK(rod.stiffnessHz == 0);
+}
+
+TEST_CASE("BuildWorld places bodies, shapes and world-point joint anchors", "[scene]")
+{
+    const Scene scene = ParseScene(R"({
+        "meff_scene": 1, "world": { "gravity": [0, -9.8], "velocity_iterations": 5 },
+        "bodies": [
+            { "name": "ground", "type": "static" },
+            { "name": "rod", "type": "dynamic", "position": [1, 5], "angle": 0.25,
+              "shapes": [ { "type": "box", "half_width": 1, "half_height": 0.05 },
+                          { "type": "polygon", "vertices": [[0, 0], [1, 0], [0, 1]] } ] } ],
+        "joints": [ { "type": "revolute", "name": "pin", "body_a": "ground",
+                      "body_b": "rod", "anchor": [0, 5] } ] })",
+                                   "build.json");
+    BuiltScene built = BuildWorld(scene);
+    const BodyId rod = built.bodyByName.at("rod");
+    CHECK(built.bodies[1] == rod);
+    CHECK(built.SceneIndexOf(rod) == std::optional<std::size_t>(1));
+    CHECK(built.world.GetPosition(rod).x == 1);
+    CHECK(built.world.GetPosition(rod).y == 5);
+    CHECK(built.world.GetAngle(rod) == Approx(0.25));
+    CHECK(built.world.GetGravity().y == Approx(-9.8));
+    CHECK(built.world.GetSolverSettings().velocityIterations == 5);
+    CHECK(built.shapes[1].size() == 2);
+    const JointId pin = built.jointByName.at("pin");
+    CHECK(built.world.GetAnchorB(pin).x == Approx(0).margin(1e-6));
+    CHECK(built.world.GetAnchorB(pin).y == Approx(5));
+}
+
+TEST_CASE("Scene errors: JSON syntax, with line and column", "[scene][errors]")
+{
+    CHECK(ErrorsOf("{ \"meff_scene\": 1,\n  \"bodies\": [ } ") ==
+          Messages{"x.json: line 2, column 15: syntax error while parsing value - unexpected "
+                   "'}'; expected '[', '{', or a literal"});
+    CHECK(ErrorsOf("") == Messages{"x.json: line 1, column 1: syntax error while parsing value - "
+                                   "unexpected end of input; expected '[', '{', or a literal"});
+}
+
+TEST_CASE("Scene errors: missing fields", "[scene][errors]")
+{
+    CHECK(ErrorsOf(R"({ "bodies": [ { "type": "dynamic", "shapes": [ { "type": "circle", "radius": 1 } ] } ] })") ==
+          Messages{"x.json: meff_scene: required field is missing (the format version: write "
+                   "\"meff_scene\": 1)",
+                   "x.json: bodies[0].name: required field is missing"});
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "box", "half_width": 1 })")) ==
+          Messages{"x.json: bodies[0].shapes[0].half_height: required field is missing"});
+}
+
+TEST_CASE("Scene errors: mistyped fields", "[scene][errors]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 1, "world": { "dt": "0.01", "warm_starting": 1,
+                        "gravity": [0], "frames": 2.5 }, "bodies": {} })") ==
+          Messages{"x.json: world.gravity: must be [x, y] with two finite numbers, got [0]",
+                   "x.json: world.dt: must be a number, got \"0.01\"",
+                   "x.json: world.frames: must be an integer in [0, 2147483647], got 2.5",
+                   "x.json: world.warm_starting: must be true or false, got 1",
+                   "x.json: bodies: must be an array, got {}"});
+    CHECK(ErrorsOf(R"({ "meff_scene": 1, "bodies": [ { "name": "b", "type": "Dynamic" } ] })") ==
+          Messages{"x.json: bodies[0].type: must be one of \"static\", \"kinematic\", "
+                   "\"dynamic\", got \"Dynamic\""});
+}
+
+TEST_CASE("Scene errors: unknown fields", "[scene][errors]")
+{
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": 1, "frition": 0.2 })")) ==
+          Messages{"x.json: bodies[0].shapes[0].frition: unknown field (known fields here: type, "
+                   "radius, center, density, friction, restitution, restitution_threshold, "
+                   "filter, sensor)"});
+}
+
+TEST_CASE("Scene errors: a key given twice in one object", "[scene][errors]")
+{
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": 1, "radius": 2 })")) ==
+          Messages{"x.json: bodies[0].shapes[0].radius: duplicate key: each field may appear "
+                   "only once"});
+}
+
+TEST_CASE("Scene errors: names not unique, not defined or malformed", "[scene][errors]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 1,
+        "bodies": [ { "name": "box", "type": "static" }, { "name": "box", "type": "dynamic", "shapes": [ { "type": "circle", "radius": 1 } ] },
+                    { "name": "my box", "type": "dynamic",
+                      "shapes": [ { "type": "circle", "radius": 1 } ] } ],
+        "joints": [ { "type": "revolute", "name": "pin", "body_a": "grund", "body_b": "box",
+                      "anchor": [0, 0] },
+                    { "type": "revolute", "name": "pin", "body_a": "box", "body_b": "box",
+                      "anchor": [0, 0] } ] })") ==
+          Messages{"x.json: bodies[2].name: must be 1 to 64 letters, digits, '_', '-' or '.', got "
+                   "\"my box\"",
+                   "x.json: bodies[1].name: duplicate name (also used by bodies[0]), got \"box\"",
+                   "x.json: joints[0].body_a: no body has this name, got \"grund\"",
+                   "x.json: joints[1].body_b: must differ from body_a, got \"box\"",
+                   "x.json: joints[1].name: duplicate name (also used by joints[0]), got \"pin\""});
+}
+
+TEST_CASE("Scene errors: non-positive radius and sizes", "[scene][errors]")
+{
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": -1 })")) ==
+          Messages{"x.json: bodies[0].shapes[0].radius: must be > 0, got -1"});
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "box", "half_width": 0, "half_height": -0.5 })")) ==
+          Messages{"x.json: bodies[0].shapes[0].half_width: must be > 0, got 0",
+                   "x.json: bodies[0].shapes[0].half_height: must be > 0, got -0.5"});
+}
+
+TEST_CASE("Scene errors: degenerate polygons and segments", "[scene][errors]")
+{
+    CHECK(ErrorsOf(
+              SceneWithShape(R"({ "type": "polygon", "vertices": [[0, 0], [1, 0], [2, 0]] })")) ==
+          Messages{"x.json: bodies[0].shapes[0].vertices: must enclose a non-zero area (the "
+                   "points are collinear or coincide), got [[0, 0], [1, 0], [2, 0]]"});
+    CHECK(
+        ErrorsOf(SceneWithShape(
+            R"({ "type": "polygon", "vertices": [[0, 0], [1, 0], [1, 1], [0, 1], [0.5, 0.5]] })")) ==
+        Messages{"x.json: bodies[0].shapes[0].vertices: must be the corners of a convex polygon "
+                 "(a point lies inside the hull, or two points are closer than 0.0025 m), got "
+                 "[[0, 0], [1, 0], [1, 1], [0, 1], [0.5, 0.5]]"});
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "polygon", "vertices": [[0, 0], [1, 0]] })")) ==
+          Messages{"x.json: bodies[0].shapes[0].vertices: must list 3 to 8 points, got [[0, 0], "
+                   "[1, 0]]"});
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "segment", "points": [[0, 0], [1, 0]] })")) ==
+          Messages{"x.json: bodies[0].shapes[0].type: must not be \"segment\" on a dynamic body "
+                   "(segments have no mass; use them for static or kinematic bodies), got "
+                   "\"segment\""});
+}
+
+TEST_CASE("Scene errors: numbers that are not finite", "[scene][errors]")
+{
+    // JSON has no NaN or infinity; 1e400 overflows a double while parsing, and 1e39 a float.
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": 1e400 })")) ==
+          Messages{"x.json: bodies[0].shapes[0].radius: must be a finite number, got 1e400"});
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": "NaN" })")) ==
+          Messages{"x.json: bodies[0].shapes[0].radius: must be a finite number, got \"NaN\""});
+    CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": 1, "center": [0, "-inf"] })")) ==
+          Messages{"x.json: bodies[0].shapes[0].center: must be [x, y] with two finite numbers, "
+                   "got [0, \"-inf\"]"});
+    if (sizeof(Real) == sizeof(float))
+    {
+        CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": 1e39 })")) ==
+              Messages{"x.json: bodies[0].shapes[0].radius: must be a finite number (at most "
+                       "3.40282347e+38 in magnitude), got 1e+39"});
+    }
+}
+
+TEST_CASE("Scene errors: values out of range, all reported together", "[scene][errors]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 1,
+        "world": { "dt": 0, "frames": -1, "velocity_iterations": 0, "position_iterations": 1001 },
+        "bodies": [ { "name": "b", "type": "dynamic", "linear_damping": -1, "shapes": [
+            { "type": "circle", "radius": 1, "density": -2, "friction": -0.1,
+              "restitution": 1.5, "restitution_threshold": -1,
+              "filter": { "category": 70000, "mask": -1, "group": 40000 } } ] } ] })") ==
+          Messages{
+              "x.json: world.dt: must be > 0, got 0",
+              "x.json: world.frames: must be an integer in [0, 2147483647], got -1",
+              "x.json: world.velocity_iterations: must be an integer in [1, 1000], got 0",
+              "x.json: world.position_iterations: must be an integer in [0, 1000], got 1001",
+              "x.json: bodies[0].linear_damping: must be >= 0, got -1",
+              "x.json: bodies[0].shapes[0].density: must be >= 0, got -2",
+              "x.json: bodies[0].shapes[0].friction: must be >= 0, got -0.1",
+              "x.json: bodies[0].shapes[0].restitution: must be in [0, 1], got 1.5",
+              "x.json: bodies[0].shapes[0].restitution_threshold: must be >= 0, got -1",
+              "x.json: bodies[0].shapes[0].filter.category: must be an integer in [0, 65535], "
+              "got 70000",
+              "x.json: bodies[0].shapes[0].filter.mask: must be an integer in [0, 65535], got -1",
+              "x.json: bodies[0].shapes[0].filter.group: must be an integer in [-32768, 32767], "
+              "got 40000"});
+}
+
+TEST_CASE("Scene errors: joint values out of range", "[scene][errors]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 1,
+        "bodies": [ { "name": "a", "type": "static" }, { "name": "b", "type": "dynamic",
+                      "shapes": [ { "type": "circle", "radius": 1 } ] },
+                    { "name": "c", "type": "kinematic" } ],
+        "joints": [
+            { "type": "revolute", "name": "j0", "body_a": "a", "body_b": "b", "anchor": [0, 0],
+              "lower_angle": 1, "upper_angle": 0, "max_motor_torque": -1 },
+            { "type": "distance", "name": "j1", "body_a": "a", "body_b": "b",
+              "anchor_a": [0, 0], "anchor_b": [0, 0] },
+            { "type": "distance", "name": "j2", "body_a": "a", "body_b": "b", "anchor_a": [0, 0],
+              "anchor_b": [0, 1], "min_length": 0.7, "max_length": 0.5 },
+            { "type": "revolute", "name": "j3", "body_a": "a", "body_b": "c", "anchor": [0, 0] },
+            { "type": "weld", "name": "j4", "body_a": "a", "body_b": "b" } ] })") ==
+          Messages{"x.json: joints[0].upper_angle: must be >= lower_angle (1), got 0",
+                   "x.json: joints[0].max_motor_torque: must be >= 0, got -1",
+                   "x.json: joints[1].length: is missing and anchor_a and anchor_b coincide; "
+                   "give a length > 0",
+                   "x.json: joints[2].max_length: must be >= min_length (0.7), got 0.5",
+                   "x.json: joints[3].body_b: must be dynamic when body_a is not (a joint "
+                   "between two bodies that cannot move does nothing), got \"c\"",
+                   "x.json: joints[4].type: must be one of \"revolute\", \"distance\", got "
+                   "\"weld\""});
+}
+
+TEST_CASE("Scene errors: static bodies do not move", "[scene][errors]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 1, "bodies": [ { "name": "g", "type": "static",
+                        "linear_velocity": [1, 0], "angular_velocity": 2 } ] })") ==
+          Messages{"x.json: bodies[0].linear_velocity: must be [0, 0] for a static body, got "
+                   "[1, 0]",
+                   "x.json: bodies[0].angular_velocity: must be 0 for a static body, got 2"});
+}
+
+TEST_CASE("Scene errors: an unknown format version stops everything else", "[scene][errors]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 2, "bodies": "anything" })") ==
+          Messages{"x.json: meff_scene: must be 1 (the only version of the format), got 2"});
+    CHECK(ErrorsOf("[1, 2]") == Messages{"x.json: the scene must be a JSON object, got [1, 2]"});
+}
+
+TEST_CASE("Scene errors: files that cannot be read", "[scene][errors]")
+{
+    try
+    {
+        LoadScene("/nonexistent/scene.json");
+        FAIL("no error");
+    }
+    catch (const SceneError& error)
+    {
+        CHECK(error.messages() ==
+              Messages{"/nonexistent/scene.json: cannot open: No such file or directory"});
+        CHECK(std::string(error.what()) == error.messages()[0]);
+    }
+}
