@@ -1,0 +1,458 @@
+// `meff validate`: runs scenes in meff and in Box2D 2.4.1 side by side and compares them frame
+// by frame (see validation/include/meff/validation.h for what is compared and how).
+#include "commands.h"
+#include "output_file.h"
+#include "plot_program.h"
+
+#include "meff/validation.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+#include <unistd.h>
+
+#ifndef MEFF_PLOT_SCRIPT
+#define MEFF_PLOT_SCRIPT ""
+#endif
+
+namespace meff::cli
+{
+
+namespace
+{
+
+using validation::FrameErrors;
+using validation::RunMaximum;
+using validation::ValidationResult;
+
+struct ValidateOptions
+{
+    std::vector<std::string> scenePaths;
+    std::optional<int> frames;
+    std::string reportDir;
+    std::string blockSolver = "scene";
+    bool noPlot = false;
+    std::optional<int> meffVelocityIterations; // hidden: proves the comparison can fail
+};
+
+std::string Number(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+std::string FormatMaximum(const char* label, const char* unit, const RunMaximum& maximum)
+{
+    std::string text = std::string(label) + " " + Number(maximum.value) + " " + unit;
+    if (maximum.frame >= 0)
+    {
+        text += " @" + std::to_string(maximum.frame) + " (" + maximum.where + ")";
+    }
+    return text;
+}
+
+void PrintLine(const ValidationResult& result)
+{
+    std::string line = std::string(result.passed ? "PASS " : "FAIL ") + result.scene + ": " +
+                       std::to_string(result.frames) + " frames, block solver " +
+                       (result.blockSolver ? "on" : "off");
+    if (result.meffVelocityIterations != result.box2dVelocityIterations)
+    {
+        line += ", velocity iterations meff " + std::to_string(result.meffVelocityIterations) +
+                " / Box2D " + std::to_string(result.box2dVelocityIterations);
+    }
+    line += "; max " + FormatMaximum("position", "m", result.position) + ", " +
+            FormatMaximum("angle", "rad", result.angle) + ", " +
+            FormatMaximum("velocity", "m/s", result.velocity) + ", " +
+            FormatMaximum("contact impulse", "N·s", result.contactImpulse) + ", " +
+            FormatMaximum("joint impulse", "N·s", result.jointImpulse);
+    line += "; contact points only in meff " + std::to_string(result.onlyInMeff) +
+            ", only in Box2D " + std::to_string(result.onlyInBox2D);
+    if (result.divergenceFrame)
+    {
+        std::string what;
+        for (const std::string& quantity : result.divergenceQuantities)
+        {
+            what += (what.empty() ? "" : ", ") + quantity;
+        }
+        line +=
+            "; diverged at frame " + std::to_string(*result.divergenceFrame) + " (" + what + ")";
+    }
+    else
+    {
+        line += "; no divergence";
+    }
+    if (result.chaotic)
+    {
+        line += "; chaotic, horizon " + std::to_string(result.horizonFrames) + " frames";
+    }
+    if (result.settle)
+    {
+        line += result.settle->passed
+                    ? "; settled within " + Number(result.settle->position) + " m of Box2D"
+                    : "; NOT settled";
+    }
+    std::printf("%s\n", line.c_str());
+    if (result.settle)
+    {
+        for (const std::string& failure : result.settle->failures)
+        {
+            std::printf("  %s\n", failure.c_str());
+        }
+    }
+    if (!result.failure.empty())
+    {
+        std::printf("  %s\n", result.failure.c_str());
+    }
+    for (const std::string& note : result.notes)
+    {
+        std::printf("  note: %s\n", note.c_str());
+    }
+}
+
+nlohmann::json MaximumJson(const RunMaximum& maximum)
+{
+    return {{"value", maximum.value},
+            {"frame", maximum.frame >= 0 ? nlohmann::json(maximum.frame) : nlohmann::json()},
+            {"where", maximum.where}};
+}
+
+nlohmann::json SummaryJson(const ValidationResult& result)
+{
+    nlohmann::json summary;
+    summary["scene"] = result.scene;
+    summary["source"] = result.sourcePath;
+    summary["frames"] = result.frames;
+    summary["passed"] = result.passed;
+    summary["divergence_frame"] =
+        result.divergenceFrame ? nlohmann::json(*result.divergenceFrame) : nlohmann::json();
+    summary["divergence_quantities"] = result.divergenceQuantities;
+    summary["max_position_error"] = result.position.value;
+    summary["max_angle_error"] = result.angle.value;
+    summary["max_velocity_error"] = result.velocity.value;
+    summary["max_contact_impulse_error"] = result.contactImpulse.value;
+    summary["max_joint_impulse_error"] = result.jointImpulse.value;
+    summary["maxima"] = {{"position", MaximumJson(result.position)},
+                         {"angle", MaximumJson(result.angle)},
+                         {"velocity", MaximumJson(result.velocity)},
+                         {"contact_impulse", MaximumJson(result.contactImpulse)},
+                         {"joint_impulse", MaximumJson(result.jointImpulse)}};
+    summary["tolerances"] = {{"position", result.tolerances.position},
+                             {"angle", result.tolerances.angle},
+                             {"velocity", result.tolerances.velocity},
+                             {"impulse", result.tolerances.impulse},
+                             {"impulse_relative", result.tolerances.impulseRelative}};
+    summary["contact_points_only_in_meff"] = result.onlyInMeff;
+    summary["contact_points_only_in_box2d"] = result.onlyInBox2D;
+    summary["block_solver"] = result.blockSolver;
+    summary["velocity_iterations"] = {{"meff", result.meffVelocityIterations},
+                                      {"box2d", result.box2dVelocityIterations}};
+    summary["chaotic"] = result.chaotic;
+    if (result.chaotic)
+    {
+        summary["horizon_frames"] = result.horizonFrames;
+    }
+    if (result.settle)
+    {
+        const validation::SettleResult& settle = *result.settle;
+        summary["settle"] = {{"passed", settle.passed},
+                             {"max_position_error", settle.position},
+                             {"max_position_body", settle.positionBody},
+                             {"max_angle_error", settle.angle},
+                             {"max_angle_body", settle.angleBody},
+                             {"lowest_height", settle.lowestHeight
+                                                   ? nlohmann::json(*settle.lowestHeight)
+                                                   : nlohmann::json()},
+                             {"lowest_body", settle.lowestBody},
+                             {"failures", settle.failures}};
+    }
+    summary["notes"] = result.notes;
+    summary["failure"] = result.failure.empty() ? nlohmann::json() : nlohmann::json(result.failure);
+    return summary;
+}
+
+void WriteCsvNumber(std::FILE* out, double value)
+{
+    std::fprintf(out, ",%.9g", value);
+}
+
+void WriteDivergenceCsv(const Scene& scene, const ValidationResult& result, std::FILE* out)
+{
+    std::fputs("frame,position_error,position_body,angle_error,angle_body,"
+               "linear_velocity_error,angular_velocity_error,velocity_error,velocity_body,"
+               "contact_impulse_error,contact_impulse_ratio,contact,contact_points_meff,"
+               "contact_points_box2d,only_in_meff,only_in_box2d,joint_impulse_error,"
+               "joint_impulse_ratio,joint,exceeded\n",
+               out);
+    for (const FrameErrors& frame : result.perFrame)
+    {
+        std::fprintf(out, "%d", frame.frame);
+        WriteCsvNumber(out, frame.position);
+        std::fprintf(out, ",%s", validation::DescribeBody(scene, frame.positionBody).c_str());
+        WriteCsvNumber(out, frame.angle);
+        std::fprintf(out, ",%s", validation::DescribeBody(scene, frame.angleBody).c_str());
+        WriteCsvNumber(out, frame.linearVelocity);
+        WriteCsvNumber(out, frame.angularVelocity);
+        WriteCsvNumber(out, frame.velocity);
+        std::fprintf(out, ",%s", validation::DescribeBody(scene, frame.velocityBody).c_str());
+        WriteCsvNumber(out, frame.contactImpulse);
+        WriteCsvNumber(out, frame.contactRatio);
+        std::fprintf(out, ",%s",
+                     frame.contact ? validation::DescribeContact(scene, *frame.contact).c_str()
+                                   : "-");
+        std::fprintf(out, ",%d,%d,%d,%d", frame.contactPointsMeff, frame.contactPointsBox2D,
+                     frame.onlyInMeff, frame.onlyInBox2D);
+        WriteCsvNumber(out, frame.jointImpulse);
+        WriteCsvNumber(out, frame.jointRatio);
+        std::fprintf(out, ",%s", validation::DescribeJoint(scene, frame.joint).c_str());
+        std::string exceeded;
+        for (const std::string& quantity : frame.exceeded)
+        {
+            exceeded += (exceeded.empty() ? "" : ";") + quantity;
+        }
+        std::fprintf(out, ",%s\n", exceeded.c_str());
+    }
+}
+
+/// Scene names as directory names: plain characters only, unique among this run's scenes.
+std::string DirectoryName(const std::string& sceneName, std::set<std::string>& used)
+{
+    std::string name;
+    for (const char c : sceneName)
+    {
+        const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                           (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+        name += plain ? c : '_';
+    }
+    if (name.empty() || name == "." || name == "..")
+    {
+        name = "scene";
+    }
+    std::string unique = name;
+    for (int n = 2; !used.insert(unique).second; ++n)
+    {
+        unique = name + "-" + std::to_string(n);
+    }
+    return unique;
+}
+
+class Reporter
+{
+  public:
+    Reporter(std::string directory, bool plot) : m_directory(std::move(directory)), m_plot(plot) {}
+
+    /// Writes summary.json, divergence.csv and errors.png; throws std::runtime_error when a
+    /// file cannot be written. A plot that cannot be drawn is said, not fatal.
+    void Write(const Scene& scene, const ValidationResult& result)
+    {
+        const std::filesystem::path directory =
+            std::filesystem::path(m_directory) / DirectoryName(result.scene, m_used);
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
+        if (error)
+        {
+            throw std::runtime_error("cannot create " + directory.string() + ": " +
+                                     error.message());
+        }
+        OutputFile summary((directory / "summary.json").string());
+        const std::string text = SummaryJson(result).dump(2) + "\n";
+        std::fputs(text.c_str(), summary.Stream());
+        OutputFile csv((directory / "divergence.csv").string());
+        WriteDivergenceCsv(scene, result, csv.Stream());
+        summary.Commit();
+        csv.Commit();
+        // A plot left from an earlier run would no longer match divergence.csv.
+        if (!m_plot || !Plot(result, directory, csv.Path()))
+        {
+            std::filesystem::remove(directory / "errors.png", error);
+        }
+    }
+
+  private:
+    /// Draws errors.png; false when it could not be drawn.
+    bool Plot(const ValidationResult& result, const std::filesystem::path& directory,
+              const std::string& csvPath)
+    {
+        if (!m_python)
+        {
+            m_python = FindPlottingPython();
+            if (m_python->empty())
+            {
+                std::fprintf(stderr, "meff validate: no plots: no python3 with matplotlib found "
+                                     "(install python3-matplotlib, or set MEFF_PYTHON); "
+                                     "summary.json and divergence.csv are written\n");
+            }
+        }
+        const std::string script = MEFF_PLOT_SCRIPT;
+        if (m_python->empty() || script.empty())
+        {
+            return false;
+        }
+        const std::filesystem::path png = directory / "errors.png";
+        const std::filesystem::path temporary =
+            directory / (".errors.png." + std::to_string(getpid()));
+        const validation::Tolerances& tol = result.tolerances;
+        std::vector<std::string> arguments = {*m_python,
+                                              script,
+                                              csvPath,
+                                              temporary.string(),
+                                              "--title",
+                                              result.scene + " (block solver " +
+                                                  (result.blockSolver ? "on" : "off") + ")",
+                                              "--tolerances",
+                                              Number(tol.position),
+                                              Number(tol.angle),
+                                              Number(tol.velocity),
+                                              Number(tol.impulse)};
+        if (result.divergenceFrame)
+        {
+            arguments.push_back("--divergence");
+            arguments.push_back(std::to_string(*result.divergenceFrame));
+        }
+        if (result.chaotic)
+        {
+            arguments.push_back("--horizon");
+            arguments.push_back(std::to_string(result.horizonFrames));
+        }
+        std::error_code error;
+        if (RunProgram(arguments, false) != 0)
+        {
+            std::filesystem::remove(temporary, error);
+            std::fprintf(stderr, "meff validate: %s: the plot could not be drawn (%s)\n",
+                         result.scene.c_str(), script.c_str());
+            return false;
+        }
+        std::filesystem::rename(temporary, png, error);
+        if (error)
+        {
+            std::filesystem::remove(temporary, error);
+            throw std::runtime_error("cannot write " + png.string() + ": " + error.message());
+        }
+        return true;
+    }
+
+    std::string m_directory;
+    bool m_plot;
+    std::set<std::string> m_used;
+    std::optional<std::string> m_python;
+};
+
+int Validate(const ValidateOptions& options)
+{
+    // Every scene is loaded before anything runs: bad input runs nothing.
+    std::vector<Scene> scenes;
+    bool bad = false;
+    for (const std::string& path : options.scenePaths)
+    {
+        std::optional<Scene> scene = LoadSceneOrReport(path);
+        if (scene)
+        {
+            scenes.push_back(std::move(*scene));
+        }
+        else
+        {
+            bad = true;
+        }
+    }
+    if (bad)
+    {
+        return kExitBadInput;
+    }
+
+    validation::RunOptions run;
+    run.frames = options.frames;
+    run.meffVelocityIterations = options.meffVelocityIterations;
+    if (options.blockSolver != "scene")
+    {
+        run.blockSolver = options.blockSolver == "on";
+    }
+
+    std::optional<Reporter> reporter;
+    if (!options.reportDir.empty())
+    {
+        reporter.emplace(options.reportDir, !options.noPlot);
+    }
+    bool allPassed = true;
+    bool writeFailed = false;
+    for (const Scene& scene : scenes)
+    {
+        ValidationResult result;
+        try
+        {
+            result = validation::Validate(scene, run);
+        }
+        catch (const SceneError& error)
+        {
+            for (const std::string& message : error.messages())
+            {
+                std::fprintf(stderr, "%s\n", message.c_str());
+            }
+            return kExitBadInput;
+        }
+        PrintLine(result);
+        allPassed = allPassed && result.passed;
+        if (reporter)
+        {
+            try
+            {
+                reporter->Write(scene, result);
+            }
+            catch (const std::runtime_error& error)
+            {
+                std::fprintf(stderr, "meff validate: %s\n", error.what());
+                writeFailed = true;
+            }
+        }
+    }
+    if (reporter && !writeFailed)
+    {
+        std::printf("reports in %s/\n", options.reportDir.c_str());
+    }
+    return allPassed && !writeFailed ? kExitOk : kExitRunFailed;
+}
+
+} // namespace
+
+Command AddValidateCommand(CLI::App& parent)
+{
+    auto options = std::make_shared<ValidateOptions>();
+    CLI::App* app = parent.add_subcommand(
+        "validate",
+        "Run scenes in meff and in Box2D 2.4.1 side by side and compare them frame by frame: "
+        "positions, angles, velocities, contact and joint impulses.\n"
+        "Prints one line per scene, PASS or FAIL, with each maximum error and where it "
+        "happened. Exit status 0 when every scene passes, 1 when any fails, 2 for bad input.");
+    app->add_option("scenes", options->scenePaths, "Scene files (JSON)")
+        ->required()
+        ->type_name("SCENE.json...");
+    app->add_option("--frames", options->frames,
+                    "Number of steps to compare (default: each scene's world.frames)")
+        ->type_name("N")
+        ->check(CLI::NonNegativeNumber);
+    app->add_option("--report", options->reportDir,
+                    "Write DIR/<scene>/summary.json, divergence.csv (one row per frame) and "
+                    "errors.png (a plot of the errors, if python3 with matplotlib is present)")
+        ->type_name("DIR");
+    app->add_option("--block-solver", options->blockSolver,
+                    "Contact block solver in both engines: on, off (pure scalar form), or as "
+                    "the scene says (default)")
+        ->check(CLI::IsMember({"on", "off", "scene"}));
+    app->add_flag("--no-plot", options->noPlot, "Skip the PNG plots");
+    // Hidden: makes meff differ from Box2D on purpose, to show that validation can fail.
+    app->add_option("--meff-velocity-iterations", options->meffVelocityIterations,
+                    "meff's velocity iterations (Box2D keeps the scene's)")
+        ->check(CLI::Range(1, 1000))
+        ->group("");
+    return {app, [options] { return Validate(*options); }};
+}
+
+} // namespace meff::cli

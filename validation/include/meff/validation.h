@@ -1,0 +1,198 @@
+// Cross-validation of meff against Box2D 2.4.1: the same scene stepped in both engines in
+// lockstep, compared frame by frame.
+//
+// What is compared after every step (all in double, from each engine's float state):
+//   position   |Δp| of the body origin (m), the Euclidean distance between the two engines
+//   angle      |Δθ| (rad)
+//   velocity   max(|Δv|, |Δω|): the linear velocity of the centre of mass (m/s, Euclidean) and
+//              the angular velocity (rad/s), both judged against the one velocity tolerance
+//   contact    every contact point's normal and tangent impulse (N·s), points matched by the
+//   impulse    unordered pair of shapes (scene body and shape index) plus the manifold point's
+//              feature key; a point one engine has and the other lacks is counted, and its
+//              impulse is compared against zero
+//   joint      reaction force × dt (N·s, Euclidean) and reaction torque × dt (N·m·s), as
+//   impulse    GetReactionForce/GetReactionTorque(1/dt) in Box2D and World::GetReaction in meff
+// An impulse passes when |Δ| ≤ max(impulse, impulseRelative × |Box2D's value|), the other
+// quantities when |Δ| ≤ their tolerance. The first frame where anything fails is the
+// divergence frame.
+#pragma once
+
+#include "meff/scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace meff::validation
+{
+
+/// One body's state after a step, from either engine.
+struct BodySample
+{
+    double x = 0; ///< body origin (m)
+    double y = 0;
+    double angle = 0; ///< rad
+    double vx = 0;    ///< centre of mass velocity (m/s)
+    double vy = 0;
+    double angularVelocity = 0; ///< rad/s
+};
+
+/// Which contact point: the two shapes, by scene body index and shape index within the body,
+/// and the manifold point's feature key. A and B as the engine ordered them.
+struct ContactKey
+{
+    std::size_t bodyA = 0;
+    std::size_t shapeA = 0;
+    std::size_t bodyB = 0;
+    std::size_t shapeB = 0;
+    std::uint32_t featureKey = 0;
+};
+
+/// One contact point's impulses over the last step (Box2D's PostSolve data).
+struct ContactSample
+{
+    ContactKey key;
+    double normalImpulse = 0;  ///< N·s
+    double tangentImpulse = 0; ///< N·s
+};
+
+/// One joint's reaction on body B over the last step.
+struct JointSample
+{
+    double fx = 0; ///< N
+    double fy = 0;
+    double torque = 0; ///< N·m
+};
+
+/// Everything compared after one step. bodies[i] is scene.bodies[i], joints[j] scene.joints[j].
+struct FrameSample
+{
+    std::vector<BodySample> bodies;
+    std::vector<ContactSample> contacts;
+    std::vector<JointSample> joints;
+};
+
+/// The limits of agreement (from the scene's "validate.tolerances").
+struct Tolerances
+{
+    double position = 1e-4;        ///< m
+    double angle = 1e-4;           ///< rad
+    double velocity = 1e-3;        ///< m/s and rad/s
+    double impulse = 1e-3;         ///< N·s
+    double impulseRelative = 1e-3; ///< fraction of Box2D's impulse
+};
+
+Tolerances TolerancesOf(const SceneTolerances& scene);
+
+/// The comparison of one frame. Indices are scene indices; -1 where nothing was compared.
+struct FrameErrors
+{
+    int frame = 0; ///< 0 is the initial state, k the state after step k
+
+    double position = 0; ///< m
+    int positionBody = -1;
+    double angle = 0; ///< rad
+    int angleBody = -1;
+    double linearVelocity = 0;  ///< m/s
+    double angularVelocity = 0; ///< rad/s
+    double velocity = 0;        ///< max of the two
+    int velocityBody = -1;
+
+    double contactImpulse = 0; ///< largest |Δ| of a normal or tangent impulse (N·s)
+    /// Largest |Δ| / allowance over the contact points (> 1 fails); the impulse allowance is
+    /// max(impulse, impulseRelative × |Box2D's impulse|).
+    double contactRatio = 0;
+    std::optional<ContactKey> contact; ///< the point holding contactImpulse
+    int contactPointsMeff = 0;
+    int contactPointsBox2D = 0;
+    int onlyInMeff = 0;  ///< points meff has and Box2D lacks
+    int onlyInBox2D = 0; ///< points Box2D has and meff lacks
+
+    double jointImpulse = 0; ///< largest |ΔF|·dt or |ΔT|·dt (N·s, N·m·s)
+    double jointRatio = 0;   ///< largest |Δ| / allowance over the joints
+    int joint = -1;
+
+    /// Which quantities exceeded their tolerance: "position", "angle", "velocity",
+    /// "contact_impulse", "joint_impulse".
+    std::vector<std::string> exceeded;
+    bool Exceeds() const { return !exceeded.empty(); }
+};
+
+/// Compares meff's frame with Box2D's. Both must describe the same scene (same body and joint
+/// counts). `dt` turns reaction forces into impulses.
+FrameErrors CompareFrames(const FrameSample& meff, const FrameSample& box2d, double dt,
+                          const Tolerances& tolerances, int frame = 0);
+
+/// What may differ from the scene for one run.
+struct RunOptions
+{
+    std::optional<int> frames;       ///< overrides scene.world.frames
+    std::optional<bool> blockSolver; ///< overrides scene.world.blockSolver in both engines
+    /// meff only, to prove the comparison can fail: its velocity iterations (Box2D keeps the
+    /// scene's).
+    std::optional<int> meffVelocityIterations;
+};
+
+/// One maximum over a run, and where it happened.
+struct RunMaximum
+{
+    double value = 0;
+    int frame = -1;    ///< -1: never above zero
+    std::string where; ///< the body, contact or joint holding it
+};
+
+/// The settled-state checks ("validate.settle", meant for chaotic scenes), on the last frame.
+struct SettleResult
+{
+    bool passed = true;
+    double position = 0; ///< largest |Δp| of a body (m)
+    std::string positionBody;
+    double angle = 0; ///< largest |Δθ| (rad)
+    std::string angleBody;
+    std::optional<double> lowestHeight; ///< lowest dynamic body origin in meff (m)
+    std::string lowestBody;
+    std::vector<std::string> failures; ///< one line per failed check
+};
+
+struct ValidationResult
+{
+    std::string scene;       ///< scene name
+    std::string sourcePath;  ///< the file
+    int frames = 0;          ///< steps compared
+    Tolerances tolerances;   ///< used
+    bool blockSolver = true; ///< as run in both engines
+    int meffVelocityIterations = 0;
+    int box2dVelocityIterations = 0;
+    bool chaotic = false;
+    int horizonFrames = 0; ///< chaotic scenes: frames that had to agree
+
+    std::vector<FrameErrors> perFrame; ///< frames 0..frames (0 is the initial state)
+    std::optional<int> divergenceFrame;
+    std::vector<std::string> divergenceQuantities; ///< what exceeded at the divergence frame
+
+    RunMaximum position;
+    RunMaximum angle;
+    RunMaximum velocity;
+    RunMaximum contactImpulse;
+    RunMaximum jointImpulse;
+    long long onlyInMeff = 0; ///< contact points over the run
+    long long onlyInBox2D = 0;
+
+    std::optional<SettleResult> settle;
+    std::vector<std::string> notes; ///< what the mirror cannot reproduce, and other warnings
+    std::string failure;            ///< a simulation that stopped (non-finite state), or empty
+    bool passed = false;
+};
+
+/// Builds both worlds from the scene, steps them in lockstep and compares every frame.
+/// Throws SceneError when the scene cannot be built.
+ValidationResult Validate(const Scene& scene, const RunOptions& options = {});
+
+/// "ball" for a body; "ball[1]/ground[0] key 0x10003" for a contact point.
+std::string DescribeBody(const Scene& scene, int body);
+std::string DescribeContact(const Scene& scene, const ContactKey& key);
+std::string DescribeJoint(const Scene& scene, int joint);
+
+} // namespace meff::validation

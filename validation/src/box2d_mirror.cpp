@@ -1,0 +1,280 @@
+// Building and stepping the Box2D 2.4.1 world of a scene. Numbers are converted from the
+// scene's doubles exactly as meff::BuildWorld converts them (static_cast<float>), and every
+// object is created in BuildWorld's order: each body followed by its shapes in file order,
+// then the joints in file order.
+#include "meff/box2d_mirror.h"
+
+#include <stdexcept>
+#include <utility>
+
+// Box2D 2.4.1 exports its block-solver switch but declares it in no header.
+extern B2_API bool g_blockSolve;
+
+namespace meff::validation
+{
+
+namespace
+{
+
+b2Vec2 ToB2(SceneVec2 v)
+{
+    return {static_cast<float>(v.x), static_cast<float>(v.y)};
+}
+
+b2BodyType ToB2(BodyType type)
+{
+    switch (type)
+    {
+    case BodyType::Static:
+        return b2_staticBody;
+    case BodyType::Kinematic:
+        return b2_kinematicBody;
+    case BodyType::Dynamic:
+        return b2_dynamicBody;
+    }
+    throw std::invalid_argument("unknown body type");
+}
+
+b2BodyDef MakeBodyDef(const SceneBody& body, bool allowSleep)
+{
+    const BodyDef meffDefaults; // what BuildWorld leaves at meff's defaults
+    b2BodyDef def;
+    def.type = ToB2(body.type);
+    def.position = ToB2(body.position);
+    def.angle = static_cast<float>(body.angle);
+    def.linearVelocity = ToB2(body.linearVelocity);
+    def.angularVelocity = static_cast<float>(body.angularVelocity);
+    def.linearDamping = static_cast<float>(body.linearDamping);
+    def.angularDamping = static_cast<float>(body.angularDamping);
+    def.allowSleep = allowSleep;
+    def.awake = meffDefaults.awake;
+    def.fixedRotation = body.fixedRotation;
+    def.bullet = body.bullet;
+    def.enabled = true;
+    def.gravityScale = static_cast<float>(body.gravityScale);
+    return def;
+}
+
+b2FixtureDef MakeFixtureDef(const SceneShape& shape, const b2Shape* geometry)
+{
+    b2FixtureDef def;
+    def.shape = geometry;
+    def.friction = static_cast<float>(shape.friction);
+    def.restitution = static_cast<float>(shape.restitution);
+    def.restitutionThreshold = static_cast<float>(shape.restitutionThreshold);
+    def.density = static_cast<float>(shape.density);
+    def.isSensor = shape.sensor;
+    def.filter.categoryBits = shape.filter.category;
+    def.filter.maskBits = shape.filter.mask;
+    def.filter.groupIndex = shape.filter.group;
+    return def;
+}
+
+b2Fixture* CreateFixture(b2Body* body, const SceneShape& shape)
+{
+    switch (shape.type)
+    {
+    case SceneShapeType::Circle:
+    {
+        b2CircleShape circle;
+        circle.m_p = ToB2(shape.center);
+        circle.m_radius = static_cast<float>(shape.radius);
+        const b2FixtureDef def = MakeFixtureDef(shape, &circle);
+        return body->CreateFixture(&def);
+    }
+    case SceneShapeType::Box:
+    {
+        // BuildWorld uses MakeOffsetBox, which is this overload's arithmetic.
+        b2PolygonShape box;
+        box.SetAsBox(static_cast<float>(shape.halfWidth), static_cast<float>(shape.halfHeight),
+                     ToB2(shape.center), static_cast<float>(shape.angle));
+        const b2FixtureDef def = MakeFixtureDef(shape, &box);
+        return body->CreateFixture(&def);
+    }
+    case SceneShapeType::Polygon:
+    {
+        std::vector<b2Vec2> points;
+        points.reserve(shape.vertices.size());
+        for (const SceneVec2& vertex : shape.vertices)
+        {
+            points.push_back(ToB2(vertex));
+        }
+        b2PolygonShape polygon;
+        polygon.Set(points.data(), static_cast<int32>(points.size()));
+        const b2FixtureDef def = MakeFixtureDef(shape, &polygon);
+        return body->CreateFixture(&def);
+    }
+    case SceneShapeType::Segment:
+    {
+        b2EdgeShape edge;
+        edge.SetTwoSided(ToB2(shape.point1), ToB2(shape.point2));
+        const b2FixtureDef def = MakeFixtureDef(shape, &edge);
+        return body->CreateFixture(&def);
+    }
+    }
+    throw std::invalid_argument("unknown shape type");
+}
+
+b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2Body* bodyB)
+{
+    if (joint.type == JointType::Revolute)
+    {
+        b2RevoluteJointDef def;
+        def.Initialize(bodyA, bodyB, ToB2(joint.anchor));
+        def.enableLimit = joint.enableLimit;
+        def.lowerAngle = static_cast<float>(joint.lowerAngle);
+        def.upperAngle = static_cast<float>(joint.upperAngle);
+        def.enableMotor = joint.enableMotor;
+        def.motorSpeed = static_cast<float>(joint.motorSpeed);
+        def.maxMotorTorque = static_cast<float>(joint.maxMotorTorque);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    b2DistanceJointDef def;
+    def.Initialize(bodyA, bodyB, ToB2(joint.anchorA), ToB2(joint.anchorB));
+    def.length = static_cast<float>(joint.length);
+    def.minLength = static_cast<float>(joint.minLength);
+    def.maxLength = static_cast<float>(joint.maxLength);
+    def.stiffness = 0.0f;
+    def.damping = 0.0f;
+    if (joint.stiffnessHz > 0)
+    {
+        b2LinearStiffness(def.stiffness, def.damping, static_cast<float>(joint.stiffnessHz),
+                          static_cast<float>(joint.dampingRatio), bodyA, bodyB);
+    }
+    def.collideConnected = joint.collideConnected;
+    return world.CreateJoint(&def);
+}
+
+/// Restores g_blockSolve when a step ends, however it ends.
+class BlockSolveScope
+{
+  public:
+    explicit BlockSolveScope(bool value) : m_saved(g_blockSolve) { g_blockSolve = value; }
+    ~BlockSolveScope() { g_blockSolve = m_saved; }
+    BlockSolveScope(const BlockSolveScope&) = delete;
+    BlockSolveScope& operator=(const BlockSolveScope&) = delete;
+
+  private:
+    bool m_saved;
+};
+
+} // namespace
+
+/// Keeps the PostSolve data of the current step, every call in order. With continuous physics
+/// Box2D calls PostSolve again for the contacts of each time-of-impact sub-step, and meff
+/// appends those reports the same way, so a contact may appear more than once.
+class Box2DMirror::Listener : public b2ContactListener
+{
+  public:
+    struct Point
+    {
+        const b2Fixture* fixtureA = nullptr;
+        const b2Fixture* fixtureB = nullptr;
+        std::uint32_t featureKey = 0;
+        float normalImpulse = 0;
+        float tangentImpulse = 0;
+    };
+
+    void Clear() { m_points.clear(); }
+
+    void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override
+    {
+        const b2Manifold* manifold = contact->GetManifold();
+        for (int32 i = 0; i < impulse->count; ++i)
+        {
+            Point point;
+            point.fixtureA = contact->GetFixtureA();
+            point.fixtureB = contact->GetFixtureB();
+            point.featureKey = manifold->points[i].id.key;
+            point.normalImpulse = impulse->normalImpulses[i];
+            point.tangentImpulse = impulse->tangentImpulses[i];
+            m_points.push_back(point);
+        }
+    }
+
+    const std::vector<Point>& Points() const { return m_points; }
+
+  private:
+    std::vector<Point> m_points;
+};
+
+Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
+    : m_scene(scene), m_dt(static_cast<float>(scene.world.dt)),
+      m_blockSolve(blockSolver.value_or(scene.world.blockSolver)),
+      m_world(std::make_unique<b2World>(ToB2(scene.world.gravity))),
+      m_listener(std::make_unique<Listener>())
+{
+    const SceneWorldSettings& settings = scene.world;
+    m_world->SetAllowSleeping(settings.allowSleep);
+    m_world->SetWarmStarting(settings.warmStarting);
+    m_world->SetContinuousPhysics(settings.continuous);
+    m_world->SetSubStepping(false);
+    m_world->SetAutoClearForces(true);
+    m_world->SetContactListener(m_listener.get());
+
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        const SceneBody& body = scene.bodies[i];
+        const b2BodyDef def = MakeBodyDef(body, settings.allowSleep);
+        b2Body* created = m_world->CreateBody(&def);
+        m_bodies.push_back(created);
+        for (std::size_t k = 0; k < body.shapes.size(); ++k)
+        {
+            m_shapeOf.emplace(CreateFixture(created, body.shapes[k]), std::make_pair(i, k));
+        }
+    }
+    for (const SceneJoint& joint : scene.joints)
+    {
+        m_joints.push_back(CreateJoint(*m_world, joint, m_bodies.at(joint.bodyIndexA),
+                                       m_bodies.at(joint.bodyIndexB)));
+    }
+}
+
+Box2DMirror::~Box2DMirror()
+{
+    if (m_world)
+    {
+        m_world->SetContactListener(nullptr);
+    }
+}
+
+void Box2DMirror::Step()
+{
+    m_listener->Clear();
+    const BlockSolveScope scope(m_blockSolve);
+    m_world->Step(m_dt, m_scene.world.velocityIterations, m_scene.world.positionIterations);
+}
+
+FrameSample Box2DMirror::Sample() const
+{
+    FrameSample sample;
+    sample.bodies.reserve(m_bodies.size());
+    for (const b2Body* body : m_bodies)
+    {
+        const b2Vec2 p = body->GetPosition();
+        const b2Vec2 v = body->GetLinearVelocity();
+        sample.bodies.push_back({p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity()});
+    }
+    for (const Listener::Point& point : m_listener->Points())
+    {
+        const auto& [bodyA, shapeA] = m_shapeOf.at(point.fixtureA);
+        const auto& [bodyB, shapeB] = m_shapeOf.at(point.fixtureB);
+        ContactSample contact;
+        contact.key = {bodyA, shapeA, bodyB, shapeB, point.featureKey};
+        contact.normalImpulse = point.normalImpulse;
+        contact.tangentImpulse = point.tangentImpulse;
+        sample.contacts.push_back(contact);
+    }
+    // As meff's reports and Box2D's testbed compute it: the reciprocal in float.
+    const float invDt = 1.0f / m_dt;
+    sample.joints.reserve(m_joints.size());
+    for (const b2Joint* joint : m_joints)
+    {
+        const b2Vec2 force = joint->GetReactionForce(invDt);
+        sample.joints.push_back({force.x, force.y, joint->GetReactionTorque(invDt)});
+    }
+    return sample;
+}
+
+} // namespace meff::validation

@@ -1,0 +1,243 @@
+// Stepping meff and its Box2D mirror in lockstep and judging the run.
+#include "meff/box2d_mirror.h"
+#include "meff/validation.h"
+
+#include <cmath>
+#include <cstdio>
+#include <unordered_map>
+
+namespace meff::validation
+{
+
+namespace
+{
+
+/// meff's state after a step, in the comparison's terms.
+class MeffSampler
+{
+  public:
+    explicit MeffSampler(const BuiltScene& built) : m_built(built)
+    {
+        for (std::size_t i = 0; i < built.shapes.size(); ++i)
+        {
+            for (std::size_t k = 0; k < built.shapes[i].size(); ++k)
+            {
+                m_shapeOf.emplace(built.shapes[i][k].index, std::make_pair(i, k));
+            }
+        }
+    }
+
+    FrameSample Sample(Real invDt) const
+    {
+        const World& world = m_built.world;
+        FrameSample sample;
+        sample.bodies.reserve(m_built.bodies.size());
+        for (const BodyId id : m_built.bodies)
+        {
+            const Vec2 p = world.GetPosition(id);
+            const Vec2 v = world.GetLinearVelocity(id);
+            sample.bodies.push_back(
+                {p.x, p.y, world.GetAngle(id), v.x, v.y, world.GetAngularVelocity(id)});
+        }
+        for (const ContactPointReport& report : world.GetContactReports())
+        {
+            const auto& [bodyA, shapeA] = m_shapeOf.at(report.shapeA.index);
+            const auto& [bodyB, shapeB] = m_shapeOf.at(report.shapeB.index);
+            ContactSample contact;
+            contact.key = {bodyA, shapeA, bodyB, shapeB, report.featureKey};
+            contact.normalImpulse = report.normalImpulse;
+            contact.tangentImpulse = report.tangentImpulse;
+            sample.contacts.push_back(contact);
+        }
+        sample.joints.reserve(m_built.joints.size());
+        for (const JointId id : m_built.joints)
+        {
+            const JointReaction reaction = world.GetReaction(id, invDt);
+            sample.joints.push_back({reaction.force.x, reaction.force.y, reaction.torque});
+        }
+        return sample;
+    }
+
+  private:
+    const BuiltScene& m_built;
+    std::unordered_map<std::int32_t, std::pair<std::size_t, std::size_t>> m_shapeOf;
+};
+
+void Track(RunMaximum& maximum, double value, int frame, const std::string& where)
+{
+    if (value > maximum.value || (std::isnan(value) && !std::isnan(maximum.value)))
+    {
+        maximum.value = value;
+        maximum.frame = frame;
+        maximum.where = where;
+    }
+}
+
+/// What the mirror cannot reproduce exactly: said, never hidden.
+std::vector<std::string> MirrorNotes(const Scene& scene, const RunOptions& options)
+{
+    std::vector<std::string> notes;
+    if (!scene.world.blockJoints)
+    {
+        notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a revolute "
+                           "point constraint as a 2x2 block, so revolute joints cannot agree");
+    }
+    if (scene.world.allowSleep)
+    {
+        notes.emplace_back("world.allow_sleep is true: Box2D puts resting bodies to sleep, meff "
+                           "does not model sleeping yet");
+    }
+    if (options.meffVelocityIterations &&
+        *options.meffVelocityIterations != scene.world.velocityIterations)
+    {
+        notes.emplace_back("meff runs " + std::to_string(*options.meffVelocityIterations) +
+                           " velocity iterations, Box2D " +
+                           std::to_string(scene.world.velocityIterations) +
+                           " (a deliberate difference: this run is expected to fail)");
+    }
+    return notes;
+}
+
+SettleResult CheckSettled(const Scene& scene, const SceneSettleCheck& check,
+                          const FrameSample& meff, const FrameSample& box2d)
+{
+    SettleResult result;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        if (scene.bodies[i].type == BodyType::Static)
+        {
+            continue;
+        }
+        const BodySample& m = meff.bodies[i];
+        const BodySample& b = box2d.bodies[i];
+        const double position = std::hypot(m.x - b.x, m.y - b.y);
+        const double angle = std::abs(m.angle - b.angle);
+        const std::string name = DescribeBody(scene, static_cast<int>(i));
+        if (!(position <= result.position) || result.positionBody.empty())
+        {
+            result.position = position;
+            result.positionBody = name;
+        }
+        if (!(angle <= result.angle) || result.angleBody.empty())
+        {
+            result.angle = angle;
+            result.angleBody = name;
+        }
+        if (!result.lowestHeight || !(m.y >= *result.lowestHeight))
+        {
+            result.lowestHeight = m.y;
+            result.lowestBody = name;
+        }
+    }
+    const auto number = [](double value)
+    {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", value);
+        return std::string(text);
+    };
+    if (!(result.position <= check.position))
+    {
+        result.failures.push_back("settled position: " + result.positionBody + " ends " +
+                                  number(result.position) + " m from Box2D's (tolerance " +
+                                  number(check.position) + " m)");
+    }
+    if (check.angle && !(result.angle <= *check.angle))
+    {
+        result.failures.push_back("settled angle: " + result.angleBody + " ends " +
+                                  number(result.angle) + " rad from Box2D's (tolerance " +
+                                  number(*check.angle) + " rad)");
+    }
+    if (check.minimumHeight && result.lowestHeight &&
+        !(*result.lowestHeight >= *check.minimumHeight))
+    {
+        result.failures.push_back("settled height: " + result.lowestBody +
+                                  " ends at y = " + number(*result.lowestHeight) +
+                                  " m, below min_height " + number(*check.minimumHeight) + " m");
+    }
+    result.passed = result.failures.empty();
+    return result;
+}
+
+} // namespace
+
+ValidationResult Validate(const Scene& scene, const RunOptions& options)
+{
+    ValidationResult result;
+    result.scene = scene.name;
+    result.sourcePath = scene.sourcePath;
+    result.frames = options.frames.value_or(scene.world.frames);
+    result.tolerances = TolerancesOf(scene.tolerances);
+    result.blockSolver = options.blockSolver.value_or(scene.world.blockSolver);
+    result.box2dVelocityIterations = scene.world.velocityIterations;
+    result.meffVelocityIterations =
+        options.meffVelocityIterations.value_or(scene.world.velocityIterations);
+    result.chaotic = scene.validation.chaotic;
+    result.horizonFrames = scene.validation.horizonFrames;
+    result.notes = MirrorNotes(scene, options);
+
+    BuiltScene built = BuildWorld(scene);
+    SolverSettings solver = built.world.GetSolverSettings();
+    solver.blockSolver = result.blockSolver;
+    solver.velocityIterations = result.meffVelocityIterations;
+    built.world.SetSolverSettings(solver);
+    Box2DMirror mirror(scene, result.blockSolver);
+
+    const MeffSampler meff(built);
+    const double dt = scene.world.dt;
+    const Real invDt = Real(1) / Real(dt);
+    const auto compare = [&](int frame, const FrameSample& meffFrame, const FrameSample& box2dFrame)
+    {
+        FrameErrors errors = CompareFrames(meffFrame, box2dFrame, dt, result.tolerances, frame);
+        Track(result.position, errors.position, frame, DescribeBody(scene, errors.positionBody));
+        Track(result.angle, errors.angle, frame, DescribeBody(scene, errors.angleBody));
+        Track(result.velocity, errors.velocity, frame, DescribeBody(scene, errors.velocityBody));
+        Track(result.contactImpulse, errors.contactImpulse, frame,
+              errors.contact ? DescribeContact(scene, *errors.contact) : "-");
+        Track(result.jointImpulse, errors.jointImpulse, frame, DescribeJoint(scene, errors.joint));
+        result.onlyInMeff += errors.onlyInMeff;
+        result.onlyInBox2D += errors.onlyInBox2D;
+        if (errors.Exceeds() && !result.divergenceFrame)
+        {
+            result.divergenceFrame = frame;
+            result.divergenceQuantities = errors.exceeded;
+        }
+        result.perFrame.push_back(std::move(errors));
+    };
+
+    // Frame 0: both worlds as built, before any step (no contacts or reactions yet).
+    compare(0, meff.Sample(invDt), mirror.Sample());
+    FrameSample lastMeff;
+    FrameSample lastBox2D;
+    for (int frame = 1; frame <= result.frames; ++frame)
+    {
+        try
+        {
+            built.world.Step(Real(dt));
+        }
+        catch (const SimulationError& error)
+        {
+            result.failure =
+                std::string("meff stopped at frame ") + std::to_string(frame) + ": " + error.what();
+            break;
+        }
+        mirror.Step();
+        lastMeff = meff.Sample(invDt);
+        lastBox2D = mirror.Sample();
+        compare(frame, lastMeff, lastBox2D);
+    }
+
+    bool agreed = !result.divergenceFrame;
+    if (result.chaotic)
+    {
+        // Round-off may part the engines after the horizon, not before it.
+        agreed = !result.divergenceFrame || *result.divergenceFrame > result.horizonFrames;
+    }
+    if (scene.validation.settle && result.failure.empty() && result.frames > 0)
+    {
+        result.settle = CheckSettled(scene, *scene.validation.settle, lastMeff, lastBox2D);
+    }
+    result.passed = agreed && result.failure.empty() && (!result.settle || result.settle->passed);
+    return result;
+}
+
+} // namespace meff::validation
