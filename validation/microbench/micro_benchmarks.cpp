@@ -1,0 +1,149 @@
+// Micro-benchmarks of the pieces a step spends its time in (see README, "Performance").
+#include "collision/broad_phase.h"
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
+#include "dynamics/contact_solver.h"
+#include "dynamics/shape.h"
+#include "meff/collision.h"
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+using namespace meff;
+using namespace meff::detail;
+
+namespace
+{
+
+Polygon SkinnedBox(Real h)
+{
+    Polygon p = MakeBox(h, h);
+    p.radius = Real(0.01); // the world's polygon skin
+    return p;
+}
+
+/// Two unit boxes resting face to face, the second slightly turned: a two-point manifold.
+void BM_CollidePolygons(benchmark::State& state)
+{
+    const Polygon box = SkinnedBox(Real(0.5));
+    const Transform xfA({0, 0}, Rot(0));
+    const Transform xfB({Real(0.1), Real(0.99)}, Rot(Real(0.05)));
+    Manifold manifold;
+    for (auto _ : state)
+    {
+        CollidePolygons(manifold, box, xfA, box, xfB);
+        benchmark::DoNotOptimize(manifold);
+    }
+}
+BENCHMARK(BM_CollidePolygons);
+
+void BM_CollidePolygonAndCircle(benchmark::State& state)
+{
+    const Polygon box = SkinnedBox(Real(0.5));
+    const Circle circle{{0, 0}, Real(0.25)};
+    const Transform xfA({0, 0}, Rot(0));
+    const Transform xfB({Real(0.3), Real(0.74)}, Rot(0));
+    Manifold manifold;
+    for (auto _ : state)
+    {
+        CollidePolygonAndCircle(manifold, box, xfA, circle, xfB);
+        benchmark::DoNotOptimize(manifold);
+    }
+}
+BENCHMARK(BM_CollidePolygonAndCircle);
+
+/// One velocity iteration over N box-on-box contacts (a column of N+1 boxes): the contact row
+/// update of the solver's inner loop, friction and the 2×2 normal block.
+void BM_ContactRowUpdate(benchmark::State& state)
+{
+    const int n = static_cast<int>(state.range(0));
+    const Polygon box = SkinnedBox(Real(0.5));
+    std::vector<Body> bodies(n + 1);
+    std::vector<Shape> shapes(n + 1);
+    std::vector<Contact> contacts(n);
+    std::vector<std::int32_t> indices(n);
+    std::vector<Position> positions(n + 1);
+    std::vector<Velocity> velocities(n + 1);
+    for (int i = 0; i <= n; ++i)
+    {
+        Body& b = bodies[i];
+        b.type = i == 0 ? BodyType::Static : BodyType::Dynamic;
+        b.mass = i == 0 ? 0 : 1;
+        b.invMass = i == 0 ? 0 : 1;
+        b.I = i == 0 ? 0 : Real(1) / 6;
+        b.invI = i == 0 ? 0 : 6;
+        b.xf = Transform({0, Real(i) * Real(0.995)}, Rot(0));
+        b.sweep.c = b.xf.p;
+        b.islandIndex = i;
+        shapes[i].type = ShapeType::Polygon;
+        shapes[i].polygon = box;
+        positions[i] = {b.xf.p, 0};
+        velocities[i] = {{0, Real(-0.1)}, 0};
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        Contact& c = contacts[i];
+        c.shapeA = i;
+        c.shapeB = i + 1;
+        c.bodyA = i;
+        c.bodyB = i + 1;
+        c.friction = Real(0.6);
+        c.restitutionThreshold = 1;
+        CollidePolygons(c.manifold, box, bodies[i].xf, box, bodies[i + 1].xf);
+        indices[i] = i;
+    }
+    SolverData data;
+    data.positions = positions.data();
+    data.velocities = velocities.data();
+    ContactSolver solver;
+    solver.Prepare(indices, contacts, bodies, shapes, data);
+    for (auto _ : state)
+    {
+        solver.SolveVelocities(data);
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * n);
+}
+BENCHMARK(BM_ContactRowUpdate)->Arg(64)->Arg(1024);
+
+/// The broad phase after every body moved a little: re-fit the moved boxes, find new pairs.
+void BM_BroadPhaseUpdate(benchmark::State& state)
+{
+    const int n = static_cast<int>(state.range(0));
+    BroadPhase broadPhase(Real(0.1));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> coordinate(-50, 50);
+    std::vector<AABB> boxes(n);
+    std::vector<std::int32_t> proxies(n);
+    for (int i = 0; i < n; ++i)
+    {
+        const Vec2 c{coordinate(rng), coordinate(rng)};
+        boxes[i] = {c - Vec2{Real(0.5), Real(0.5)}, c + Vec2{Real(0.5), Real(0.5)}};
+        proxies[i] = broadPhase.CreateProxy(boxes[i], i);
+    }
+    broadPhase.UpdatePairs([](std::int32_t, std::int32_t) {});
+    Real direction = Real(0.05);
+    long pairs = 0;
+    for (auto _ : state)
+    {
+        // Every box drifts 0.05 m, back and forth: most stay inside their fat boxes, some don't.
+        const Vec2 d{direction, 0};
+        for (int i = 0; i < n; ++i)
+        {
+            boxes[i].lowerBound += d;
+            boxes[i].upperBound += d;
+            broadPhase.MoveProxy(proxies[i], boxes[i], d);
+        }
+        broadPhase.UpdatePairs([&pairs](std::int32_t, std::int32_t) { ++pairs; });
+        direction = -direction;
+    }
+    benchmark::DoNotOptimize(pairs);
+    state.SetItemsProcessed(state.iterations() * n);
+}
+BENCHMARK(BM_BroadPhaseUpdate)->Arg(1000)->Arg(10000);
+
+} // namespace
+
+BENCHMARK_MAIN();
