@@ -19,9 +19,9 @@ enum class BodyType : std::uint8_t
 struct BodyDef
 {
     BodyType type = BodyType::Static;
-    Vec2 position;              ///< world position of the body origin (m)
+    Vec2 position{};            ///< world position of the body origin (m)
     Real angle = 0;             ///< world angle (rad, counter-clockwise)
-    Vec2 linearVelocity;        ///< velocity of the centre of mass (m/s)
+    Vec2 linearVelocity{};      ///< velocity of the centre of mass (m/s)
     Real angularVelocity = 0;   ///< rad/s
     Real linearDamping = 0;     ///< 1/s; v *= 1/(1 + h·linearDamping) each step
     Real angularDamping = 0;    ///< 1/s; ω *= 1/(1 + h·angularDamping) each step

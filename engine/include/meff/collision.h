@@ -25,24 +25,24 @@ enum class ShapeType : std::uint8_t
 /// A solid circle.
 struct Circle
 {
-    Vec2 center;     ///< centre in body coordinates (m)
+    Vec2 center{};   ///< centre in body coordinates (m)
     Real radius = 0; ///< radius (m), > 0
 };
 
 /// A line segment, for static ground. Two-sided.
 struct Segment
 {
-    Vec2 point1;     ///< first end in body coordinates (m)
-    Vec2 point2;     ///< second end in body coordinates (m)
+    Vec2 point1{};   ///< first end in body coordinates (m)
+    Vec2 point2{};   ///< second end in body coordinates (m)
     Real radius = 0; ///< collision skin (m); the world sets it to Tolerances::polygonSkin
 };
 
 /// A convex polygon with counter-clockwise vertices and outward unit normals.
 struct Polygon
 {
-    Vec2 vertices[kMaxPolygonVertices];
-    Vec2 normals[kMaxPolygonVertices];
-    Vec2 centroid;   ///< area centroid in body coordinates (m)
+    Vec2 vertices[kMaxPolygonVertices]{};
+    Vec2 normals[kMaxPolygonVertices]{};
+    Vec2 centroid{}; ///< area centroid in body coordinates (m)
     int count = 0;   ///< number of vertices, 3..kMaxPolygonVertices
     Real radius = 0; ///< collision skin (m); the world sets it to Tolerances::polygonSkin
 };
@@ -51,7 +51,7 @@ struct Polygon
 struct MassData
 {
     Real mass = 0;              ///< kg
-    Vec2 center;                ///< centre of mass in body coordinates (m)
+    Vec2 center{};              ///< centre of mass in body coordinates (m)
     Real rotationalInertia = 0; ///< about the body origin (kg·m²)
 };
 
@@ -101,10 +101,10 @@ struct ContactFeature
 /// One contact point of a manifold, in the local frame the manifold type names.
 struct ManifoldPoint
 {
-    Vec2 localPoint;         ///< Circles: centre of B; FaceA: point on B; FaceB: point on A
+    Vec2 localPoint{};       ///< Circles: centre of B; FaceA: point on B; FaceB: point on A
     Real normalImpulse = 0;  ///< accumulated normal impulse (N·s), carried between steps
     Real tangentImpulse = 0; ///< accumulated friction impulse (N·s), carried between steps
-    ContactFeature id;       ///< the features that made this point, to match it next step
+    ContactFeature id{};     ///< the features that made this point, to match it next step
 };
 
 /// Up to two contact points between two shapes, stored in the local frame of one of them so
@@ -117,9 +117,9 @@ struct Manifold
         FaceA,
         FaceB,
     };
-    ManifoldPoint points[2];
-    Vec2 localNormal; ///< FaceA: normal of A's face; FaceB: normal of B's face; Circles: unused
-    Vec2 localPoint;  ///< Circles: centre of A; FaceA: point on A's face; FaceB: on B's face
+    ManifoldPoint points[2]{};
+    Vec2 localNormal{}; ///< FaceA: normal of A's face; FaceB: normal of B's face; Circles: unused
+    Vec2 localPoint{};  ///< Circles: centre of A; FaceA: point on A's face; FaceB: on B's face
     Type type = Type::Circles;
     int pointCount = 0;
 };
@@ -127,8 +127,8 @@ struct Manifold
 /// A manifold evaluated in world coordinates.
 struct WorldManifold
 {
-    Vec2 normal;         ///< unit normal from A to B
-    Vec2 points[2];      ///< contact points, midway between the two surfaces (m)
+    Vec2 normal{};       ///< unit normal from A to B
+    Vec2 points[2]{};    ///< contact points, midway between the two surfaces (m)
     Real separations[2]; ///< negative when overlapping (m)
 
     void Initialize(const Manifold& manifold, const Transform& xfA, Real radiusA,

@@ -59,7 +59,7 @@ struct DrawFlags
     Real normalLength = Real(0.3); ///< length of a contact normal (m)
     Real arrowHead = Real(0.1);    ///< length of an arrow's head (m)
     Real pointSize = 4;            ///< contact and anchor points, in pixels (as b2Draw)
-    DrawPalette colors;
+    DrawPalette colors{};
 };
 
 /// Implement this to see a world: World::Draw calls it once per primitive, in a fixed order

@@ -19,7 +19,7 @@ namespace meff
 /// skin of a polygon or segment.
 struct DistanceProxy
 {
-    Vec2 vertices[kMaxPolygonVertices];
+    Vec2 vertices[kMaxPolygonVertices]{};
     int count = 0;
     Real radius = 0;
 
@@ -60,15 +60,15 @@ struct DistanceInput
 {
     DistanceProxy proxyA;
     DistanceProxy proxyB;
-    Transform transformA;
-    Transform transformB;
+    Transform transformA{};
+    Transform transformB{};
     bool useRadii = false; ///< measure between the rounded surfaces, not the cores
 };
 
 struct DistanceOutput
 {
-    Vec2 pointA;       ///< closest point on A (m)
-    Vec2 pointB;       ///< closest point on B (m)
+    Vec2 pointA{};     ///< closest point on A (m)
+    Vec2 pointB{};     ///< closest point on B (m)
     Real distance = 0; ///< 0 when overlapping (m)
     int iterations = 0;
 };
@@ -85,17 +85,17 @@ struct ShapeCastInput
 {
     DistanceProxy proxyA;
     DistanceProxy proxyB;
-    Transform transformA;
-    Transform transformB;
-    Vec2 translationB;             ///< B moves by this over the cast; A stays (m)
+    Transform transformA{};
+    Transform transformB{};
+    Vec2 translationB{};           ///< B moves by this over the cast; A stays (m)
     Real polygonSkin = Real(0.01); ///< Tolerances::polygonSkin: smallest radius a proxy is given
     Real linearSlop = Real(0.005); ///< Tolerances::linearSlop: half of it is the tolerance
 };
 
 struct ShapeCastOutput
 {
-    Vec2 point;      ///< contact point on A at the hit (m)
-    Vec2 normal;     ///< unit normal at the hit
+    Vec2 point{};    ///< contact point on A at the hit (m)
+    Vec2 normal{};   ///< unit normal at the hit
     Real lambda = 1; ///< fraction of translationB travelled to the hit
     int iterations = 0;
 };
@@ -108,8 +108,8 @@ struct TOIInput
 {
     DistanceProxy proxyA;
     DistanceProxy proxyB;
-    Sweep sweepA;
-    Sweep sweepB;
+    Sweep sweepA{};
+    Sweep sweepB{};
     Real tMax = 1;                 ///< end of the sweep interval to search, in [0, 1]
     Real linearSlop = Real(0.005); ///< Tolerances::linearSlop
 };

@@ -21,10 +21,10 @@ enum class JointType : std::uint8_t
 /// as two scalar rows, each with the scalar effective mass.
 struct RevoluteJointDef
 {
-    BodyId bodyA;
-    BodyId bodyB;
-    Vec2 localAnchorA;       ///< anchor in bodyA's frame (m)
-    Vec2 localAnchorB;       ///< anchor in bodyB's frame (m)
+    BodyId bodyA{};
+    BodyId bodyB{};
+    Vec2 localAnchorA{};     ///< anchor in bodyA's frame (m)
+    Vec2 localAnchorB{};     ///< anchor in bodyB's frame (m)
     Real referenceAngle = 0; ///< angleB − angleA at which the joint angle is zero (rad)
     bool enableLimit = false;
     Real lowerAngle = 0; ///< rad, ≤ upperAngle
@@ -39,10 +39,10 @@ struct RevoluteJointDef
 /// hertz = 0, a spring when hertz > 0 (then min/max act as limits).
 struct DistanceJointDef
 {
-    BodyId bodyA;
-    BodyId bodyB;
-    Vec2 localAnchorA;             ///< anchor in bodyA's frame (m)
-    Vec2 localAnchorB;             ///< anchor in bodyB's frame (m)
+    BodyId bodyA{};
+    BodyId bodyB{};
+    Vec2 localAnchorA{};           ///< anchor in bodyA's frame (m)
+    Vec2 localAnchorB{};           ///< anchor in bodyB's frame (m)
     Real length = 1;               ///< rest length (m), clamped to ≥ linear slop
     Real minLength = 0;            ///< m
     Real maxLength = kMaxReal;     ///< m

@@ -170,7 +170,7 @@ struct Mat22
         {
             det = Real(1) / det;
         }
-        Mat22 m;
+        Mat22 m{};
         m.ex.x = det * d;
         m.ey.x = -det * b;
         m.ex.y = -det * c;
@@ -226,7 +226,7 @@ inline Vec2 MulT(Rot q, Vec2 v)
 /// q·r
 inline Rot Mul(Rot q, Rot r)
 {
-    Rot qr;
+    Rot qr{};
     qr.s = q.s * r.c + q.c * r.s;
     qr.c = q.c * r.c - q.s * r.s;
     return qr;
@@ -234,7 +234,7 @@ inline Rot Mul(Rot q, Rot r)
 /// qᵀ·r
 inline Rot MulT(Rot q, Rot r)
 {
-    Rot qr;
+    Rot qr{};
     qr.s = q.c * r.s - q.s * r.c;
     qr.c = q.c * r.c + q.s * r.s;
     return qr;
@@ -244,7 +244,7 @@ inline Rot MulT(Rot q, Rot r)
 struct Transform
 {
     Vec2 p{0, 0};
-    Rot q;
+    Rot q{};
 
     Transform() = default;
     Transform(Vec2 position, Rot rotation) : p(position), q(rotation) {}
@@ -283,15 +283,15 @@ inline Transform MulT(const Transform& A, const Transform& B)
 /// The motion of a body's centre of mass over one step, for continuous collision.
 struct Sweep
 {
-    Vec2 localCenter;   ///< centre of mass in body coordinates (m)
-    Vec2 c0, c;         ///< centre of mass in world coordinates at t0 and now (m)
+    Vec2 localCenter{}; ///< centre of mass in body coordinates (m)
+    Vec2 c0{}, c{};     ///< centre of mass in world coordinates at t0 and now (m)
     Real a0 = 0, a = 0; ///< angle at t0 and now (rad)
     Real alpha0 = 0;    ///< fraction of the step already advanced, in [0,1)
 
     /// The body transform at fraction beta of the step.
     Transform GetTransform(Real beta) const
     {
-        Transform xf;
+        Transform xf{};
         xf.p = (Real(1) - beta) * c0 + beta * c;
         const Real angle = (Real(1) - beta) * a0 + beta * a;
         xf.q.Set(angle);
@@ -323,8 +323,8 @@ struct Sweep
 /// An axis-aligned bounding box.
 struct AABB
 {
-    Vec2 lowerBound;
-    Vec2 upperBound;
+    Vec2 lowerBound{};
+    Vec2 upperBound{};
 
     Vec2 GetCenter() const { return Real(0.5) * (lowerBound + upperBound); }
     Vec2 GetExtents() const { return Real(0.5) * (upperBound - lowerBound); }

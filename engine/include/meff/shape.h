@@ -24,7 +24,7 @@ struct ShapeDef
     Real friction = Real(0.6);     ///< Coulomb coefficient, ≥ 0; mixed as sqrt(μA·μB)
     Real restitution = 0;          ///< coefficient e in [0,1]; mixed as max(eA, eB)
     Real restitutionThreshold = 1; ///< m/s; slower approaches do not bounce; mixed as min
-    Filter filter;
+    Filter filter{};
     bool isSensor = false;      ///< detects overlap, never collides
     std::uint64_t userData = 0; ///< yours; meff never reads it
 };

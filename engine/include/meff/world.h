@@ -50,8 +50,8 @@ struct SolverSettings
 struct WorldDef
 {
     Vec2 gravity{0, -10}; ///< m/s²
-    SolverSettings solver;
-    Tolerances tolerances;
+    SolverSettings solver{};
+    Tolerances tolerances{};
     bool allowSleep = false; ///< reserved: sleeping is not modelled yet, bodies never sleep
     /// Continuous collision (Box2D's continuous physics, on by default there too): after each
     /// step, fast dynamic bodies are moved back to their first time of impact with static and
@@ -64,12 +64,12 @@ struct WorldDef
 /// One contact point after a step: Box2D's PostSolve data plus where the point is.
 struct ContactPointReport
 {
-    BodyId bodyA;
-    BodyId bodyB;
-    ShapeId shapeA;
-    ShapeId shapeB;
-    Vec2 point;                   ///< world point midway between the surfaces (m)
-    Vec2 normal;                  ///< unit normal from A to B
+    BodyId bodyA{};
+    BodyId bodyB{};
+    ShapeId shapeA{};
+    ShapeId shapeB{};
+    Vec2 point{};                 ///< world point midway between the surfaces (m)
+    Vec2 normal{};                ///< unit normal from A to B
     Real separation = 0;          ///< m, negative when overlapping
     Real normalImpulse = 0;       ///< accumulated over the step's velocity iterations (N·s)
     Real tangentImpulse = 0;      ///< friction impulse along the tangent cross(normal, 1) (N·s)
@@ -80,14 +80,14 @@ struct ContactPointReport
 /// Two shapes started or stopped touching during the last step.
 struct ContactEvent
 {
-    ShapeId shapeA;
-    ShapeId shapeB;
+    ShapeId shapeA{};
+    ShapeId shapeB{};
 };
 
 /// A joint's reaction on body B, as Box2D's GetReactionForce/GetReactionTorque.
 struct JointReaction
 {
-    Vec2 force;      ///< N
+    Vec2 force{};    ///< N
     Real torque = 0; ///< N·m
 };
 
