@@ -1,0 +1,153 @@
+// Off-screen rendering of a World to images and PNG files, with no display and no GPU: OpenGL
+// through OSMesa (Mesa's software rasterizer) into memory, drawn through the engine's DebugDraw
+// interface, supersampled and averaged down on the CPU for anti-aliasing. Everything here is
+// deterministic: the same world, camera and options give the same bytes.
+#pragma once
+
+#include "meff/debug_draw.h"
+#include "meff/error.h"
+#include "meff/world.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace meff::render
+{
+
+/// Rendering could not be done: no OSMesa context, a size it cannot handle, a PNG that cannot
+/// be written or read.
+class RenderError : public Error
+{
+  public:
+    using Error::Error;
+};
+
+/// The largest width or height of an image (pixels).
+inline constexpr int kMaxImageSize = 8192;
+
+struct Rgb
+{
+    std::uint8_t r = 0;
+    std::uint8_t g = 0;
+    std::uint8_t b = 0;
+    friend bool operator==(Rgb, Rgb) = default;
+};
+
+/// The colour behind everything.
+inline constexpr Rgb kBackground{248, 248, 245};
+/// The caption and legend text.
+inline constexpr Rgb kTextColor{40, 40, 40};
+
+/// An 8-bit RGB image, rows top to bottom (as PNG stores them).
+struct Image
+{
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels; ///< width·height·3 bytes
+
+    Image() = default;
+    Image(int width_, int height_, Rgb fill = kBackground);
+    Rgb At(int x, int y) const;
+    void Set(int x, int y, Rgb color);
+};
+
+/// The colour a filled shape of DebugDraw colour `color` gets: half way to white, opaque, so
+/// that the outline (drawn in `color` itself) and the angle line stand out against the fill.
+Rgb FillColor(const DrawColor& color);
+/// `color` as 8-bit RGB (rounded), ignoring its opacity.
+Rgb ToRgb(const DrawColor& color);
+
+/// What the image shows: a world rectangle `height` metres tall centred on `center`; its width
+/// follows from the image's aspect ratio.
+struct Camera
+{
+    Vec2 center{};
+    Real height = 10; ///< m, > 0
+};
+
+/// A camera that shows every shape of the world as it is now, with a margin.
+Camera FitCamera(const World& world, int width, int height);
+
+/// An OSMesa context and its colour buffer, `width`×`height` output pixels drawn at
+/// `supersample`× that size. Makes itself current when a frame begins.
+class OffscreenRenderer
+{
+  public:
+    /// Throws RenderError if the size is out of range or no OSMesa context can be made.
+    /// `supersample` is lowered (down to 1) if the larger buffer would exceed OSMesa's limits
+    /// or a sensible amount of memory.
+    OffscreenRenderer(int width, int height, int supersample = 3);
+    ~OffscreenRenderer();
+    OffscreenRenderer(const OffscreenRenderer&) = delete;
+    OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
+
+    int Width() const;
+    int Height() const;
+    int Supersample() const;
+
+    /// Clears to kBackground and returns a DebugDraw that draws in world coordinates through
+    /// `camera`. Lines are one output pixel wide, points `size` output pixels across.
+    DebugDraw& BeginFrame(const Camera& camera);
+    /// Metres per output pixel under the current camera.
+    Real PixelSize() const;
+    /// The world point under output pixel (x, y), counted from the top-left corner.
+    Vec2 ScreenToWorld(double x, double y) const;
+    /// Finishes drawing and returns the image, averaged down from the supersampled buffer.
+    Image EndFrame();
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+/// One frame: what to draw on top of the world and the text to print.
+struct FrameOptions
+{
+    Camera camera{};
+    DrawFlags flags{};
+    /// Drawn after the world, through the same DebugDraw (e.g. another engine's bodies).
+    std::function<void(DebugDraw&)> overlay{};
+    std::string caption{}; ///< the text line at the top left; UTF-8
+    /// With a value: a legend under the caption, an arrow standing for this impulse (N·s)
+    /// drawn at flags.impulseScale, so arrows in the image can be read off against it.
+    std::optional<double> legendImpulse{};
+};
+
+/// Draws `world` (World::Draw), the overlay, the legend arrow and the text into one image.
+Image RenderFrame(OffscreenRenderer& renderer, const World& world, const FrameOptions& options);
+
+/// A "nice" value (1, 2 or 5 times a power of ten) at least `value` (> 0).
+double NiceCeil(double value);
+
+// Text: a 5×7 bitmap font built in (printable ASCII and the middle dot ·), drawn `scale`
+// pixels per font pixel with one pixel between characters.
+/// Width and height in pixels of `text` at `scale`.
+int TextWidth(std::string_view text, int scale);
+int TextHeight(int scale);
+/// Draws `text` with its top-left corner at (x, y); pixels outside the image are skipped.
+void DrawText(Image& image, int x, int y, std::string_view text, Rgb color, int scale);
+/// Blends `color` over a rectangle at opacity `alpha` in [0, 1] (a backing for text).
+void FillRect(Image& image, int x, int y, int width, int height, Rgb color, double alpha);
+
+// PNG files (libpng), 8-bit RGB, no time stamp or other varying chunk: the same image always
+// encodes to the same bytes.
+std::vector<std::uint8_t> EncodePng(const Image& image);
+/// Throws RenderError with libpng's reason.
+Image DecodePng(std::span<const std::uint8_t> bytes);
+Image ReadPng(const std::string& path);
+/// Writes to a temporary file beside `path` and renames it into place: the file appears whole
+/// or not at all. Throws RenderError.
+void WritePng(const std::string& path, const Image& image);
+
+/// The colour between stitched frames: darker than kBackground, so frames stay apart.
+inline constexpr Rgb kGapColor{200, 200, 200};
+/// Places images side by side, top-aligned, `gap` pixels apart, on `gapColor`.
+Image StitchHorizontally(std::span<const Image> images, int gap, Rgb gapColor = kGapColor);
+
+} // namespace meff::render

@@ -1,0 +1,535 @@
+// `meff render`: steps a scene and writes every K-th frame as a PNG, drawn off-screen through
+// OSMesa (render/), optionally with Box2D's bodies of the same frame on top, and optionally
+// assembled into a GIF or MP4 by ffmpeg.
+#include "commands.h"
+#include "output_file.h"
+#include "plot_program.h"
+
+#include "meff/box2d_mirror.h"
+#include "meff/render.h"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace meff::cli
+{
+
+namespace
+{
+
+struct RenderOptions
+{
+    std::string scenePath;
+    std::string outDirectory;
+    std::optional<int> frames;
+    int every = 1;
+    std::string size = "640x480";
+    std::string camera;
+    bool contacts = false;
+    bool impulses = false;
+    bool joints = false;
+    bool overlayBox2D = false;
+    std::string gifPath;
+    std::string mp4Path;
+};
+
+/// Every message of this command is one line starting with this.
+void Fail(const std::string& message)
+{
+    std::fprintf(stderr, "meff render: %s\n", message.c_str());
+}
+
+/// "WxH", each 1..kMaxImageSize.
+bool ParseSize(const std::string& text, int& width, int& height)
+{
+    char x = 0;
+    char rest = 0;
+    long w = 0, h = 0;
+    if (std::sscanf(text.c_str(), "%ld%c%ld%c", &w, &x, &h, &rest) != 3 || (x != 'x' && x != 'X'))
+    {
+        return false;
+    }
+    if (w < 1 || h < 1 || w > render::kMaxImageSize || h > render::kMaxImageSize)
+    {
+        return false;
+    }
+    width = int(w);
+    height = int(h);
+    return true;
+}
+
+/// "x,y,height": finite numbers, height > 0.
+bool ParseCamera(const std::string& text, render::Camera& camera)
+{
+    std::vector<double> values;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ','))
+    {
+        char* end = nullptr;
+        const double value = std::strtod(item.c_str(), &end);
+        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(value))
+        {
+            return false;
+        }
+        values.push_back(value);
+    }
+    if (values.size() != 3 || !(values[2] > 0))
+    {
+        return false;
+    }
+    camera.center = Vec2{Real(values[0]), Real(values[1])};
+    camera.height = Real(values[2]);
+    return true;
+}
+
+/// The full path of `program` found on PATH, or empty.
+std::string FindOnPath(const std::string& program)
+{
+    const char* path = std::getenv("PATH");
+    std::stringstream stream(path != nullptr ? path : "");
+    std::string directory;
+    while (std::getline(stream, directory, ':'))
+    {
+        const std::string candidate = (directory.empty() ? "." : directory) + "/" + program;
+        if (::access(candidate.c_str(), X_OK) == 0 && !std::filesystem::is_directory(candidate))
+        {
+            return candidate;
+        }
+    }
+    return {};
+}
+
+/// Box2D's bodies as outlines: what the mirror computed for the same frame. Where they hide
+/// exactly behind meff's outlines, the engines agree.
+void DrawBox2D(const Scene& scene, const validation::Box2DMirror& mirror, DebugDraw& draw)
+{
+    const DrawColor color{0.0f, 0.40f, 1.0f};
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        const b2Body* body = mirror.Body(i);
+        const b2Transform& xf = body->GetTransform();
+        const auto toMeff = [&](const b2Vec2& local)
+        {
+            const b2Vec2 p = b2Mul(xf, local);
+            return Vec2{Real(p.x), Real(p.y)};
+        };
+        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr;
+             fixture = fixture->GetNext())
+        {
+            const b2Shape* shape = fixture->GetShape();
+            switch (shape->GetType())
+            {
+            case b2Shape::e_circle:
+            {
+                const auto* circle = static_cast<const b2CircleShape*>(shape);
+                const Vec2 center = toMeff(circle->m_p);
+                draw.DrawCircle(center, Real(circle->m_radius), color);
+                const b2Vec2 axis = xf.q.GetXAxis();
+                draw.DrawSegment(center, center + Real(circle->m_radius) * Vec2{axis.x, axis.y},
+                                 color);
+                break;
+            }
+            case b2Shape::e_polygon:
+            {
+                const auto* polygon = static_cast<const b2PolygonShape*>(shape);
+                Vec2 vertices[b2_maxPolygonVertices];
+                for (int k = 0; k < polygon->m_count; ++k)
+                {
+                    vertices[k] = toMeff(polygon->m_vertices[k]);
+                }
+                draw.DrawPolygon(std::span<const Vec2>(vertices, std::size_t(polygon->m_count)),
+                                 color);
+                break;
+            }
+            case b2Shape::e_edge:
+            {
+                const auto* edge = static_cast<const b2EdgeShape*>(shape);
+                draw.DrawSegment(toMeff(edge->m_vertex1), toMeff(edge->m_vertex2), color);
+                break;
+            }
+            default:
+                break;
+            }
+        }
+    }
+}
+
+/// The largest contact normal impulse and joint reaction impulse over the run, from a separate
+/// world stepped ahead: one arrow scale for the whole sequence, so that arrows compare across
+/// frames. A run that fails part way gives what it reached (the real run reports the failure).
+double LargestImpulse(const Scene& scene, int frames)
+{
+    BuiltScene built = BuildWorld(scene);
+    const Real dt = Real(scene.world.dt);
+    double largest = 0;
+    try
+    {
+        for (int frame = 1; frame <= frames; ++frame)
+        {
+            built.world.Step(dt);
+            for (const ContactPointReport& contact : built.world.GetContactReports())
+            {
+                largest = std::max(largest, std::abs(double(contact.normalImpulse)));
+            }
+            for (const JointId joint : built.joints)
+            {
+                const JointReaction reaction = built.world.GetReaction(joint, Real(1));
+                largest = std::max(largest, double(reaction.force.Length()));
+            }
+        }
+    }
+    catch (const SimulationError&)
+    {
+    }
+    return largest;
+}
+
+/// A progress bar on stderr, drawn only on a terminal (a log file would fill with \r lines).
+class Progress
+{
+  public:
+    Progress(std::string label, int total)
+        : m_label(std::move(label)), m_total(total), m_enabled(::isatty(STDERR_FILENO) == 1)
+    {
+    }
+    ~Progress() { Finish(); }
+
+    void Update(int done)
+    {
+        if (!m_enabled)
+        {
+            return;
+        }
+        constexpr int kWidth = 30;
+        const int filled = m_total > 0 ? int((long long)done * kWidth / m_total) : kWidth;
+        std::string bar(std::size_t(filled), '#');
+        bar.resize(kWidth, '.');
+        std::fprintf(stderr, "\r%s [%s] %d/%d frames", m_label.c_str(), bar.c_str(), done, m_total);
+        std::fflush(stderr);
+        m_shown = true;
+    }
+
+    void Finish()
+    {
+        if (m_shown)
+        {
+            std::fputc('\n', stderr);
+            m_shown = false;
+        }
+    }
+
+  private:
+    std::string m_label;
+    int m_total = 0;
+    bool m_enabled = false;
+    bool m_shown = false;
+};
+
+std::string FramePath(const std::filesystem::path& directory, int index)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", index);
+    return (directory / name).string();
+}
+
+/// Assembles the frames with ffmpeg into a temporary file beside `output`, renamed into place
+/// only when ffmpeg succeeded.
+bool Assemble(const std::string& ffmpeg, const std::filesystem::path& directory, int count,
+              double framesPerSecond, const std::string& output, bool gif)
+{
+    const std::filesystem::path destination(output);
+    const std::string temporary =
+        (destination.parent_path() /
+         ("." + destination.filename().string() + "." + std::to_string(::getpid()) + ".tmp"))
+            .string();
+    char rate[32];
+    std::snprintf(rate, sizeof rate, "%.6g", framesPerSecond);
+    std::vector<std::string> arguments = {ffmpeg, "-hide_banner", "-loglevel", "error", "-y",
+                                          "-framerate", rate, "-i",
+                                          (directory / "frame_%05d.png").string(),
+                                          // Frames left over from an earlier, longer render
+                                          // into the same directory are not part of this one.
+                                          "-frames:v", std::to_string(count)};
+    if (gif)
+    {
+        // A palette made from the frames themselves: GIF's 256 colours, chosen well.
+        arguments.insert(
+            arguments.end(),
+            {"-filter_complex", "[0:v]split[a][b];[a]palettegen[p];[b][p]paletteuse", "-f", "gif"});
+    }
+    else
+    {
+        // H.264 in yuv420p (what players accept) needs even dimensions.
+        arguments.insert(arguments.end(),
+                         {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf",
+                          "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-movflags", "+faststart", "-f", "mp4"});
+    }
+    arguments.push_back(temporary);
+    // Without a shell: no quoting problems with odd file names.
+    const int status = RunProgram(arguments, false);
+    if (status != 0 || std::rename(temporary.c_str(), output.c_str()) != 0)
+    {
+        std::remove(temporary.c_str());
+        Fail(status != 0 ? "ffmpeg failed (exit status " + std::to_string(status) + ") making " +
+                               output + "; the frames are in " + directory.string()
+                         : "cannot write " + output);
+        return false;
+    }
+    return true;
+}
+
+int Run(const RenderOptions& options)
+{
+    const auto start = std::chrono::steady_clock::now();
+
+    // Everything that can be checked before any work is, so that bad input costs nothing and
+    // leaves nothing behind.
+    int width = 0, height = 0;
+    if (!ParseSize(options.size, width, height))
+    {
+        Fail("--size must be WxH with each between 1 and " + std::to_string(render::kMaxImageSize) +
+             ", got " + options.size);
+        return kExitBadInput;
+    }
+    std::optional<render::Camera> camera;
+    if (!options.camera.empty() && !ParseCamera(options.camera, camera.emplace()))
+    {
+        Fail("--camera must be x,y,height with height > 0, got " + options.camera);
+        return kExitBadInput;
+    }
+    const bool gif = !options.gifPath.empty();
+    const std::string moviePath = gif ? options.gifPath : options.mp4Path;
+    std::string ffmpeg;
+    if (!moviePath.empty())
+    {
+        ffmpeg = FindOnPath("ffmpeg");
+        if (ffmpeg.empty())
+        {
+            Fail(std::string(gif ? "--gif" : "--mp4") +
+                 " needs ffmpeg, which is not installed (not found on PATH); install it (Debian: "
+                 "apt-get install ffmpeg) or render the PNG frames alone");
+            return kExitBadInput;
+        }
+    }
+
+    const std::optional<Scene> scene = LoadSceneOrReport(options.scenePath);
+    if (!scene)
+    {
+        return kExitBadInput;
+    }
+    std::optional<BuiltScene> built;
+    try
+    {
+        built.emplace(BuildWorld(*scene));
+    }
+    catch (const SceneError& error)
+    {
+        for (const std::string& message : error.messages())
+        {
+            std::fprintf(stderr, "%s\n", message.c_str());
+        }
+        return kExitBadInput;
+    }
+    const int frames = options.frames.value_or(scene->world.frames);
+
+    const std::filesystem::path directory(options.outDirectory);
+    try
+    {
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
+        if (error)
+        {
+            throw std::runtime_error("cannot create " + directory.string() + ": " +
+                                     error.message());
+        }
+        // A trial file, discarded unwritten: proves the directory (and the movie's) can be
+        // written to before a single frame is drawn.
+        OutputFile probe(FramePath(directory, 0));
+        if (!moviePath.empty())
+        {
+            OutputFile movieProbe(moviePath);
+        }
+    }
+    catch (const std::runtime_error& error)
+    {
+        Fail(error.what());
+        return kExitBadInput;
+    }
+
+    std::optional<render::OffscreenRenderer> renderer;
+    try
+    {
+        renderer.emplace(width, height);
+    }
+    catch (const render::RenderError& error)
+    {
+        Fail(error.what());
+        return kExitBadInput;
+    }
+
+    // The camera: --camera, else the scene's render.camera, else the bodies at frame 0.
+    if (!camera && scene->camera)
+    {
+        camera = render::Camera{Vec2{Real(scene->camera->center.x), Real(scene->camera->center.y)},
+                                Real(scene->camera->height)};
+    }
+    render::FrameOptions frameOptions;
+    frameOptions.camera = camera.value_or(render::FitCamera(built->world, width, height));
+    const double pixel = double(frameOptions.camera.height) / height;
+    DrawFlags& flags = frameOptions.flags;
+    flags.joints = options.joints;
+    flags.contacts = options.contacts;
+    flags.contactImpulses = options.impulses;
+    flags.jointReactions = options.impulses;
+    // Sizes in pixels, whatever the zoom.
+    flags.normalLength = Real(20 * pixel);
+    flags.arrowHead = Real(7 * pixel);
+    flags.pointSize = 5;
+    if (options.impulses)
+    {
+        // The largest arrow of the run spans a sixth of the image height; the legend shows a
+        // round impulse near a quarter of it.
+        const double largest = LargestImpulse(*scene, frames);
+        const double reference = largest > 0 ? largest : 1.0;
+        flags.impulseScale = Real(double(frameOptions.camera.height) / 6 / reference);
+        frameOptions.legendImpulse = render::NiceCeil(reference / 4);
+    }
+
+    std::optional<validation::Box2DMirror> mirror;
+    if (options.overlayBox2D)
+    {
+        mirror.emplace(*scene);
+        frameOptions.overlay = [&](DebugDraw& draw) { DrawBox2D(*scene, *mirror, draw); };
+    }
+
+    const int count = frames / options.every + 1;
+    const Real dt = Real(scene->world.dt);
+    Progress progress("rendering " + scene->name, count);
+    int written = 0;
+    try
+    {
+        for (int frame = 0; frame <= frames; ++frame)
+        {
+            if (frame > 0)
+            {
+                built->world.Step(dt);
+                if (mirror)
+                {
+                    mirror->Step();
+                }
+            }
+            if (frame % options.every != 0)
+            {
+                continue;
+            }
+            char caption[256];
+            std::snprintf(caption, sizeof caption, "%s  frame %d  t = %.3f s%s",
+                          scene->name.c_str(), frame, frame * scene->world.dt,
+                          mirror ? "  (blue: Box2D)" : "");
+            frameOptions.caption = caption;
+            const render::Image image = render::RenderFrame(*renderer, built->world, frameOptions);
+            const std::vector<std::uint8_t> png = render::EncodePng(image);
+            OutputFile file(FramePath(directory, written));
+            std::fwrite(png.data(), 1, png.size(), file.Stream());
+            file.Commit();
+            ++written;
+            progress.Update(written);
+        }
+    }
+    catch (const SimulationError& error)
+    {
+        progress.Finish();
+        std::fprintf(stderr,
+                     "%s: simulation failed at step %" PRIu64 ": %s; %d frames were written\n",
+                     options.scenePath.c_str(), error.step, error.what(), written);
+        return kExitRunFailed;
+    }
+    catch (const std::runtime_error& error)
+    {
+        progress.Finish();
+        Fail(error.what());
+        return kExitRunFailed;
+    }
+    progress.Finish();
+
+    if (!moviePath.empty() && !Assemble(ffmpeg, directory, written,
+                                        1.0 / (scene->world.dt * options.every), moviePath, gif))
+    {
+        return kExitRunFailed;
+    }
+
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: %d frame%s (%dx%d, %dx supersampled) written to %s in %.3f s%s%s\n",
+                scene->name.c_str(), written, written == 1 ? "" : "s", width, height,
+                renderer->Supersample(), directory.string().c_str(), seconds,
+                moviePath.empty() ? "" : "; ", moviePath.c_str());
+    return kExitOk;
+}
+
+} // namespace
+
+Command AddRenderCommand(CLI::App& parent)
+{
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* app = parent.add_subcommand(
+        "render",
+        "Render a scene off-screen (OSMesa, no display needed) to DIR/frame_00000.png, "
+        "frame_00001.png, ...: every K-th frame, frame 0 being the initial state.\n"
+        "Shapes are filled and outlined, with a line from the centre showing the angle; "
+        "static, kinematic and dynamic bodies in different colours. Each PNG is written whole "
+        "or not at all.");
+    app->add_option("scene", options->scenePath, "Scene file (JSON; see docs/scene-format.md)")
+        ->required()
+        ->type_name("SCENE.json");
+    app->add_option("--out", options->outDirectory, "Directory for the frames (created if missing)")
+        ->required()
+        ->type_name("DIR");
+    app->add_option("--frames", options->frames,
+                    "Number of steps to run (default: the scene's world.frames)")
+        ->type_name("N")
+        ->check(CLI::Range(0, INT_MAX));
+    app->add_option("--every", options->every, "Write every K-th frame (default 1)")
+        ->type_name("K")
+        ->check(CLI::Range(1, INT_MAX));
+    app->add_option("--size", options->size, "Image size in pixels, each 1..8192 (default 640x480)")
+        ->type_name("WxH");
+    app->add_option("--camera", options->camera,
+                    "World point at the image centre and world height shown, in metres "
+                    "(default: the scene's render.camera, else fit to the bodies at frame 0)")
+        ->type_name("x,y,height");
+    app->add_flag("--contacts", options->contacts, "Draw contact points and normals");
+    app->add_flag("--impulses", options->impulses,
+                  "Draw arrows proportional to each contact's normal impulse and each joint's "
+                  "reaction impulse (one scale for the run, shown in a legend)");
+    app->add_flag("--joints", options->joints,
+                  "Draw joints: their anchors and the lines linking them to their bodies");
+    app->add_flag("--overlay-box2d", options->overlayBox2D,
+                  "Draw Box2D 2.4.1's bodies of the same frame as blue outlines over meff's");
+    CLI::Option* gif = app->add_option("--gif", options->gifPath,
+                                       "Also assemble the frames into an animated GIF (ffmpeg)")
+                           ->type_name("FILE");
+    CLI::Option* mp4 = app->add_option("--mp4", options->mp4Path,
+                                       "Also assemble the frames into an H.264 MP4 (ffmpeg)")
+                           ->type_name("FILE");
+    gif->excludes(mp4);
+    return {app, [options] { return Run(*options); }};
+}
+
+} // namespace meff::cli

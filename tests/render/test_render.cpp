@@ -1,0 +1,227 @@
+// The off-screen renderer: the same world gives the same bytes, and pixels mean what they
+// should (a circle is where the camera says, a body moving right moves right in the image).
+#include "meff/render.h"
+#include "meff/scene.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace meff;
+using namespace meff::render;
+
+namespace
+{
+
+constexpr DrawColor kRed{1, 0, 0};
+
+/// No gravity, one dynamic circle of radius 0.5 m at `position` moving at `velocity`.
+World OneCircle(Vec2 position, Vec2 velocity = {})
+{
+    World world{WorldDef{.gravity = {0, 0}}};
+    const BodyId body = world.CreateBody(
+        BodyDef{.type = BodyType::Dynamic, .position = position, .linearVelocity = velocity});
+    world.CreateShape(body, ShapeDef{}, Circle{{0, 0}, Real(0.5)});
+    return world;
+}
+
+/// A camera 10 m tall centred on the origin: 20 pixels per metre in a 200×200 image, so world
+/// (x, y) lands on pixel (100 + 20x, 100 − 20y).
+FrameOptions RedOptions()
+{
+    FrameOptions options;
+    options.camera = Camera{{0, 0}, 10};
+    options.flags.colors.dynamicBody = kRed;
+    return options;
+}
+
+/// The mean column of the pixels that carry the circle's fill colour, or -1 if none do.
+double FillCentroidX(const Image& image, Rgb fill)
+{
+    double sum = 0;
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+    {
+        for (int x = 0; x < image.width; ++x)
+        {
+            if (image.At(x, y) == fill)
+            {
+                sum += x;
+                ++count;
+            }
+        }
+    }
+    return count > 0 ? sum / count : -1;
+}
+
+std::vector<std::uint8_t> RenderScenePng(const Scene& scene, int steps, const DrawFlags& flags)
+{
+    BuiltScene built = BuildWorld(scene);
+    for (int i = 0; i < steps; ++i)
+    {
+        built.world.Step(Real(scene.world.dt));
+    }
+    // A fresh context each time: nothing may carry over from an earlier frame or renderer.
+    OffscreenRenderer renderer(320, 240);
+    FrameOptions options;
+    options.camera = FitCamera(built.world, 320, 240);
+    options.flags = flags;
+    options.caption = scene.name + "  frame " + std::to_string(steps);
+    options.legendImpulse = 1.0;
+    return EncodePng(RenderFrame(renderer, built.world, options));
+}
+
+} // namespace
+
+TEST_CASE("Rendering the same scene twice gives byte-identical PNGs", "[render]")
+{
+    const Scene scene = LoadScene(
+        (std::filesystem::path(MEFF_SOURCE_DIR) / "samples/scenes/pyramid20.json").string());
+    const DrawFlags flags{
+        .joints = true, .contacts = true, .contactImpulses = true, .jointReactions = true};
+    const std::vector<std::uint8_t> first = RenderScenePng(scene, 30, flags);
+    const std::vector<std::uint8_t> second = RenderScenePng(scene, 30, flags);
+    REQUIRE(first.size() > 1000);
+    CHECK(first == second);
+    // And the picture does depend on the state: a later frame differs.
+    CHECK(RenderScenePng(scene, 31, flags) != first);
+}
+
+TEST_CASE("A red circle is drawn where the camera puts it", "[render]")
+{
+    const World world = OneCircle({2, 1}); // pixel (140, 80), radius 10 pixels
+    OffscreenRenderer renderer(200, 200);
+    const Image image = RenderFrame(renderer, world, RedOptions());
+    REQUIRE(image.width == 200);
+    REQUIRE(image.height == 200);
+
+    const Rgb fill = FillColor(kRed);
+    // The centre itself carries the angle line (red, along +x); just beside it is fill.
+    CHECK(image.At(140, 80 + 4) == fill);
+    CHECK(image.At(140, 80 - 5) == fill);
+    CHECK(image.At(140 - 5, 80 + 2) == fill);
+    const Rgb centre = image.At(142, 80);
+    CHECK(int(centre.r) > int(centre.g) + 60);
+    // The outline is red, the colour DebugDraw was given: on the circle's left edge.
+    const Rgb edge = image.At(130, 80);
+    CHECK(int(edge.r) > int(edge.g) + 60);
+    // Away from it: background.
+    CHECK(image.At(140 + 15, 80) == kBackground);
+    CHECK(image.At(140, 80 + 15) == kBackground);
+    CHECK(image.At(20, 180) == kBackground);
+    CHECK(image.At(199, 199) == kBackground);
+    // The fill's centroid is the circle's centre, to a fraction of a pixel.
+    CHECK(FillCentroidX(image, fill) == Approx(140).margin(1.0));
+}
+
+TEST_CASE("A body that moves right moves right in the image", "[render]")
+{
+    World world = OneCircle({-2, 0}, {3, 0});
+    OffscreenRenderer renderer(200, 200);
+    const FrameOptions options = RedOptions();
+    const Rgb fill = FillColor(kRed);
+
+    const double before = FillCentroidX(RenderFrame(renderer, world, options), fill);
+    for (int i = 0; i < 30; ++i)
+    {
+        world.Step(Real(1) / Real(60));
+    }
+    const double after = FillCentroidX(RenderFrame(renderer, world, options), fill);
+    REQUIRE(before > 0);
+    REQUIRE(after > 0);
+    // 3 m/s for half a second: 1.5 m, 30 pixels to the right.
+    CHECK(before == Approx(100 - 40).margin(1.0));
+    CHECK(after - before == Approx(30).margin(1.0));
+}
+
+TEST_CASE("The camera fits the bodies and keeps the image's aspect", "[render]")
+{
+    World world{WorldDef{}};
+    const BodyId ground = world.CreateBody(BodyDef{});
+    world.CreateShape(ground, ShapeDef{}, Segment{{-10, 0}, {10, 0}});
+    const BodyId box = world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = {0, 3}});
+    world.CreateShape(box, ShapeDef{}, MakeBox(1, 1));
+    const Camera camera = FitCamera(world, 400, 200);
+    // 20 m wide at 2:1 needs 10 m of height, plus the margin; centred on the bounds.
+    CHECK(double(camera.height) > 10);
+    CHECK(double(camera.height) < 14);
+    CHECK(double(camera.center.x) == Approx(0).margin(1e-6));
+    CHECK(double(camera.center.y) == Approx(2).margin(0.02));
+}
+
+TEST_CASE("Renderer sizes outside 1..8192 are refused", "[render]")
+{
+    CHECK_THROWS_AS(OffscreenRenderer(0, 100), RenderError);
+    CHECK_THROWS_AS(OffscreenRenderer(100, 0), RenderError);
+    CHECK_THROWS_AS(OffscreenRenderer(kMaxImageSize + 1, 100), RenderError);
+    const OffscreenRenderer one(1, 1);
+    CHECK(one.Supersample() >= 1);
+}
+
+TEST_CASE("Text uses the built-in 5x7 font", "[render]")
+{
+    CHECK(TextWidth("", 1) == 0);
+    CHECK(TextWidth("I", 1) == 5);
+    CHECK(TextWidth("ab", 2) == 22);
+    CHECK(TextWidth("N\xC2\xB7s", 1) == 17); // the middle dot is one character
+    CHECK(TextHeight(3) == 21);
+
+    Image image(20, 10, Rgb{255, 255, 255});
+    DrawText(image, 1, 1, "I", Rgb{0, 0, 0}, 1);
+    // 'I': a bar across the top and bottom rows, a stem in the middle column.
+    CHECK(image.At(2, 1) == Rgb{0, 0, 0});
+    CHECK(image.At(3, 4) == Rgb{0, 0, 0});
+    CHECK(image.At(1, 4) == Rgb{255, 255, 255});
+    CHECK(image.At(4, 7) == Rgb{0, 0, 0});
+    CHECK(image.At(10, 4) == Rgb{255, 255, 255});
+}
+
+TEST_CASE("PNGs round-trip exactly and are written whole", "[render]")
+{
+    Image image(7, 5);
+    image.Set(3, 2, Rgb{10, 200, 30});
+    const std::vector<std::uint8_t> bytes = EncodePng(image);
+    const Image decoded = DecodePng(bytes);
+    CHECK(decoded.width == 7);
+    CHECK(decoded.height == 5);
+    CHECK(decoded.pixels == image.pixels);
+
+    const std::filesystem::path directory =
+        std::filesystem::temp_directory_path() / "meff_render_test_png";
+    std::filesystem::remove_all(directory);
+    std::filesystem::create_directories(directory);
+    const std::string path = (directory / "x.png").string();
+    WritePng(path, image);
+    CHECK(ReadPng(path).pixels == image.pixels);
+    // Only the file itself: the temporary it was written through is gone.
+    CHECK(std::distance(std::filesystem::directory_iterator(directory),
+                        std::filesystem::directory_iterator()) == 1);
+    CHECK_THROWS_AS(WritePng((directory / "missing" / "y.png").string(), image), RenderError);
+    CHECK_THROWS_AS(DecodePng(std::vector<std::uint8_t>{1, 2, 3}), RenderError);
+    std::filesystem::remove_all(directory);
+}
+
+TEST_CASE("Frames stitch side by side", "[render]")
+{
+    const std::vector<Image> frames = {Image(3, 2, Rgb{1, 1, 1}), Image(4, 3, Rgb{2, 2, 2})};
+    const Image strip = StitchHorizontally(frames, 1);
+    CHECK(strip.width == 8);
+    CHECK(strip.height == 3);
+    CHECK(strip.At(0, 0) == Rgb{1, 1, 1});
+    CHECK(strip.At(3, 0) == kGapColor);
+    CHECK(strip.At(4, 2) == Rgb{2, 2, 2});
+    CHECK(strip.At(0, 2) == kGapColor);
+}
+
+TEST_CASE("NiceCeil picks 1, 2 or 5 times a power of ten", "[render]")
+{
+    CHECK(NiceCeil(0.7) == Approx(1));
+    CHECK(NiceCeil(1) == Approx(1));
+    CHECK(NiceCeil(1.2) == Approx(2));
+    CHECK(NiceCeil(3) == Approx(5));
+    CHECK(NiceCeil(0.031) == Approx(0.05));
+    CHECK(NiceCeil(600) == Approx(1000));
+}
