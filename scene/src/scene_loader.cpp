@@ -530,6 +530,12 @@ std::optional<std::size_t> ReadAnalyticJoint(ObjectReader& reader, const std::st
         return std::nullopt;
     }
     const SceneJoint& joint = scene.joints[found->second];
+    if (joint.bodyIndexA >= scene.bodies.size())
+    {
+        // The joint failed its own checks (body_a missing or naming no body), which are
+        // reported already; its index is not a body's (found by the scene fuzzer).
+        return std::nullopt;
+    }
     if (scene.bodies[joint.bodyIndexA].type != BodyType::Static)
     {
         reader.Diag().Report(reader.PathOf(key),
