@@ -58,7 +58,10 @@ for k in range(N):
         if i > 0:
             joints.append({"type": "revolute", "name": f"up{k}_{i}", "body_a": f"c{k}_{i - 1}",
                            "body_b": f"c{k}_{i}", "anchor": [k, -i + 0.5]})
-        if k > 0:
+        # Box2D v3 also joins neighbouring static bodies of the top row; such a joint never
+        # enters an island and does nothing, and meff's loader refuses it, so it is left out.
+        left_static = i == 0 and N // 2 - 3 <= k - 1 and k <= N // 2 + 3
+        if k > 0 and not (static and left_static):
             joints.append({"type": "revolute", "name": f"left{k}_{i}",
                            "body_a": f"c{k - 1}_{i}", "body_b": f"c{k}_{i}",
                            "anchor": [k - 0.5, -i]})

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs everything meff needs from Debian 12's packages. Needs root (or sudo).
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+# clang-14 and libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes; only recommended
+# by clang-14, so named here): the scene loader's fuzz target, fuzz/, which .ci/run runs.
+$SUDO apt-get install -y -qq --no-install-recommends \
+    g++ cmake make pkg-config \
+    catch2 libbox2d-dev libosmesa6-dev libpng-dev nlohmann-json3-dev libcli11-dev \
+    libbenchmark-dev python3 python3-matplotlib \
+    clang-14 libclang-rt-14-dev >/dev/null

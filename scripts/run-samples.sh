@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The main job: installs what is needed, builds, runs every bundled sample scene, validates each
+# against Box2D 2.4.1, and renders one sample to PNG frames. Everything is written under out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+scripts/build.sh
+MEFF=build/samples/meff/meff
+mkdir -p out/trajectories
+for scene in samples/scenes/*.json; do
+    name=$(basename "$scene" .json)
+    "$MEFF" run "$scene" --trajectory "out/trajectories/$name.csv" \
+        --contacts "out/trajectories/$name.contacts.csv" --joints "out/trajectories/$name.joints.csv"
+done
+"$MEFF" validate samples/scenes/*.json --report out/validation
+"$MEFF" render samples/scenes/newtons_cradle.json --out out/frames/newtons_cradle --every 4 --joints
+echo
+echo "Trajectories:       out/trajectories/<scene>.csv (+ .contacts.csv, .joints.csv)"
+echo "Validation reports: out/validation/<scene>/summary.json, divergence.csv, errors.png"
+echo "Rendered frames:    out/frames/newtons_cradle/frame_*.png"
