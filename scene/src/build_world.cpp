@@ -32,6 +32,7 @@ WorldDef MakeWorldDef(const SceneWorldSettings& settings)
     def.solver.warmStarting = settings.warmStarting;
     def.solver.blockSolver = settings.blockSolver;
     def.solver.blockJoints = settings.blockJoints;
+    def.solver.restitutionFromStepStart = settings.restitutionFromStepStart;
     def.allowSleep = settings.allowSleep;
     def.continuous = settings.continuous;
     return def;

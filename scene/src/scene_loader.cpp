@@ -135,6 +135,8 @@ void ReadWorld(ObjectReader& reader, SceneWorldSettings& world)
     Assign(world.warmStarting, reader.Boolean("warm_starting", defaults.warmStarting));
     Assign(world.blockSolver, reader.Boolean("block_solver", defaults.blockSolver));
     Assign(world.blockJoints, reader.Boolean("block_joints", defaults.blockJoints));
+    Assign(world.restitutionFromStepStart,
+           reader.Boolean("restitution_from_step_start", defaults.restitutionFromStepStart));
     Assign(world.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
     Assign(world.continuous, reader.Boolean("continuous", defaults.continuous));
     reader.Finish();

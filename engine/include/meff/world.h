@@ -44,6 +44,11 @@ struct SolverSettings
     bool blockSolver = true;
     /// Solve a revolute joint's point constraint as a 2×2 block (Box2D). Off: two scalar rows.
     bool blockJoints = true;
+    /// Where restitution's approach speed vn is measured (the bounce targets −e·vn).
+    /// Off (Box2D 2.4.1): after this step's gravity was added, so every bounce returns g·dt
+    /// more speed than arrived and e = 1 gains energy bounce after bounce. On: at the start of
+    /// the step, so restitution never adds energy (results then differ from Box2D's).
+    bool restitutionFromStepStart = false;
 };
 
 /// Everything needed to create a world.

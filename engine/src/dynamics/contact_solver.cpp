@@ -110,8 +110,13 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
         worldManifold.Initialize(manifold, xfA, pc.radiusA, xfB, pc.radiusB);
         vc.normal = worldManifold.normal;
         const Vec2 tangent = Cross(vc.normal, Real(1));
-        const Velocity velA = data.velocities[vc.indexA];
-        const Velocity velB = data.velocities[vc.indexB];
+        // The approach velocity for restitution: this step's (gravity already added, as Box2D)
+        // or the bodies' velocities at the start of the step (see restitutionFromStepStart).
+        const bool fromStepStart = data.step.solver.restitutionFromStepStart;
+        const Velocity velA = fromStepStart ? Velocity{bodyA.linearVelocity, bodyA.angularVelocity}
+                                            : data.velocities[vc.indexA];
+        const Velocity velB = fromStepStart ? Velocity{bodyB.linearVelocity, bodyB.angularVelocity}
+                                            : data.velocities[vc.indexB];
 
         for (int j = 0; j < vc.pointCount; ++j)
         {

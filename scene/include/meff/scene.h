@@ -44,8 +44,9 @@ struct SceneWorldSettings
     bool warmStarting = true;
     bool blockSolver = true; ///< 2×2 block solve of two-point manifolds
     bool blockJoints = true; ///< meff only: 2×2 block solve of revolute point constraints
-    bool allowSleep = false; ///< reserved (sleeping is not modelled yet)
-    bool continuous = false; ///< Box2D's continuous physics (time of impact)
+    bool restitutionFromStepStart = false; ///< meff only: see SolverSettings
+    bool allowSleep = false;               ///< reserved (sleeping is not modelled yet)
+    bool continuous = false;               ///< Box2D's continuous physics (time of impact)
 };
 
 enum class SceneShapeType
