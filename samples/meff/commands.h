@@ -50,4 +50,8 @@ Command AddSweepCommand(CLI::App& parent);
 /// Loads a scene; on failure prints every problem to stderr, one per line, and returns nullopt.
 std::optional<Scene> LoadSceneOrReport(const std::string& path);
 
+/// Builds a loaded scene's world; on failure prints every problem to stderr, one per line, and
+/// returns nullopt.
+std::optional<BuiltScene> BuildWorldOrReport(const Scene& scene);
+
 } // namespace meff::cli

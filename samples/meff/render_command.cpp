@@ -333,17 +333,9 @@ int Run(const RenderOptions& options)
     {
         return kExitBadInput;
     }
-    std::optional<BuiltScene> built;
-    try
+    std::optional<BuiltScene> built = BuildWorldOrReport(*scene);
+    if (!built)
     {
-        built.emplace(BuildWorld(*scene));
-    }
-    catch (const SceneError& error)
-    {
-        for (const std::string& message : error.messages())
-        {
-            std::fprintf(stderr, "%s\n", message.c_str());
-        }
         return kExitBadInput;
     }
     const int frames = options.frames.value_or(scene->world.frames);

@@ -202,17 +202,9 @@ int Run(const RunOptions& options)
     }
     const int frames = options.frames.value_or(scene->world.frames);
 
-    std::optional<BuiltScene> built;
-    try
+    std::optional<BuiltScene> built = BuildWorldOrReport(*scene);
+    if (!built)
     {
-        built.emplace(BuildWorld(*scene));
-    }
-    catch (const SceneError& error)
-    {
-        for (const std::string& message : error.messages())
-        {
-            std::fprintf(stderr, "%s\n", message.c_str());
-        }
         return kExitBadInput;
     }
 
@@ -274,6 +266,22 @@ std::optional<Scene> LoadSceneOrReport(const std::string& path)
     try
     {
         return LoadScene(path);
+    }
+    catch (const SceneError& error)
+    {
+        for (const std::string& message : error.messages())
+        {
+            std::fprintf(stderr, "%s\n", message.c_str());
+        }
+        return std::nullopt;
+    }
+}
+
+std::optional<BuiltScene> BuildWorldOrReport(const Scene& scene)
+{
+    try
+    {
+        return BuildWorld(scene);
     }
     catch (const SceneError& error)
     {

@@ -42,14 +42,7 @@ void ApplyImpulse(const DistanceJoint& joint, Vec2 P, Vec2& vA, Real& wA, Vec2& 
 void InitVelocityConstraints(DistanceJoint& joint, const JointBody& a, const JointBody& b,
                              SolverData& data)
 {
-    joint.indexA = a.solverIndex;
-    joint.indexB = b.solverIndex;
-    joint.localCenterA = a.localCenter;
-    joint.localCenterB = b.localCenter;
-    joint.invMassA = a.invMass;
-    joint.invMassB = b.invMass;
-    joint.invIA = a.invI;
-    joint.invIB = b.invI;
+    StoreJointBodies(joint, a, b);
 
     const Vec2 cA = data.positions[joint.indexA].c;
     const Real aA = data.positions[joint.indexA].a;

@@ -70,6 +70,21 @@ struct Joint
     std::variant<RevoluteJoint, DistanceJoint> data;
 };
 
+/// Stores what a joint's rows need of its two bodies for this step (every joint type has these
+/// members).
+template <typename JointData>
+void StoreJointBodies(JointData& joint, const JointBody& a, const JointBody& b)
+{
+    joint.indexA = a.solverIndex;
+    joint.indexB = b.solverIndex;
+    joint.localCenterA = a.localCenter;
+    joint.localCenterB = b.localCenter;
+    joint.invMassA = a.invMass;
+    joint.invMassB = b.invMass;
+    joint.invIA = a.invI;
+    joint.invIB = b.invI;
+}
+
 /// Builds the solver joint from a definition whose ids the world has already checked.
 /// massA/massB (kg, 0 for static) set a distance spring's stiffness as Box2D's
 /// b2LinearStiffness does. Throws InvalidArgument for non-finite or out-of-range values.

@@ -45,14 +45,7 @@ Real ScalarRowImpulse(Real jvPlusBias, Real k)
 void InitVelocityConstraints(RevoluteJoint& joint, const JointBody& a, const JointBody& b,
                              SolverData& data)
 {
-    joint.indexA = a.solverIndex;
-    joint.indexB = b.solverIndex;
-    joint.localCenterA = a.localCenter;
-    joint.localCenterB = b.localCenter;
-    joint.invMassA = a.invMass;
-    joint.invMassB = b.invMass;
-    joint.invIA = a.invI;
-    joint.invIB = b.invI;
+    StoreJointBodies(joint, a, b);
 
     const Real aA = data.positions[joint.indexA].a;
     Vec2 vA = data.velocities[joint.indexA].v;
