@@ -151,10 +151,12 @@ TEST_CASE("Scene errors: JSON syntax, with line and column", "[scene][errors]")
 
 TEST_CASE("Scene errors: missing fields", "[scene][errors]")
 {
-    CHECK(ErrorsOf(R"({ "bodies": [ { "type": "dynamic", "shapes": [ { "type": "circle", "radius": 1 } ] } ] })") ==
-          Messages{"x.json: meff_scene: required field is missing (the format version: write "
-                   "\"meff_scene\": 1)",
-                   "x.json: bodies[0].name: required field is missing"});
+    CHECK(
+        ErrorsOf(
+            R"({ "bodies": [ { "type": "dynamic", "shapes": [ { "type": "circle", "radius": 1 } ] } ] })") ==
+        Messages{"x.json: meff_scene: required field is missing (the format version: write "
+                 "\"meff_scene\": 1)",
+                 "x.json: bodies[0].name: required field is missing"});
     CHECK(ErrorsOf(SceneWithShape(R"({ "type": "box", "half_width": 1 })")) ==
           Messages{"x.json: bodies[0].shapes[0].half_height: required field is missing"});
 }

@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "test_random.h"
+
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -120,30 +122,7 @@ TEST_CASE("TimeOfImpact of a spinning box against a segment", "[toi]")
 namespace
 {
 
-class Random
-{
-  public:
-    explicit Random(std::uint64_t seed)
-        : m_state(seed * 6364136223846793005ull + 1442695040888963407ull)
-    {
-    }
-    std::uint32_t Next()
-    {
-        m_state ^= m_state << 13;
-        m_state ^= m_state >> 7;
-        m_state ^= m_state << 17;
-        return static_cast<std::uint32_t>(m_state >> 32);
-    }
-    float Uniform(float lo, float hi)
-    {
-        const double unit = static_cast<double>(Next()) / 4294967296.0;
-        return lo + static_cast<float>(unit) * (hi - lo);
-    }
-    int Index(int n) { return static_cast<int>(Next() % static_cast<std::uint32_t>(n)); }
-
-  private:
-    std::uint64_t m_state;
-};
+using meff::test::Random;
 
 struct ShapePair
 {
