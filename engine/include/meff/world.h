@@ -101,6 +101,19 @@ namespace detail
 struct WorldState;
 }
 
+/// The whole state of a world at one moment — bodies, shapes, joints, contacts with their
+/// warm-starting impulses, the broad phase — for World::RestoreSnapshot. Cheap to copy (shared).
+class WorldSnapshot
+{
+  public:
+    WorldSnapshot() = default;
+    bool IsEmpty() const { return m_state == nullptr; }
+
+  private:
+    friend class World;
+    std::shared_ptr<const detail::WorldState> m_state;
+};
+
 class World
 {
   public:
@@ -195,6 +208,18 @@ class World
     std::span<const ContactEvent> GetContactBeginEvents() const;
     std::span<const ContactEvent> GetContactEndEvents() const;
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
+
+    // Determinism and rollback
+    /// A 64-bit FNV-1a hash of every live body's transform, centre of mass and velocities and
+    /// every contact's impulses, bit for bit: equal hashes step after step show two runs
+    /// identical.
+    std::uint64_t GetStateHash() const;
+    /// Copies the whole world state. Stepping on from RestoreSnapshot(s) is bit-identical to
+    /// stepping on from the moment s was saved.
+    WorldSnapshot SaveSnapshot() const;
+    /// Returns the world to a snapshot of itself. Ids saved with the snapshot are valid again;
+    /// ids created later are not. Throws InvalidArgument for an empty snapshot.
+    void RestoreSnapshot(const WorldSnapshot& snapshot);
     int GetTouchingContactCount() const;
 
     // Drawing

@@ -1,0 +1,90 @@
+// Determinism and rollback: a hash of the simulated state, and whole-world snapshots.
+//
+// Every member of WorldState is a value (pools, lists as indices, the broad phase's node
+// vector, the warm-starting impulses in the manifolds), so a snapshot is a copy and restoring
+// it is an assignment: nothing is rebuilt, hence stepping on is bit-identical.
+#include "dynamics/world_state.h"
+#include "meff/world.h"
+
+#include <cstring>
+
+namespace meff
+{
+
+namespace
+{
+
+/// 64-bit FNV-1a over raw bytes.
+class Fnv1a
+{
+  public:
+    template <typename T>
+    void Add(const T& value)
+    {
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &value, sizeof(T));
+        for (const unsigned char b : bytes)
+        {
+            m_hash = (m_hash ^ b) * 0x100000001b3ull;
+        }
+    }
+    std::uint64_t Value() const { return m_hash; }
+
+  private:
+    std::uint64_t m_hash = 0xcbf29ce484222325ull;
+};
+
+} // namespace
+
+std::uint64_t World::GetStateHash() const
+{
+    Fnv1a hash;
+    for (const detail::Body& body : m_state->bodies)
+    {
+        if (!body.alive)
+        {
+            continue;
+        }
+        hash.Add(body.xf.p.x);
+        hash.Add(body.xf.p.y);
+        hash.Add(body.xf.q.s);
+        hash.Add(body.xf.q.c);
+        hash.Add(body.sweep.c.x);
+        hash.Add(body.sweep.c.y);
+        hash.Add(body.sweep.a);
+        hash.Add(body.linearVelocity.x);
+        hash.Add(body.linearVelocity.y);
+        hash.Add(body.angularVelocity);
+    }
+    for (const detail::Contact& contact : m_state->contacts)
+    {
+        if (!contact.alive)
+        {
+            continue;
+        }
+        for (int i = 0; i < contact.manifold.pointCount; ++i)
+        {
+            hash.Add(contact.manifold.points[i].normalImpulse);
+            hash.Add(contact.manifold.points[i].tangentImpulse);
+        }
+    }
+    return hash.Value();
+}
+
+WorldSnapshot World::SaveSnapshot() const
+{
+    WorldSnapshot snapshot;
+    snapshot.m_state = std::make_shared<const detail::WorldState>(*m_state);
+    return snapshot;
+}
+
+void World::RestoreSnapshot(const WorldSnapshot& snapshot)
+{
+    if (snapshot.IsEmpty())
+    {
+        throw InvalidArgument("World::RestoreSnapshot: the snapshot is empty");
+    }
+    *m_state = *snapshot.m_state;
+}
+
+} // namespace meff
