@@ -33,6 +33,13 @@ struct Tolerances
     Real toiBaumgarte = Real(0.75);
 };
 
+/// Tolerances for a world measured in `lengthUnitsPerMeter` units per metre (32 for a game
+/// that works in pixels at 32 px/m, say): every length tolerance — slop, skin, broad-phase
+/// margin, maximum correction, maximum translation — scales together; angles do not. Throws
+/// InvalidArgument unless the scale is finite and > 0. Gravity, sizes, speeds and each shape's
+/// restitution threshold (m/s) are yours to give in the same units.
+Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter);
+
 /// How the solver works. Every member may be changed between steps.
 struct SolverSettings
 {

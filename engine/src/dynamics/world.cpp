@@ -178,6 +178,20 @@ void ValidateShapeDef(const ShapeDef& def)
 
 } // namespace
 
+Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
+{
+    Require(meff::IsValid(lengthUnitsPerMeter) && lengthUnitsPerMeter > 0,
+            "TolerancesForLengthUnits: must be finite and > 0, got " +
+                std::to_string(lengthUnitsPerMeter));
+    Tolerances t;
+    t.linearSlop *= lengthUnitsPerMeter;
+    t.polygonSkin *= lengthUnitsPerMeter;
+    t.aabbMargin *= lengthUnitsPerMeter;
+    t.maxLinearCorrection *= lengthUnitsPerMeter;
+    t.maxTranslation *= lengthUnitsPerMeter;
+    return t;
+}
+
 World::World(const WorldDef& def)
 {
     RequireFinite(def.gravity, "WorldDef::gravity");
