@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "meff/world.h"
+#include "world_fixtures.h"
 
 #include <vector>
 
@@ -11,27 +12,9 @@ using namespace meff;
 namespace
 {
 
-/// Boxes and circles falling onto a segment into a pile: contacts come and go, warm starting
-/// matters, so any missed piece of state would show.
 World MakePile()
 {
-    World world;
-    const BodyId ground = world.CreateBody({});
-    world.CreateShape(ground, ShapeDef{}, Segment{{-20, 0}, {20, 0}});
-    for (int i = 0; i < 16; ++i)
-    {
-        const BodyId body = world.CreateBody(
-            {.type = BodyType::Dynamic, .position = {Real(0.37) * Real(i % 5), Real(1 + i)}});
-        if (i % 2 == 0)
-        {
-            world.CreateShape(body, ShapeDef{}, MakeBox(Real(0.4), Real(0.3)));
-        }
-        else
-        {
-            world.CreateShape(body, ShapeDef{.restitution = Real(0.3)}, Circle{{0, 0}, Real(0.35)});
-        }
-    }
-    return world;
+    return meff::test::MakePile(16, 5, Real(0.37), Real(0.3));
 }
 
 std::vector<std::uint64_t> Hashes(World& world, int steps)

@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "box2d_shape_pair.h"
 #include "test_random.h"
 
 #include <cmath>
@@ -128,76 +129,12 @@ namespace
 
 using meff::test::Random;
 
-/// One random shape in both engines.
-struct ShapePair
-{
-    std::unique_ptr<b2Shape> box2d;
-    DistanceProxy proxy;
-};
+using meff::test::ShapePair;
 
+/// Random shapes at this test's sizes (see box2d_shape_pair.h).
 ShapePair RandomShape(Random& rng)
 {
-    ShapePair pair;
-    switch (rng.Index(3))
-    {
-    case 0:
-    {
-        auto circle = std::make_unique<b2CircleShape>();
-        circle->m_p.Set(rng.Uniform(-0.5f, 0.5f), rng.Uniform(-0.5f, 0.5f));
-        circle->m_radius = rng.Uniform(0.05f, 1.0f);
-        pair.proxy = MakeProxy(Circle{{circle->m_p.x, circle->m_p.y}, circle->m_radius});
-        pair.box2d = std::move(circle);
-        break;
-    }
-    case 1:
-    {
-        auto edge = std::make_unique<b2EdgeShape>();
-        const b2Vec2 v1(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
-        const b2Vec2 v2(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
-        edge->SetTwoSided(v1, v2);
-        pair.proxy = MakeProxy(Segment{{v1.x, v1.y}, {v2.x, v2.y}, edge->m_radius});
-        pair.box2d = std::move(edge);
-        break;
-    }
-    default:
-    {
-        // A hull of random points; the same points give the same hull in both engines.
-        for (;;)
-        {
-            const int count = 3 + rng.Index(6);
-            std::vector<Vec2> points(count);
-            std::vector<b2Vec2> b2Points(count);
-            for (int i = 0; i < count; ++i)
-            {
-                points[i] = {rng.Uniform(-1, 1), rng.Uniform(-1, 1)};
-                b2Points[i].Set(points[i].x, points[i].y);
-            }
-            Polygon polygon;
-            try
-            {
-                polygon = MakePolygon(points);
-            }
-            catch (const InvalidArgument&)
-            {
-                continue;
-            }
-            auto shape = std::make_unique<b2PolygonShape>();
-            shape->Set(b2Points.data(), count);
-            REQUIRE(shape->m_count == polygon.count);
-            for (int i = 0; i < polygon.count; ++i)
-            {
-                REQUIRE(shape->m_vertices[i].x == polygon.vertices[i].x);
-                REQUIRE(shape->m_vertices[i].y == polygon.vertices[i].y);
-            }
-            polygon.radius = shape->m_radius;
-            pair.proxy = MakeProxy(polygon);
-            pair.box2d = std::move(shape);
-            break;
-        }
-        break;
-    }
-    }
-    return pair;
+    return meff::test::RandomShape(rng, {0.5f, 0.05f, 1.0f, 1.0f});
 }
 
 struct Pose

@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "box2d_shape_pair.h"
 #include "test_random.h"
 
 #include <cmath>
@@ -124,69 +125,12 @@ namespace
 
 using meff::test::Random;
 
-struct ShapePair
-{
-    std::unique_ptr<b2Shape> box2d;
-    DistanceProxy proxy;
-};
+using meff::test::ShapePair;
 
+/// Random shapes at this test's sizes (see box2d_shape_pair.h).
 ShapePair RandomShape(Random& rng)
 {
-    ShapePair pair;
-    switch (rng.Index(3))
-    {
-    case 0:
-    {
-        auto circle = std::make_unique<b2CircleShape>();
-        circle->m_p.Set(rng.Uniform(-0.3f, 0.3f), rng.Uniform(-0.3f, 0.3f));
-        circle->m_radius = rng.Uniform(0.02f, 0.8f);
-        pair.proxy = MakeProxy(Circle{{circle->m_p.x, circle->m_p.y}, circle->m_radius});
-        pair.box2d = std::move(circle);
-        break;
-    }
-    case 1:
-    {
-        auto edge = std::make_unique<b2EdgeShape>();
-        const b2Vec2 v1(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
-        const b2Vec2 v2(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
-        edge->SetTwoSided(v1, v2);
-        pair.proxy = MakeProxy(Segment{{v1.x, v1.y}, {v2.x, v2.y}, edge->m_radius});
-        pair.box2d = std::move(edge);
-        break;
-    }
-    default:
-    {
-        for (;;)
-        {
-            const int count = 3 + rng.Index(6);
-            std::vector<Vec2> points(count);
-            std::vector<b2Vec2> b2Points(count);
-            for (int i = 0; i < count; ++i)
-            {
-                points[i] = {rng.Uniform(-0.8f, 0.8f), rng.Uniform(-0.8f, 0.8f)};
-                b2Points[i].Set(points[i].x, points[i].y);
-            }
-            Polygon polygon;
-            try
-            {
-                polygon = MakePolygon(points);
-            }
-            catch (const InvalidArgument&)
-            {
-                continue;
-            }
-            auto shape = std::make_unique<b2PolygonShape>();
-            shape->Set(b2Points.data(), count);
-            REQUIRE(shape->m_count == polygon.count);
-            polygon.radius = shape->m_radius;
-            pair.proxy = MakeProxy(polygon);
-            pair.box2d = std::move(shape);
-            break;
-        }
-        break;
-    }
-    }
-    return pair;
+    return meff::test::RandomShape(rng, {0.3f, 0.02f, 0.8f, 0.8f});
 }
 
 struct SweepPair

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "meff/world.h"
+#include "world_fixtures.h"
 
 #include <atomic>
 #include <cstdlib>
@@ -68,26 +69,9 @@ using namespace meff;
 namespace
 {
 
-/// A small pile of boxes and circles on a segment: contacts come and go while it settles.
 World MakePile()
 {
-    World world;
-    const BodyId ground = world.CreateBody({});
-    world.CreateShape(ground, ShapeDef{}, Segment{{-20, 0}, {20, 0}});
-    for (int i = 0; i < 12; ++i)
-    {
-        const BodyId body = world.CreateBody(
-            {.type = BodyType::Dynamic, .position = {Real(0.3) * Real(i % 4), Real(1 + i)}});
-        if (i % 2 == 0)
-        {
-            world.CreateShape(body, ShapeDef{}, MakeBox(Real(0.4), Real(0.3)));
-        }
-        else
-        {
-            world.CreateShape(body, ShapeDef{}, Circle{{0, 0}, Real(0.35)});
-        }
-    }
-    return world;
+    return meff::test::MakePile(12, 4, Real(0.3), 0);
 }
 
 } // namespace
