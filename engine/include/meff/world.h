@@ -177,6 +177,9 @@ class World
     // Joints
     JointId CreateJoint(const RevoluteJointDef& def);
     JointId CreateJoint(const DistanceJointDef& def);
+    JointId CreateJoint(const PrismaticJointDef& def);
+    /// The suspension spring's stiffness comes from hertz and both bodies' masses now.
+    JointId CreateJoint(const WheelJointDef& def);
     void DestroyJoint(JointId id);
     bool IsValid(JointId id) const;
     JointType GetJointType(JointId id) const;
@@ -188,10 +191,27 @@ class World
     JointReaction GetReaction(JointId id, Real invDt) const;
     /// Live joints in creation order.
     std::span<const JointId> GetJoints() const;
+    /// Target speed of a joint's motor: rad/s for revolute and wheel joints (B relative to
+    /// A), m/s along the axis for prismatic joints. Throws InvalidArgument for other types or
+    /// a non-finite speed. Does not enable the motor.
+    void SetJointMotorSpeed(JointId id, Real speed);
+    /// Where body B's anchor is along a prismatic or wheel joint's axis, measured from body
+    /// A's anchor (m), as b2PrismaticJoint/b2WheelJoint::GetJointTranslation. Throws
+    /// InvalidArgument for other joint types.
+    Real GetJointTranslation(JointId id) const;
+    /// Relative speed of a joint: along the axis for prismatic and wheel joints (m/s, as
+    /// b2PrismaticJoint::GetJointSpeed and b2WheelJoint::GetJointLinearSpeed), wB − wA for
+    /// revolute joints (rad/s). Throws InvalidArgument for other joint types.
+    Real GetJointSpeed(JointId id) const;
     /// Definition helpers from world points, as Box2D's b2*JointDef::Initialize.
     RevoluteJointDef MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
     DistanceJointDef MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAnchorA,
                                           Vec2 worldAnchorB) const;
+    /// Slides along worldAxis through worldAnchor; the current relative angle is kept.
+    PrismaticJointDef MakePrismaticJointDef(BodyId a, BodyId b, Vec2 worldAnchor,
+                                            Vec2 worldAxis) const;
+    /// Wheel hub at worldAnchor (usually the wheel's centre), suspension along worldAxis.
+    WheelJointDef MakeWheelJointDef(BodyId a, BodyId b, Vec2 worldAnchor, Vec2 worldAxis) const;
 
     // Stepping
     /// Advances the world by dt seconds (> 0 and finite). Throws SimulationError if a body's

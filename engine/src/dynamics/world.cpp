@@ -708,6 +708,20 @@ JointId World::CreateJoint(const DistanceJointDef& def)
                                         m_state->tolerances));
 }
 
+JointId World::CreateJoint(const PrismaticJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
+}
+
+JointId World::CreateJoint(const WheelJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    const Body& a = m_state->bodies[def.bodyA.index];
+    const Body& b = m_state->bodies[def.bodyB.index];
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass));
+}
+
 void World::DestroyJoint(JointId id)
 {
     WorldState& world = *m_state;
@@ -757,30 +771,15 @@ BodyId World::GetBodyB(JointId id) const
     return {joint.bodyB, m_state->bodies[joint.bodyB].generation};
 }
 
-namespace
-{
-
-Vec2 LocalAnchor(const Joint& joint, int side)
-{
-    if (const auto* r = std::get_if<RevoluteJoint>(&joint.data))
-    {
-        return side == 0 ? r->localAnchorA : r->localAnchorB;
-    }
-    const auto& d = std::get<DistanceJoint>(joint.data);
-    return side == 0 ? d.localAnchorA : d.localAnchorB;
-}
-
-} // namespace
-
 Vec2 World::GetAnchorA(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return Mul(m_state->bodies[joint.bodyA].xf, LocalAnchor(joint, 0));
+    return Mul(m_state->bodies[joint.bodyA].xf, GetLocalAnchor(joint, 0));
 }
 Vec2 World::GetAnchorB(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return Mul(m_state->bodies[joint.bodyB].xf, LocalAnchor(joint, 1));
+    return Mul(m_state->bodies[joint.bodyB].xf, GetLocalAnchor(joint, 1));
 }
 JointReaction World::GetReaction(JointId id, Real invDt) const
 {
@@ -789,6 +788,84 @@ JointReaction World::GetReaction(JointId id, Real invDt) const
 std::span<const JointId> World::GetJoints() const
 {
     return m_state->jointIds;
+}
+
+void World::SetJointMotorSpeed(JointId id, Real speed)
+{
+    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    RequireFinite(speed, "SetJointMotorSpeed: speed");
+    if (auto* r = std::get_if<RevoluteJoint>(&joint.data))
+    {
+        r->motorSpeed = speed;
+    }
+    else if (auto* p = std::get_if<PrismaticJoint>(&joint.data))
+    {
+        p->motorSpeed = speed;
+    }
+    else if (auto* w = std::get_if<WheelJoint>(&joint.data))
+    {
+        w->motorSpeed = speed;
+    }
+    else
+    {
+        throw InvalidArgument("World::SetJointMotorSpeed: the joint has no motor (only "
+                              "revolute, prismatic and wheel joints do)");
+    }
+}
+
+namespace
+{
+
+/// The slide axis of a prismatic or wheel joint in body A's frame; throws for other types.
+Vec2 LocalSlideAxis(const Joint& joint, const char* caller)
+{
+    if (const auto* p = std::get_if<PrismaticJoint>(&joint.data))
+    {
+        return p->localXAxisA;
+    }
+    if (const auto* w = std::get_if<WheelJoint>(&joint.data))
+    {
+        return w->localXAxisA;
+    }
+    throw InvalidArgument(std::string("World::") + caller +
+                          ": only prismatic and wheel joints have an axis");
+}
+
+} // namespace
+
+Real World::GetJointTranslation(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    const Vec2 localAxis = LocalSlideAxis(joint, "GetJointTranslation");
+    const Body& a = m_state->bodies[joint.bodyA];
+    const Body& b = m_state->bodies[joint.bodyB];
+    const Vec2 pA = Mul(a.xf, GetLocalAnchor(joint, 0));
+    const Vec2 pB = Mul(b.xf, GetLocalAnchor(joint, 1));
+    const Vec2 d = pB - pA;
+    const Vec2 axis = Mul(a.xf.q, localAxis);
+    return Dot(d, axis);
+}
+
+Real World::GetJointSpeed(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    const Body& a = m_state->bodies[joint.bodyA];
+    const Body& b = m_state->bodies[joint.bodyB];
+    if (joint.type == JointType::Revolute)
+    {
+        return b.angularVelocity - a.angularVelocity;
+    }
+    const Vec2 localAxis = LocalSlideAxis(joint, "GetJointSpeed");
+    // Cdot of the axial row: the axis turns with A, hence the d·(wA × axis) term.
+    const Vec2 rA = Mul(a.xf.q, GetLocalAnchor(joint, 0) - a.sweep.localCenter);
+    const Vec2 rB = Mul(b.xf.q, GetLocalAnchor(joint, 1) - b.sweep.localCenter);
+    const Vec2 p1 = a.sweep.c + rA;
+    const Vec2 p2 = b.sweep.c + rB;
+    const Vec2 d = p2 - p1;
+    const Vec2 axis = Mul(a.xf.q, localAxis);
+    const Vec2 vA = a.linearVelocity, vB = b.linearVelocity;
+    const Real wA = a.angularVelocity, wB = b.angularVelocity;
+    return Dot(d, Cross(wA, axis)) + Dot(axis, vB + Cross(wB, rB) - vA - Cross(wA, rA));
 }
 
 RevoluteJointDef World::MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
@@ -817,6 +894,34 @@ DistanceJointDef World::MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAncho
     def.length = Max(d.Length(), m_state->tolerances.linearSlop);
     def.minLength = def.length;
     def.maxLength = def.length;
+    return def;
+}
+
+PrismaticJointDef World::MakePrismaticJointDef(BodyId a, BodyId b, Vec2 worldAnchor,
+                                               Vec2 worldAxis) const
+{
+    RequireFinite(worldAnchor, "MakePrismaticJointDef: anchor");
+    RequireFinite(worldAxis, "MakePrismaticJointDef: axis");
+    PrismaticJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = GetLocalPoint(a, worldAnchor);
+    def.localAnchorB = GetLocalPoint(b, worldAnchor);
+    def.localAxisA = MulT(GetTransform(a).q, worldAxis);
+    def.referenceAngle = GetAngle(b) - GetAngle(a);
+    return def;
+}
+
+WheelJointDef World::MakeWheelJointDef(BodyId a, BodyId b, Vec2 worldAnchor, Vec2 worldAxis) const
+{
+    RequireFinite(worldAnchor, "MakeWheelJointDef: anchor");
+    RequireFinite(worldAxis, "MakeWheelJointDef: axis");
+    WheelJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = GetLocalPoint(a, worldAnchor);
+    def.localAnchorB = GetLocalPoint(b, worldAnchor);
+    def.localAxisA = MulT(GetTransform(a).q, worldAxis);
     return def;
 }
 

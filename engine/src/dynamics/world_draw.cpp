@@ -102,14 +102,47 @@ void DrawAABB(DebugDraw& draw, const AABB& box, const DrawColor& color)
     draw.DrawPolygon(corners, color);
 }
 
-Vec2 LocalAnchor(const Joint& joint, int side)
+/// The travel of a prismatic or wheel joint, as b2PrismaticJoint::Draw and b2WheelJoint::Draw
+/// show it: with limits, the segment from the lower to the upper limit along the axis through
+/// A's anchor, with a tick across each end; without, a metre of the axis either side.
+void DrawSlideAxis(DebugDraw& draw, const Joint& joint, const Transform& xfA, Vec2 anchorA,
+                   const DrawColor& color)
 {
-    if (const auto* r = std::get_if<RevoluteJoint>(&joint.data))
+    Vec2 localAxis;
+    bool enableLimit = false;
+    Real lower = 0, upper = 0;
+    if (const auto* p = std::get_if<PrismaticJoint>(&joint.data))
     {
-        return side == 0 ? r->localAnchorA : r->localAnchorB;
+        localAxis = p->localXAxisA;
+        enableLimit = p->enableLimit;
+        lower = p->lowerTranslation;
+        upper = p->upperTranslation;
     }
-    const auto& d = std::get<DistanceJoint>(joint.data);
-    return side == 0 ? d.localAnchorA : d.localAnchorB;
+    else if (const auto* w = std::get_if<WheelJoint>(&joint.data))
+    {
+        localAxis = w->localXAxisA;
+        enableLimit = w->enableLimit;
+        lower = w->lowerTranslation;
+        upper = w->upperTranslation;
+    }
+    else
+    {
+        return;
+    }
+    const Vec2 axis = Mul(xfA.q, localAxis);
+    if (enableLimit)
+    {
+        const Vec2 lowerPoint = anchorA + lower * axis;
+        const Vec2 upperPoint = anchorA + upper * axis;
+        const Vec2 tick = Real(0.5) * axis.Skew();
+        draw.DrawSegment(lowerPoint, upperPoint, color);
+        draw.DrawSegment(lowerPoint - tick, lowerPoint + tick, color);
+        draw.DrawSegment(upperPoint - tick, upperPoint + tick, color);
+    }
+    else
+    {
+        draw.DrawSegment(anchorA - axis, anchorA + axis, color);
+    }
 }
 
 } // namespace
@@ -150,8 +183,8 @@ void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
             const Joint& joint = world.joints[std::size_t(id.index)].joint;
             const Body& bodyA = world.bodies[std::size_t(joint.bodyA)];
             const Body& bodyB = world.bodies[std::size_t(joint.bodyB)];
-            const Vec2 anchorA = Mul(bodyA.xf, LocalAnchor(joint, 0));
-            const Vec2 anchorB = Mul(bodyB.xf, LocalAnchor(joint, 1));
+            const Vec2 anchorA = Mul(bodyA.xf, GetLocalAnchor(joint, 0));
+            const Vec2 anchorB = Mul(bodyB.xf, GetLocalAnchor(joint, 1));
             // As b2Joint::Draw: each moving body's centre to its anchor, then anchor to anchor
             // (the rod of a distance joint). A static body's origin is usually far away and
             // says nothing, so it is left out.
@@ -164,6 +197,7 @@ void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
                 draw.DrawSegment(bodyB.sweep.c, anchorB, colors.joint);
             }
             draw.DrawSegment(anchorA, anchorB, colors.joint);
+            DrawSlideAxis(draw, joint, bodyA.xf, anchorA, colors.joint);
             draw.DrawPoint(anchorA, flags.pointSize, colors.joint);
             draw.DrawPoint(anchorB, flags.pointSize, colors.joint);
         }
@@ -192,7 +226,7 @@ void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
         {
             const Joint& joint = world.joints[std::size_t(id.index)].joint;
             const Vec2 anchorB =
-                Mul(world.bodies[std::size_t(joint.bodyB)].xf, LocalAnchor(joint, 1));
+                Mul(world.bodies[std::size_t(joint.bodyB)].xf, GetLocalAnchor(joint, 1));
             // invDt = 1: the reaction as the last step's impulse (N·s), the contacts' unit.
             const JointReaction reaction = GetJointReaction(joint, Real(1));
             DrawArrow(draw, anchorB, anchorB + flags.impulseScale * reaction.force, flags.arrowHead,

@@ -74,6 +74,37 @@ void LinearStiffness(Real& stiffness, Real& damping, Real hertz, Real dampingRat
     damping = Real(2) * mass * dampingRatio * omega;
 }
 
+void RequireOrdered(const char* def, const char* lowerField, Real lower, const char* upperField,
+                    Real upper)
+{
+    if (lower > upper)
+    {
+        std::ostringstream message;
+        message.precision(9);
+        message << def << '.' << lowerField << " = " << lower << " exceeds " << upperField << " = "
+                << upper;
+        throw InvalidArgument(message.str());
+    }
+}
+
+/// The unit axis of a prismatic or wheel joint. A zero axis has no direction to slide along.
+/// Normalized as b2Vec2::Normalize does (Box2D's prismatic constructor normalizes; its wheel
+/// joint does not, so the Box2D mirror normalizes the wheel axis it hands over).
+Vec2 RequireUnitAxis(const char* def, Vec2 axis)
+{
+    RequireFinite(def, "localAxisA", axis);
+    Vec2 unit = axis;
+    if (unit.Normalize() == 0)
+    {
+        std::ostringstream message;
+        message.precision(9);
+        message << def << ".localAxisA = (" << axis.x << ", " << axis.y
+                << ") has no direction (length 0)";
+        throw InvalidArgument(message.str());
+    }
+    return unit;
+}
+
 } // namespace
 
 Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
@@ -154,6 +185,88 @@ Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bo
     joint.collideConnected = def.collideConnected;
     joint.data = distance;
     return joint;
+}
+
+Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
+{
+    constexpr const char* kDef = "PrismaticJointDef";
+    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
+    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
+    const Vec2 axis = RequireUnitAxis(kDef, def.localAxisA);
+    RequireFinite(kDef, "referenceAngle", def.referenceAngle);
+    RequireFinite(kDef, "lowerTranslation", def.lowerTranslation);
+    RequireFinite(kDef, "upperTranslation", def.upperTranslation);
+    RequireFinite(kDef, "motorSpeed", def.motorSpeed);
+    RequireNonNegative(kDef, "maxMotorForce", def.maxMotorForce);
+    RequireOrdered(kDef, "lowerTranslation", def.lowerTranslation, "upperTranslation",
+                   def.upperTranslation);
+
+    PrismaticJoint prismatic;
+    prismatic.localAnchorA = def.localAnchorA;
+    prismatic.localAnchorB = def.localAnchorB;
+    prismatic.localXAxisA = axis;
+    prismatic.localYAxisA = Cross(Real(1), axis);
+    prismatic.referenceAngle = def.referenceAngle;
+    prismatic.enableLimit = def.enableLimit;
+    prismatic.lowerTranslation = def.lowerTranslation;
+    prismatic.upperTranslation = def.upperTranslation;
+    prismatic.enableMotor = def.enableMotor;
+    prismatic.motorSpeed = def.motorSpeed;
+    prismatic.maxMotorForce = def.maxMotorForce;
+
+    Joint joint;
+    joint.type = JointType::Prismatic;
+    joint.bodyA = bodyA;
+    joint.bodyB = bodyB;
+    joint.collideConnected = def.collideConnected;
+    joint.data = prismatic;
+    return joint;
+}
+
+Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
+                Real massB)
+{
+    constexpr const char* kDef = "WheelJointDef";
+    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
+    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
+    const Vec2 axis = RequireUnitAxis(kDef, def.localAxisA);
+    RequireFinite(kDef, "lowerTranslation", def.lowerTranslation);
+    RequireFinite(kDef, "upperTranslation", def.upperTranslation);
+    RequireFinite(kDef, "motorSpeed", def.motorSpeed);
+    RequireNonNegative(kDef, "maxMotorTorque", def.maxMotorTorque);
+    RequireNonNegative(kDef, "hertz", def.hertz);
+    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+    RequireOrdered(kDef, "lowerTranslation", def.lowerTranslation, "upperTranslation",
+                   def.upperTranslation);
+
+    WheelJoint wheel;
+    wheel.localAnchorA = def.localAnchorA;
+    wheel.localAnchorB = def.localAnchorB;
+    wheel.localXAxisA = axis;
+    wheel.localYAxisA = Cross(Real(1), axis);
+    wheel.enableLimit = def.enableLimit;
+    wheel.lowerTranslation = def.lowerTranslation;
+    wheel.upperTranslation = def.upperTranslation;
+    wheel.enableMotor = def.enableMotor;
+    wheel.motorSpeed = def.motorSpeed;
+    wheel.maxMotorTorque = def.maxMotorTorque;
+    // The suspension's oscillator mass is the reduced mass of chassis and wheel, as the
+    // testbed's car passes both bodies to b2LinearStiffness.
+    LinearStiffness(wheel.stiffness, wheel.damping, def.hertz, def.dampingRatio, massA, massB);
+
+    Joint joint;
+    joint.type = JointType::Wheel;
+    joint.bodyA = bodyA;
+    joint.bodyB = bodyB;
+    joint.collideConnected = def.collideConnected;
+    joint.data = wheel;
+    return joint;
+}
+
+Vec2 GetLocalAnchor(const Joint& joint, int side)
+{
+    return std::visit([side](const auto& j) { return side == 0 ? j.localAnchorA : j.localAnchorB; },
+                      joint.data);
 }
 
 // The variant's alternative is the joint's type; the JointType tag exists for callers that

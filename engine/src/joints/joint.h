@@ -1,6 +1,7 @@
 // Joints inside the solver. Each joint type lives in its own file (revolute_joint.cpp,
-// distance_joint.cpp) and is reached through the functions at the bottom, which switch on the
-// type. Every constraint row is solved with the scalar effective mass
+// distance_joint.cpp, prismatic_joint.cpp, wheel_joint.cpp) and is reached through the functions at
+// the bottom, which switch on the type. Every constraint row is solved with the scalar effective
+// mass
 //   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB   (seed: effective-mass.md)
 // and λ = −(Jv + bias)/k, following Box2D 2.4.1's sequential-impulse formulation.
 #pragma once
@@ -61,13 +62,63 @@ struct DistanceJoint
     Real softMass = 0, mass = 0, gamma = 0, bias = 0;
 };
 
+struct PrismaticJoint
+{
+    // Definition
+    Vec2 localAnchorA, localAnchorB;
+    Vec2 localXAxisA{1, 0}; ///< unit slide axis in A's frame
+    Vec2 localYAxisA{0, 1}; ///< its perpendicular, 1 × localXAxisA
+    Real referenceAngle = 0;
+    bool enableLimit = false;
+    Real lowerTranslation = 0, upperTranslation = 0;
+    bool enableMotor = false;
+    Real motorSpeed = 0, maxMotorForce = 0;
+    // Accumulated impulses: (perpendicular, angular) block, then the axial rows
+    Vec2 impulse;
+    Real motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+    // Solver temporaries
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 localCenterA, localCenterB;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Vec2 axis, perp;     ///< world axis and perpendicular at the step's start
+    Real s1 = 0, s2 = 0; ///< perpendicular row's angular Jacobian terms (A, B)
+    Real a1 = 0, a2 = 0; ///< axial rows' angular Jacobian terms (A, B)
+    Mat22 K;             ///< block of the perpendicular and angular rows
+    Real translation = 0, axialMass = 0;
+};
+
+struct WheelJoint
+{
+    // Definition
+    Vec2 localAnchorA, localAnchorB;
+    Vec2 localXAxisA{1, 0}; ///< unit suspension axis in A's frame
+    Vec2 localYAxisA{0, 1}; ///< its perpendicular, 1 × localXAxisA
+    bool enableLimit = false;
+    Real lowerTranslation = 0, upperTranslation = 0;
+    bool enableMotor = false;
+    Real motorSpeed = 0, maxMotorTorque = 0;
+    Real stiffness = 0; ///< N/m, from hertz and the bodies' masses at creation
+    Real damping = 0;   ///< N·s/m
+    // Accumulated impulses
+    Real impulse = 0, motorImpulse = 0, springImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+    // Solver temporaries
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 localCenterA, localCenterB;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Vec2 ax, ay;           ///< world axis and perpendicular at the step's start
+    Real sAx = 0, sBx = 0; ///< axial rows' angular Jacobian terms
+    Real sAy = 0, sBy = 0; ///< perpendicular row's angular Jacobian terms
+    Real mass = 0, motorMass = 0, axialMass = 0, springMass = 0;
+    Real bias = 0, gamma = 0, translation = 0;
+};
+
 struct Joint
 {
     JointType type = JointType::Revolute;
     std::int32_t bodyA = -1; ///< world body index
     std::int32_t bodyB = -1;
     bool collideConnected = false;
-    std::variant<RevoluteJoint, DistanceJoint> data;
+    std::variant<RevoluteJoint, DistanceJoint, PrismaticJoint, WheelJoint> data;
 };
 
 /// Stores what a joint's rows need of its two bodies for this step (every joint type has these
@@ -91,6 +142,13 @@ void StoreJointBodies(JointData& joint, const JointBody& a, const JointBody& b)
 Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
 Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB, const Tolerances& tolerances);
+Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
+/// massA/massB (kg, 0 for static) set the suspension spring as for the distance joint.
+Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
+                Real massB);
+
+/// The joint's anchors in its bodies' frames (m); side 0 is body A, 1 is body B.
+Vec2 GetLocalAnchor(const Joint& joint, int side);
 
 /// Prepares the rows for this step and applies the warm-start impulse (or zeroes the
 /// accumulated impulses when warm starting is off): Box2D's InitVelocityConstraints.
@@ -115,5 +173,17 @@ void InitVelocityConstraints(DistanceJoint& joint, const JointBody& a, const Joi
 void SolveVelocityConstraints(DistanceJoint& joint, SolverData& data);
 bool SolvePositionConstraints(DistanceJoint& joint, SolverData& data);
 JointReaction GetReaction(const DistanceJoint& joint, Real invDt);
+
+void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(PrismaticJoint& joint, SolverData& data);
+bool SolvePositionConstraints(PrismaticJoint& joint, SolverData& data);
+JointReaction GetReaction(const PrismaticJoint& joint, Real invDt);
+
+void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(WheelJoint& joint, SolverData& data);
+bool SolvePositionConstraints(WheelJoint& joint, SolverData& data);
+JointReaction GetReaction(const WheelJoint& joint, Real invDt);
 
 } // namespace meff::detail
