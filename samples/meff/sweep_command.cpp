@@ -304,14 +304,22 @@ struct Trace
 };
 
 /// How far a joint is from satisfied: a revolute joint's anchors should coincide; a distance
-/// joint's should be between its minimum and maximum length apart.
+/// joint's should be between its minimum and maximum length apart. Prismatic and wheel joints
+/// let their anchors part along the axis, so the anchor distance says nothing about them: they
+/// are not measured (0).
 double JointError(const SceneJoint& joint, double anchorDistance)
 {
-    if (joint.type == JointType::Revolute)
+    switch (joint.type)
     {
+    case JointType::Revolute:
         return anchorDistance;
+    case JointType::Distance:
+        return std::max({0.0, anchorDistance - joint.maxLength, joint.minLength - anchorDistance});
+    case JointType::Prismatic:
+    case JointType::Wheel:
+        return 0;
     }
-    return std::max({0.0, anchorDistance - joint.maxLength, joint.minLength - anchorDistance});
+    return 0;
 }
 
 /// Kinetic plus gravitational potential energy of the dynamic bodies (the potential measured

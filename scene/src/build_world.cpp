@@ -122,6 +122,34 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         def.collideConnected = joint.collideConnected;
         return built.world.CreateJoint(def);
     }
+    if (joint.type == JointType::Prismatic)
+    {
+        PrismaticJointDef def = built.world.MakePrismaticJointDef(
+            bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
+        def.enableLimit = joint.enableLimit;
+        def.lowerTranslation = Real(joint.lowerTranslation);
+        def.upperTranslation = Real(joint.upperTranslation);
+        def.enableMotor = joint.enableMotor;
+        def.motorSpeed = Real(joint.motorSpeed);
+        def.maxMotorForce = Real(joint.maxMotorForce);
+        def.collideConnected = joint.collideConnected;
+        return built.world.CreateJoint(def);
+    }
+    if (joint.type == JointType::Wheel)
+    {
+        WheelJointDef def =
+            built.world.MakeWheelJointDef(bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
+        def.enableLimit = joint.enableLimit;
+        def.lowerTranslation = Real(joint.lowerTranslation);
+        def.upperTranslation = Real(joint.upperTranslation);
+        def.enableMotor = joint.enableMotor;
+        def.motorSpeed = Real(joint.motorSpeed);
+        def.maxMotorTorque = Real(joint.maxMotorTorque);
+        def.hertz = Real(joint.stiffnessHz);
+        def.dampingRatio = Real(joint.dampingRatio);
+        def.collideConnected = joint.collideConnected;
+        return built.world.CreateJoint(def);
+    }
     DistanceJointDef def = built.world.MakeDistanceJointDef(bodyA, bodyB, ToVec2(joint.anchorA),
                                                             ToVec2(joint.anchorB));
     def.length = Real(joint.length);

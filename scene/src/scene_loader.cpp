@@ -403,6 +403,51 @@ void ReadDistanceFields(ObjectReader& reader, SceneJoint& joint)
     Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", 0.0));
 }
 
+/// Fields shared by the prismatic and wheel joints: the anchor, the axis (non-zero) and the
+/// translation limits.
+void ReadSlideFields(ObjectReader& reader, SceneJoint& joint)
+{
+    Assign(joint.anchor, reader.Vector("anchor", std::nullopt));
+    const std::optional<SceneVec2> axis = reader.Vector("axis", std::nullopt);
+    if (axis && axis->x == 0 && axis->y == 0)
+    {
+        reader.Fail("axis", "must not be [0, 0] (it is the direction the joint slides along)");
+    }
+    else
+    {
+        Assign(joint.axis, axis);
+    }
+    const SceneJoint defaults;
+    Assign(joint.enableLimit, reader.Boolean("enable_limit", defaults.enableLimit));
+    const std::optional<double> lower =
+        reader.Number("lower_translation", defaults.lowerTranslation);
+    const std::optional<double> upper =
+        reader.Number("upper_translation", defaults.upperTranslation);
+    if (lower && upper && *lower > *upper)
+    {
+        reader.Fail("lower_translation",
+                    "must be <= upper_translation (" + scene_detail::FormatNumber(*upper) + ")");
+    }
+    Assign(joint.lowerTranslation, lower);
+    Assign(joint.upperTranslation, upper);
+    Assign(joint.enableMotor, reader.Boolean("enable_motor", defaults.enableMotor));
+    Assign(joint.motorSpeed, reader.Number("motor_speed", defaults.motorSpeed));
+}
+
+void ReadPrismaticFields(ObjectReader& reader, SceneJoint& joint)
+{
+    ReadSlideFields(reader, joint);
+    Assign(joint.maxMotorForce, ReadNonNegative(reader, "max_motor_force", 0.0));
+}
+
+void ReadWheelFields(ObjectReader& reader, SceneJoint& joint)
+{
+    ReadSlideFields(reader, joint);
+    Assign(joint.maxMotorTorque, ReadNonNegative(reader, "max_motor_torque", 0.0));
+    Assign(joint.stiffnessHz, ReadNonNegative(reader, "stiffness_hz", 0.0));
+    Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", 0.0));
+}
+
 /// Looks up body_a or body_b; returns the body index when the name is defined.
 std::optional<std::size_t> ReadBodyReference(ObjectReader& reader, std::string_view key,
                                              const std::map<std::string, std::size_t>& bodies,
@@ -426,7 +471,9 @@ std::optional<std::size_t> ReadBodyReference(ObjectReader& reader, std::string_v
 void ReadJoint(ObjectReader& reader, const Scene& scene,
                const std::map<std::string, std::size_t>& bodyIndexByName, SceneJoint& joint)
 {
-    const std::optional<std::size_t> type = ReadChoice(reader, "type", {"revolute", "distance"});
+    // In JointType's order, so that the choice's index is the type.
+    const std::optional<std::size_t> type =
+        ReadChoice(reader, "type", {"revolute", "distance", "prismatic", "wheel"});
     Assign(joint.name, ReadName(reader));
     const std::optional<std::size_t> bodyA =
         ReadBodyReference(reader, "body_a", bodyIndexByName, joint.bodyA);
@@ -452,14 +499,21 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
     {
         return;
     }
-    joint.type = *type == 0 ? JointType::Revolute : JointType::Distance;
-    if (joint.type == JointType::Revolute)
+    joint.type = JointType(*type);
+    switch (joint.type)
     {
+    case JointType::Revolute:
         ReadRevoluteFields(reader, joint);
-    }
-    else
-    {
+        break;
+    case JointType::Distance:
         ReadDistanceFields(reader, joint);
+        break;
+    case JointType::Prismatic:
+        ReadPrismaticFields(reader, joint);
+        break;
+    case JointType::Wheel:
+        ReadWheelFields(reader, joint);
+        break;
     }
     reader.Finish();
 }
@@ -542,6 +596,12 @@ std::optional<std::size_t> ReadAnalyticJoint(ObjectReader& reader, const std::st
     {
         reader.Diag().Report(reader.PathOf(key),
                              "must name a joint whose body_a is static (the fixed pivot)", value);
+        return std::nullopt;
+    }
+    if (joint.type != JointType::Revolute && joint.type != JointType::Distance)
+    {
+        // The exact solutions are pendulums: a pin or a rod.
+        reader.Diag().Report(reader.PathOf(key), "must name a revolute or distance joint", value);
         return std::nullopt;
     }
     return found->second;

@@ -130,6 +130,43 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(&def);
     }
+    if (joint.type == JointType::Prismatic)
+    {
+        b2PrismaticJointDef def;
+        def.Initialize(bodyA, bodyB, ToB2(joint.anchor), ToB2(joint.axis));
+        def.enableLimit = joint.enableLimit;
+        def.lowerTranslation = static_cast<float>(joint.lowerTranslation);
+        def.upperTranslation = static_cast<float>(joint.upperTranslation);
+        def.enableMotor = joint.enableMotor;
+        def.motorSpeed = static_cast<float>(joint.motorSpeed);
+        def.maxMotorForce = static_cast<float>(joint.maxMotorForce);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    if (joint.type == JointType::Wheel)
+    {
+        b2WheelJointDef def;
+        def.Initialize(bodyA, bodyB, ToB2(joint.anchor), ToB2(joint.axis));
+        // meff normalizes the axis at creation, Box2D's wheel joint does not: hand it the
+        // same unit vector (b2Vec2::Normalize is meff's Vec2::Normalize, operation for
+        // operation).
+        def.localAxisA.Normalize();
+        def.enableLimit = joint.enableLimit;
+        def.lowerTranslation = static_cast<float>(joint.lowerTranslation);
+        def.upperTranslation = static_cast<float>(joint.upperTranslation);
+        def.enableMotor = joint.enableMotor;
+        def.motorSpeed = static_cast<float>(joint.motorSpeed);
+        def.maxMotorTorque = static_cast<float>(joint.maxMotorTorque);
+        def.stiffness = 0.0f;
+        def.damping = 0.0f;
+        if (joint.stiffnessHz > 0)
+        {
+            b2LinearStiffness(def.stiffness, def.damping, static_cast<float>(joint.stiffnessHz),
+                              static_cast<float>(joint.dampingRatio), bodyA, bodyB);
+        }
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
     b2DistanceJointDef def;
     def.Initialize(bodyA, bodyB, ToB2(joint.anchorA), ToB2(joint.anchorB));
     def.length = static_cast<float>(joint.length);

@@ -119,15 +119,20 @@ struct SceneJoint
     std::size_t bodyIndexA = 0; ///< index into Scene::bodies
     std::size_t bodyIndexB = 0; ///< index into Scene::bodies
     bool collideConnected = false;
-    // revolute
+    // revolute (anchor, limit and motor fields are shared with prismatic and wheel)
     SceneVec2 anchor; ///< world point (m)
     bool enableLimit = false;
     double lowerAngle = 0; ///< rad, ≤ upperAngle
     double upperAngle = 0; ///< rad
     bool enableMotor = false;
-    double motorSpeed = 0;     ///< rad/s
-    double maxMotorTorque = 0; ///< N·m, ≥ 0
-    // distance
+    double motorSpeed = 0;     ///< rad/s (revolute, wheel) or m/s along the axis (prismatic)
+    double maxMotorTorque = 0; ///< N·m, ≥ 0 (revolute, wheel)
+    // prismatic and wheel
+    SceneVec2 axis{1, 0};        ///< world direction of the slide (non-zero)
+    double lowerTranslation = 0; ///< m along the axis from the anchor, ≤ upperTranslation
+    double upperTranslation = 0; ///< m
+    double maxMotorForce = 0;    ///< N, ≥ 0 (prismatic)
+    // distance (stiffnessHz and dampingRatio also set a wheel's suspension)
     SceneVec2 anchorA;       ///< world point on body A (m)
     SceneVec2 anchorB;       ///< world point on body B (m)
     double length = 0;       ///< m, > 0; the file's value or the distance between the anchors
