@@ -295,7 +295,7 @@ TEST_CASE("Scene errors: joint values out of range", "[scene][errors]")
             { "type": "distance", "name": "j2", "body_a": "a", "body_b": "b", "anchor_a": [0, 0],
               "anchor_b": [0, 1], "min_length": 0.7, "max_length": 0.5 },
             { "type": "revolute", "name": "j3", "body_a": "a", "body_b": "c", "anchor": [0, 0] },
-            { "type": "weld", "name": "j4", "body_a": "a", "body_b": "b" } ] })") ==
+            { "type": "gear", "name": "j4", "body_a": "a", "body_b": "b" } ] })") ==
           Messages{"x.json: joints[0].upper_angle: must be >= lower_angle (1), got 0",
                    "x.json: joints[0].max_motor_torque: must be >= 0, got -1",
                    "x.json: joints[1].length: is missing and anchor_a and anchor_b coincide; "
@@ -303,8 +303,70 @@ TEST_CASE("Scene errors: joint values out of range", "[scene][errors]")
                    "x.json: joints[2].max_length: must be >= min_length (0.7), got 0.5",
                    "x.json: joints[3].body_b: must be dynamic when body_a is not (a joint "
                    "between two bodies that cannot move does nothing), got \"c\"",
-                   "x.json: joints[4].type: must be one of \"revolute\", \"distance\", got "
-                   "\"weld\""});
+                   "x.json: joints[4].type: must be one of \"revolute\", \"distance\", "
+                   "\"prismatic\", \"wheel\", got \"gear\""});
+}
+
+TEST_CASE("Scene errors: prismatic and wheel joint fields", "[scene][errors][prismatic][wheel]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 1,
+        "bodies": [ { "name": "a", "type": "static" }, { "name": "b", "type": "dynamic",
+                      "shapes": [ { "type": "circle", "radius": 1 } ] } ],
+        "joints": [
+            { "type": "prismatic", "name": "j0", "body_a": "a", "body_b": "b", "anchor": [0, 0],
+              "axis": [0, 1], "lower_translation": 3, "upper_translation": 1,
+              "max_motor_force": -5 },
+            { "type": "wheel", "name": "j1", "body_a": "a", "body_b": "b", "anchor": [0, 0],
+              "axis": [0, 0], "max_motor_torque": -1, "stiffness_hz": -4,
+              "max_motor_force": 2 },
+            { "type": "prismatic", "name": "j2", "body_a": "a", "body_b": "b",
+              "anchor": [0, 0] } ] })") ==
+          Messages{"x.json: joints[0].lower_translation: must be <= upper_translation (1), got 3",
+                   "x.json: joints[0].max_motor_force: must be >= 0, got -5",
+                   "x.json: joints[1].axis: must not be [0, 0] (it is the direction the joint "
+                   "slides along), got [0, 0]",
+                   "x.json: joints[1].max_motor_torque: must be >= 0, got -1",
+                   "x.json: joints[1].stiffness_hz: must be >= 0, got -4",
+                   "x.json: joints[1].max_motor_force: unknown field (known fields here: type, "
+                   "name, body_a, body_b, collide_connected, anchor, axis, enable_limit, "
+                   "lower_translation, upper_translation, enable_motor, motor_speed, "
+                   "max_motor_torque, stiffness_hz, damping_ratio)",
+                   "x.json: joints[2].axis: required field is missing"});
+}
+
+TEST_CASE("Scene: prismatic and wheel joints are built as written", "[scene][prismatic][wheel]")
+{
+    const Scene scene = ParseScene(R"({ "meff_scene": 1,
+        "bodies": [ { "name": "a", "type": "static" }, { "name": "b", "type": "dynamic",
+                      "position": [1, 2], "shapes": [ { "type": "circle", "radius": 0.5 } ] } ],
+        "joints": [
+            { "type": "prismatic", "name": "slide", "body_a": "a", "body_b": "b",
+              "anchor": [1, 2], "axis": [0, 2], "enable_limit": true,
+              "lower_translation": -1, "upper_translation": 2, "enable_motor": true,
+              "motor_speed": 0.5, "max_motor_force": 30 },
+            { "type": "wheel", "name": "hub", "body_a": "a", "body_b": "b", "anchor": [1, 2],
+              "axis": [0, 1], "stiffness_hz": 3, "damping_ratio": 0.5,
+              "enable_motor": true, "motor_speed": -4, "max_motor_torque": 7 } ] })",
+                                   "x.json");
+    REQUIRE(scene.joints.size() == 2);
+    const SceneJoint& slide = scene.joints[0];
+    CHECK(slide.type == JointType::Prismatic);
+    CHECK(slide.axis.x == 0);
+    CHECK(slide.axis.y == 2);
+    CHECK(slide.enableLimit);
+    CHECK(slide.lowerTranslation == -1);
+    CHECK(slide.upperTranslation == 2);
+    CHECK(slide.maxMotorForce == 30);
+    const SceneJoint& hub = scene.joints[1];
+    CHECK(hub.type == JointType::Wheel);
+    CHECK(hub.stiffnessHz == 3);
+    CHECK(hub.dampingRatio == 0.5);
+    CHECK(hub.maxMotorTorque == 7);
+
+    BuiltScene built = BuildWorld(scene);
+    CHECK(built.world.GetJointType(built.joints[0]) == JointType::Prismatic);
+    CHECK(built.world.GetJointType(built.joints[1]) == JointType::Wheel);
+    CHECK(built.world.GetJointTranslation(built.joints[0]) == 0);
 }
 
 TEST_CASE("Scene errors: static bodies do not move", "[scene][errors]")
