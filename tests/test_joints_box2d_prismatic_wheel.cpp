@@ -155,6 +155,23 @@ TEST_CASE("Prismatic and wheel joints agree with Box2D 2.4.1 step for step",
     lockDef.upperTranslation = 0.305f;
     auto* lock = static_cast<b2PrismaticJoint*>(world.CreateJoint(&lockDef));
 
+    // Island 4: a free, spinning chassis whose wheel is thrown against the suspension's
+    // limits, so that the position pass corrects a violated limit while body A turns (Box2D
+    // 2.4.1 then mixes the step's axis with the fresh one).
+    b2MassData mdFree{4.0f, b2Vec2(0.0f, 0.1f), 1.5f};
+    b2Body* spinner = MakeDynamic(world, b2Vec2(20.0f, 5.0f), 0.0f, mdFree);
+    spinner->SetAngularVelocity(3.0f);
+    b2MassData mdSmall{0.6f, b2Vec2(0.0f, 0.0f), 0.05f};
+    b2Body* thrown = MakeDynamic(world, b2Vec2(20.5f, 4.5f), 0.0f, mdSmall);
+    thrown->SetLinearVelocity(b2Vec2(1.0f, -5.0f));
+    WheelPair flung =
+        MakeWheelPair(spinner, thrown, b2Vec2(20.5f, 4.5f), b2Vec2(0.3f, 1.0f), 1.5f, 0.1f);
+    flung.b2Def.enableLimit = true;
+    flung.b2Def.lowerTranslation = -0.1f;
+    flung.b2Def.upperTranslation = 0.1f;
+    CopyLimitsAndMotor(flung.b2Def, flung.def);
+    auto* flungWheel = static_cast<b2WheelJoint*>(world.CreateJoint(&flung.b2Def));
+
     // Box2D's islands: seeds newest body first, joints collected depth-first through each
     // body's joint list (newest first). Island 1 is seeded by the tyre, so the wheel joint
     // comes before the prismatic one.
@@ -192,7 +209,15 @@ TEST_CASE("Prismatic and wheel joints agree with Box2D 2.4.1 step for step",
         pair.joints.push_back(MakeJoint(FromBox2D(lockDef), i1, i2));
         pair.b2Joints.push_back(lock);
     }
-    std::vector<Island*> islands{&elevator, &axle, &pair};
+    Island free;
+    {
+        const std::int32_t iThrown = free.Add(thrown, &mdSmall);
+        const std::int32_t iSpinner = free.Add(spinner, &mdFree);
+        free.joints.push_back(
+            MakeJoint(flung.def, iSpinner, iThrown, spinner->GetMass(), thrown->GetMass()));
+        free.b2Joints.push_back(flungWheel);
+    }
+    std::vector<Island*> islands{&elevator, &axle, &pair, &free};
 
     // Variable time step, so that dtRatio ≠ 1 rescales the warm-start impulses (and Box2D
     // 2.4.1's wheel joint leaves its limit impulses unscaled).
@@ -200,7 +225,7 @@ TEST_CASE("Prismatic and wheel joints agree with Box2D 2.4.1 step for step",
     Diff position, velocity, reaction;
     bool liftLower = false, liftUpper = false, liftMotorSaturated = false;
     bool wheelLower = false, wheelUpper = false, wheelMotorSaturated = false;
-    bool hubLower = false, lockActive = false;
+    bool hubLower = false, lockActive = false, flungLimits = false;
     for (int i = 0; i < 300; ++i)
     {
         const float dt = (i % 5 == 4) ? 1.0f / 30.0f : 1.0f / 60.0f;
@@ -245,6 +270,8 @@ TEST_CASE("Prismatic and wheel joints agree with Box2D 2.4.1 step for step",
         hubLower = hubLower || std::get<WheelJoint>(axle.joints[0].data).lowerImpulse > 0;
         const auto& k = std::get<PrismaticJoint>(pair.joints[0].data);
         lockActive = lockActive || k.lowerImpulse > 0 || k.upperImpulse > 0;
+        const auto& f = std::get<WheelJoint>(free.joints[0].data);
+        flungLimits = flungLimits || f.lowerImpulse > 0 || f.upperImpulse > 0;
     }
 
     // The scenario exercised the limit and motor rows (otherwise the comparison proves less).
@@ -256,6 +283,7 @@ TEST_CASE("Prismatic and wheel joints agree with Box2D 2.4.1 step for step",
     CHECK(wheelMotorSaturated);
     CHECK(hubLower);
     CHECK(lockActive);
+    CHECK(flungLimits);
     // Same inputs, same float operations in the same order: identical results.
     CHECK(position.max == 0);
     CHECK(velocity.max == 0);
