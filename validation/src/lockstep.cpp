@@ -80,7 +80,8 @@ std::vector<std::string> MirrorNotes(const Scene& scene, const RunOptions& optio
     if (!scene.world.blockJoints)
     {
         notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a revolute "
-                           "point constraint as a 2x2 block, so revolute joints cannot agree");
+                           "point constraint and a prismatic joint's perpendicular and angular "
+                           "rows as a block, so those joints cannot agree");
     }
     if (scene.world.allowSleep)
     {

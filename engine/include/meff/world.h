@@ -49,7 +49,9 @@ struct SolverSettings
     /// Solve a two-point manifold's normal rows together as a 2×2 block (Box2D's block
     /// solver). Off: every row alone with its scalar effective mass.
     bool blockSolver = true;
-    /// Solve a revolute joint's point constraint as a 2×2 block (Box2D). Off: two scalar rows.
+    /// Solve a revolute joint's point constraint, and a prismatic joint's perpendicular and
+    /// angular rows (with its axial limit row in the position pass when active), as a block
+    /// (Box2D). Off: scalar rows, each with its scalar effective mass.
     bool blockJoints = true;
     /// Where restitution's approach speed vn is measured (the bounce targets −e·vn).
     /// Off (Box2D 2.4.1): after this step's gravity was added, so every bounce returns g·dt
