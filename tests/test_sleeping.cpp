@@ -531,6 +531,57 @@ TEST_CASE("Wake calls agree with Box2D 2.4.1 where it defines them", "[sleeping]
     run(100);
 }
 
+TEST_CASE("Continuous collision wakes a sleeping body a bullet hits, as Box2D 2.4.1",
+          "[sleeping][box2d][continuous]")
+{
+    Twin twin;
+    twin.AddGround();
+    const std::size_t box = twin.AddBox({0, Real(0.52)}, Real(0.5));
+    int step = 0;
+    const auto run = [&](int steps)
+    {
+        for (int i = 0; i < steps; ++i)
+        {
+            twin.Step();
+            twin.RequireIdentical(++step);
+        }
+    };
+    run(60);
+    REQUIRE_FALSE(twin.meff.IsAwake(twin.meffBodies[box]));
+
+    // A bullet fast enough to cross the box in one step (1.5 m per step): only the
+    // time-of-impact pass sees the hit, and it must wake the box in both engines alike.
+    const Vec2 start{-3, Real(0.6)};
+    const Vec2 velocity{90, 0};
+    const BodyId ball = twin.meff.CreateBody(BodyDef{
+        .type = BodyType::Dynamic, .position = start, .linearVelocity = velocity, .bullet = true});
+    twin.meff.CreateShape(ball, Material(), Circle{{0, 0}, Real(0.1)});
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(start.x, start.y);
+    def.linearVelocity.Set(velocity.x, velocity.y);
+    def.bullet = true;
+    b2Body* box2dBall = twin.box2d.CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = Real(0.1);
+    b2FixtureDef fixture;
+    fixture.shape = &circle;
+    fixture.density = 1;
+    fixture.friction = Real(0.6);
+    box2dBall->CreateFixture(&fixture);
+    twin.Add(ball, box2dBall);
+
+    bool woke = false;
+    for (int i = 0; i < 10 && !woke; ++i)
+    {
+        run(1);
+        woke = twin.meff.IsAwake(twin.meffBodies[box]);
+    }
+    CHECK(woke);
+    CHECK(twin.meff.GetPosition(ball).x < 0); // stopped or bounced, not tunnelled through
+    run(60);
+}
+
 TEST_CASE("Snapshots and the state hash carry the sleep state", "[sleeping][determinism]")
 {
     World world = SleepyWorld();
