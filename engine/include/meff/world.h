@@ -17,7 +17,7 @@
 namespace meff
 {
 
-/// Length tolerances of the solver and collision. Defaults are Box2D 2.4.1's constants.
+/// Tolerances of the solver, collision and sleeping. Defaults are Box2D 2.4.1's constants.
 struct Tolerances
 {
     Real linearSlop = Real(0.005);        ///< allowed penetration / joint error (m)
