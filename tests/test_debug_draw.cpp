@@ -93,11 +93,17 @@ TEST_CASE("World::Draw draws each shape in its body type's colour", "[debug_draw
     CHECK(Same(draw.colors[0], flags.colors.staticBody));
     CHECK(Same(draw.colors[1], flags.colors.kinematicBody));
     CHECK(Same(draw.colors[3], flags.colors.dynamicBody));
-    // Three body types, three colours, and a fourth kept for sleeping bodies.
+    // Three body types, three colours, and a fourth for sleeping bodies.
     CHECK_FALSE(Same(flags.colors.staticBody, flags.colors.kinematicBody));
     CHECK_FALSE(Same(flags.colors.kinematicBody, flags.colors.dynamicBody));
     CHECK_FALSE(Same(flags.colors.dynamicBody, flags.colors.sleepingBody));
     CHECK_FALSE(Same(flags.colors.staticBody, flags.colors.sleepingBody));
+    // Put to sleep, the ball is drawn in the sleeping colour.
+    world.SetAwake(ball, false);
+    RecordingDraw asleep;
+    world.Draw(asleep, flags);
+    REQUIRE(asleep.colors.size() == draw.colors.size());
+    CHECK(Same(asleep.colors[3], flags.colors.sleepingBody));
     // The ball, turned a quarter turn, shows it with its axis pointing up.
     CHECK(draw.radii[0] == Real(0.5));
     CHECK(double(draw.axes[0].x) == Approx(0).margin(1e-6));

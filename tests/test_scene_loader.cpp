@@ -93,6 +93,8 @@ TEST_CASE("A minimal scene gets every default", "[scene]")
     CHECK_FALSE(scene.world.allowSleep);
     CHECK_FALSE(scene.world.continuous);
     CHECK_FALSE(scene.camera.has_value());
+    CHECK(scene.bodies[1].allowSleep); // Box2D's b2BodyDef defaults
+    CHECK(scene.bodies[1].awake);
 
     const SceneShape& shape = scene.bodies[1].shapes[0];
     CHECK(shape.density == 1);
@@ -398,4 +400,26 @@ TEST_CASE("Scene errors: files that cannot be read", "[scene][errors]")
               Messages{"/nonexistent/scene.json: cannot open: No such file or directory"});
         CHECK(std::string(error.what()) == error.messages()[0]);
     }
+}
+
+TEST_CASE("Per-body allow_sleep and awake reach the world", "[scene][sleeping]")
+{
+    const Scene scene = ParseScene(R"({
+        "meff_scene": 1,
+        "world": { "allow_sleep": true },
+        "bodies": [
+            { "name": "sleeper", "type": "dynamic", "position": [0, 4], "awake": false,
+              "shapes": [ { "type": "circle", "radius": 0.5 } ] },
+            { "name": "insomniac", "type": "dynamic", "allow_sleep": false,
+              "shapes": [ { "type": "circle", "radius": 0.5 } ] } ] })",
+                                   "dir/sleep.json");
+    CHECK(scene.world.allowSleep);
+    CHECK_FALSE(scene.bodies[0].awake);
+    CHECK_FALSE(scene.bodies[1].allowSleep);
+    const BuiltScene built = BuildWorld(scene);
+    CHECK(built.world.GetAllowSleeping());
+    CHECK_FALSE(built.world.IsAwake(built.bodies[0]));
+    CHECK(built.world.IsSleepingAllowed(built.bodies[0]));
+    CHECK(built.world.IsAwake(built.bodies[1]));
+    CHECK_FALSE(built.world.IsSleepingAllowed(built.bodies[1]));
 }

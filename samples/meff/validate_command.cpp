@@ -76,7 +76,8 @@ void PrintLine(const ValidationResult& result)
             FormatMaximum("contact impulse", "N·s", result.contactImpulse) + ", " +
             FormatMaximum("joint impulse", "N·s", result.jointImpulse);
     line += "; contact points only in meff " + std::to_string(result.onlyInMeff) +
-            ", only in Box2D " + std::to_string(result.onlyInBox2D);
+            ", only in Box2D " + std::to_string(result.onlyInBox2D) + "; awake flags differing " +
+            std::to_string(result.awakeMismatches);
     if (result.divergenceFrame)
     {
         std::string what;
@@ -153,6 +154,7 @@ nlohmann::json SummaryJson(const ValidationResult& result)
                              {"impulse_relative", result.tolerances.impulseRelative}};
     summary["contact_points_only_in_meff"] = result.onlyInMeff;
     summary["contact_points_only_in_box2d"] = result.onlyInBox2D;
+    summary["awake_mismatches"] = result.awakeMismatches;
     summary["block_solver"] = result.blockSolver;
     summary["velocity_iterations"] = {{"meff", result.meffVelocityIterations},
                                       {"box2d", result.box2dVelocityIterations}};

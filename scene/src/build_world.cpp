@@ -38,7 +38,7 @@ WorldDef MakeWorldDef(const SceneWorldSettings& settings)
     return def;
 }
 
-BodyDef MakeBodyDef(const SceneBody& body, bool allowSleep)
+BodyDef MakeBodyDef(const SceneBody& body)
 {
     BodyDef def;
     def.type = body.type;
@@ -51,7 +51,8 @@ BodyDef MakeBodyDef(const SceneBody& body, bool allowSleep)
     def.gravityScale = Real(body.gravityScale);
     def.fixedRotation = body.fixedRotation;
     def.bullet = body.bullet;
-    def.allowSleep = allowSleep;
+    def.allowSleep = body.allowSleep;
+    def.awake = body.awake;
     return def;
 }
 
@@ -173,7 +174,7 @@ BuiltScene BuildWorld(const Scene& scene)
         BodyId id;
         try
         {
-            id = built.world.CreateBody(MakeBodyDef(body, scene.world.allowSleep));
+            id = built.world.CreateBody(MakeBodyDef(body));
         }
         catch (const InvalidArgument& error)
         {

@@ -310,6 +310,8 @@ void ReadBody(ObjectReader& reader, SceneBody& body)
     Assign(body.gravityScale, reader.Number("gravity_scale", defaults.gravityScale));
     Assign(body.fixedRotation, reader.Boolean("fixed_rotation", defaults.fixedRotation));
     Assign(body.bullet, reader.Boolean("bullet", defaults.bullet));
+    Assign(body.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
+    Assign(body.awake, reader.Boolean("awake", defaults.awake));
     if (const Json* shapes = reader.Array("shapes", false))
     {
         for (std::size_t i = 0; i < shapes->size(); ++i)

@@ -35,9 +35,8 @@ b2BodyType ToB2(BodyType type)
     throw std::invalid_argument("unknown body type");
 }
 
-b2BodyDef MakeBodyDef(const SceneBody& body, bool allowSleep)
+b2BodyDef MakeBodyDef(const SceneBody& body)
 {
-    const BodyDef meffDefaults; // what BuildWorld leaves at meff's defaults
     b2BodyDef def;
     def.type = ToB2(body.type);
     def.position = ToB2(body.position);
@@ -46,8 +45,8 @@ b2BodyDef MakeBodyDef(const SceneBody& body, bool allowSleep)
     def.angularVelocity = static_cast<float>(body.angularVelocity);
     def.linearDamping = static_cast<float>(body.linearDamping);
     def.angularDamping = static_cast<float>(body.angularDamping);
-    def.allowSleep = allowSleep;
-    def.awake = meffDefaults.awake;
+    def.allowSleep = body.allowSleep;
+    def.awake = body.awake;
     def.fixedRotation = body.fixedRotation;
     def.bullet = body.bullet;
     def.enabled = true;
@@ -253,7 +252,7 @@ Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
     {
         const SceneBody& body = scene.bodies[i];
-        const b2BodyDef def = MakeBodyDef(body, settings.allowSleep);
+        const b2BodyDef def = MakeBodyDef(body);
         b2Body* created = m_world->CreateBody(&def);
         m_bodies.push_back(created);
         for (std::size_t k = 0; k < body.shapes.size(); ++k)
@@ -291,7 +290,8 @@ FrameSample Box2DMirror::Sample() const
     {
         const b2Vec2 p = body->GetPosition();
         const b2Vec2 v = body->GetLinearVelocity();
-        sample.bodies.push_back({p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity()});
+        sample.bodies.push_back(
+            {p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity(), body->IsAwake()});
     }
     for (const Listener::Point& point : m_listener->Points())
     {

@@ -75,6 +75,7 @@ void CompareBodies(const FrameSample& meff, const FrameSample& box2d, FrameError
             errors.angle = angle;
             errors.angleBody = body;
         }
+        errors.awakeMismatches += m.awake != b.awake ? 1 : 0;
         errors.linearVelocity = std::max(errors.linearVelocity, linear);
         errors.angularVelocity = std::max(errors.angularVelocity, angular);
         const double velocity = std::max(linear, angular);
@@ -193,6 +194,10 @@ FrameErrors CompareFrames(const FrameSample& meff, const FrameSample& box2d, dou
     CompareContacts(meff, box2d, tolerances, errors);
     CompareJoints(meff, box2d, dt, tolerances, errors);
 
+    if (errors.awakeMismatches > 0)
+    {
+        errors.exceeded.emplace_back("awake");
+    }
     if (!Within(errors.position, tolerances.position))
     {
         errors.exceeded.emplace_back("position");

@@ -36,8 +36,8 @@ class MeffSampler
         {
             const Vec2 p = world.GetPosition(id);
             const Vec2 v = world.GetLinearVelocity(id);
-            sample.bodies.push_back(
-                {p.x, p.y, world.GetAngle(id), v.x, v.y, world.GetAngularVelocity(id)});
+            sample.bodies.push_back({p.x, p.y, world.GetAngle(id), v.x, v.y,
+                                     world.GetAngularVelocity(id), world.IsAwake(id)});
         }
         for (const ContactPointReport& report : world.GetContactReports())
         {
@@ -82,11 +82,6 @@ std::vector<std::string> MirrorNotes(const Scene& scene, const RunOptions& optio
         notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a revolute "
                            "point constraint and a prismatic joint's perpendicular and angular "
                            "rows as a block, so those joints cannot agree");
-    }
-    if (scene.world.allowSleep)
-    {
-        notes.emplace_back("world.allow_sleep is true: Box2D puts resting bodies to sleep, meff "
-                           "does not model sleeping yet");
     }
     if (options.meffVelocityIterations &&
         *options.meffVelocityIterations != scene.world.velocityIterations)
@@ -197,6 +192,7 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
         Track(result.jointImpulse, errors.jointImpulse, frame, DescribeJoint(scene, errors.joint));
         result.onlyInMeff += errors.onlyInMeff;
         result.onlyInBox2D += errors.onlyInBox2D;
+        result.awakeMismatches += errors.awakeMismatches;
         if (errors.Exceeds() && !result.divergenceFrame)
         {
             result.divergenceFrame = frame;

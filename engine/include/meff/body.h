@@ -28,8 +28,8 @@ struct BodyDef
     Real gravityScale = 1;      ///< dimensionless multiplier of the world's gravity
     bool fixedRotation = false; ///< infinite rotational inertia
     bool bullet = false;        ///< continuous collision against dynamic bodies too
-    bool allowSleep = true;     ///< may this body fall asleep
-    bool awake = true;          ///< starts awake
+    bool allowSleep = true;     ///< may fall asleep (when the world allows sleeping)
+    bool awake = true;          ///< starts awake; false: asleep until woken (not static)
     std::uint64_t userData = 0; ///< yours; meff never reads it
 };
 

@@ -30,7 +30,7 @@ struct DrawPalette
     DrawColor staticBody{0.35f, 0.65f, 0.35f};
     DrawColor kinematicBody{0.40f, 0.45f, 0.85f};
     DrawColor dynamicBody{0.90f, 0.55f, 0.45f};
-    /// Reserved: sleeping is not modelled yet, so no body is drawn with it today.
+    /// Dynamic bodies that are asleep.
     DrawColor sleepingBody{0.60f, 0.60f, 0.60f};
     DrawColor joint{0.25f, 0.60f, 0.75f};
     DrawColor contactPoint{0.85f, 0.10f, 0.10f};

@@ -17,7 +17,7 @@
 namespace meff
 {
 
-/// Length tolerances of the solver and collision. Defaults are Box2D 2.4.1's constants.
+/// Tolerances of the solver, collision and sleeping. Defaults are Box2D 2.4.1's constants.
 struct Tolerances
 {
     Real linearSlop = Real(0.005);        ///< allowed penetration / joint error (m)
@@ -31,11 +31,19 @@ struct Tolerances
     Real baumgarte = Real(0.2);         ///< fraction of overlap removed per position iteration
     /// Fraction of overlap removed per position iteration of a time-of-impact sub-step.
     Real toiBaumgarte = Real(0.75);
+    /// Sleeping (when WorldDef::allowSleep): a body whose speeds stay within both sleep
+    /// tolerances accumulates rest time; an island whose every body has rested this long falls
+    /// asleep together (Box2D 2.4.1's b2_timeToSleep, b2_linearSleepTolerance,
+    /// b2_angularSleepTolerance).
+    Real timeToSleep = Real(0.5);                           ///< s
+    Real linearSleepTolerance = Real(0.01);                 ///< m/s
+    Real angularSleepTolerance = Real(2) / Real(180) * kPi; ///< rad/s
 };
 
 /// Tolerances for a world measured in `lengthUnitsPerMeter` units per metre (32 for a game
 /// that works in pixels at 32 px/m, say): every length tolerance — slop, skin, broad-phase
-/// margin, maximum correction, maximum translation — scales together; angles do not. Throws
+/// margin, maximum correction, maximum translation, linear sleep tolerance — scales together;
+/// angles and times do not. Throws
 /// InvalidArgument unless the scale is finite and > 0. Gravity, sizes, speeds and each shape's
 /// restitution threshold (m/s) are yours to give in the same units.
 Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter);
@@ -66,7 +74,11 @@ struct WorldDef
     Vec2 gravity{0, -10}; ///< m/s²
     SolverSettings solver{};
     Tolerances tolerances{};
-    bool allowSleep = false; ///< reserved: sleeping is not modelled yet, bodies never sleep
+    /// Let resting islands fall asleep (Box2D 2.4.1's rules, see Tolerances::timeToSleep): a
+    /// sleeping body is not integrated, solved, collided or moved in the broad phase until
+    /// something wakes it. Off by default (Box2D's default is on); World::SetAllowSleeping
+    /// changes it later.
+    bool allowSleep = false;
     /// Continuous collision (Box2D's continuous physics, on by default there too): after each
     /// step, fast dynamic bodies are moved back to their first time of impact with static and
     /// kinematic shapes (bullets: with dynamic shapes too) and re-solved over the rest of the
@@ -135,7 +147,9 @@ class World
 
     // Bodies
     BodyId CreateBody(const BodyDef& def);
-    void DestroyBody(BodyId id); ///< also destroys its shapes, joints and contacts
+    /// Also destroys its shapes, joints and contacts, and wakes the bodies it touched or was
+    /// jointed to (Box2D 2.4.1 wakes only the jointed ones).
+    void DestroyBody(BodyId id);
     bool IsValid(BodyId id) const;
     BodyType GetType(BodyId id) const;
     Vec2 GetPosition(BodyId id) const; ///< world position of the body origin (m)
@@ -150,14 +164,27 @@ class World
     std::uint64_t GetUserData(BodyId id) const;
     Vec2 GetWorldPoint(BodyId id, Vec2 localPoint) const;
     Vec2 GetLocalPoint(BodyId id, Vec2 worldPoint) const;
+    /// Moves the body and wakes it and the bodies it touches. (Box2D 2.4.1 does not wake here;
+    /// meff does, so that a body the user moves is never left asleep in mid-air.)
     void SetTransform(BodyId id, Vec2 position, Real angle);
-    void SetLinearVelocity(BodyId id, Vec2 v);
-    void SetAngularVelocity(BodyId id, Real w);
-    void ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint);           ///< N, until the step ends
-    void ApplyForceToCenter(BodyId id, Vec2 force);                    ///< N
-    void ApplyTorque(BodyId id, Real torque);                          ///< N·m
-    void ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint); ///< N·s
-    void ApplyAngularImpulse(BodyId id, Real impulse);                 ///< N·m·s
+    void SetLinearVelocity(BodyId id, Vec2 v);  ///< a non-zero v wakes the body, as Box2D
+    void SetAngularVelocity(BodyId id, Real w); ///< a non-zero w wakes the body, as Box2D
+    // Forces and impulses act on dynamic bodies only. As Box2D 2.4.1: `wake` wakes a sleeping
+    // body first; a body left asleep (wake = false) ignores the force or impulse.
+    void ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint,
+                    bool wake = true);                                ///< N, until the step ends
+    void ApplyForceToCenter(BodyId id, Vec2 force, bool wake = true); ///< N
+    void ApplyTorque(BodyId id, Real torque, bool wake = true);       ///< N·m
+    void ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake = true); ///< N·s
+    void ApplyAngularImpulse(BodyId id, Real impulse, bool wake = true); ///< N·m·s
+    /// Sleeping. Static bodies are never awake.
+    bool IsAwake(BodyId id) const;
+    /// Box2D's SetAwake: true wakes the body and restarts its rest time; false puts it to
+    /// sleep now, zeroing its velocity, force, torque and rest time. No effect on static bodies.
+    void SetAwake(BodyId id, bool awake);
+    bool IsSleepingAllowed(BodyId id) const;
+    /// false also wakes the body (Box2D's SetSleepingAllowed).
+    void SetSleepingAllowed(BodyId id, bool allowed);
     /// Live bodies in creation order.
     std::span<const BodyId> GetBodies() const;
 
@@ -165,6 +192,7 @@ class World
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Segment& segment);
+    /// Wakes the bodies of the contacts it was touching in (Box2D 2.4.1 does not).
     void DestroyShape(ShapeId id);
     bool IsValid(ShapeId id) const;
     BodyId GetBody(ShapeId id) const;
@@ -176,7 +204,8 @@ class World
     /// A body's shapes, newest first (Box2D's fixture-list order).
     std::span<const ShapeId> GetShapes(BodyId body) const;
 
-    // Joints
+    // Joints. Creating or destroying a joint wakes both bodies (Box2D 2.4.1 wakes them only
+    // on destruction; meff also on creation, so a new joint acts at once).
     JointId CreateJoint(const RevoluteJointDef& def);
     JointId CreateJoint(const DistanceJointDef& def);
     JointId CreateJoint(const PrismaticJointDef& def);
@@ -227,6 +256,9 @@ class World
     const Tolerances& GetTolerances() const;
     bool GetContinuous() const;
     void SetContinuous(bool continuous); ///< takes effect from the next step
+    bool GetAllowSleeping() const;
+    /// Turning sleeping off wakes every body (Box2D's SetAllowSleeping).
+    void SetAllowSleeping(bool allow);
 
     // Reports of the last step
     /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).
@@ -239,9 +271,9 @@ class World
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
 
     // Determinism and rollback
-    /// A 64-bit FNV-1a hash of every live body's transform, centre of mass and velocities and
-    /// every contact's impulses, bit for bit: equal hashes step after step show two runs
-    /// identical.
+    /// A 64-bit FNV-1a hash of every live body's transform, centre of mass, velocities, awake
+    /// flag and rest time and every contact's impulses, bit for bit: equal hashes step after step
+    /// show two runs identical.
     std::uint64_t GetStateHash() const;
     /// Copies the whole world state. Stepping on from RestoreSnapshot(s) is bit-identical to
     /// stepping on from the moment s was saved.

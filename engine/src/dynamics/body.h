@@ -34,7 +34,8 @@ struct Body
     bool fixedRotation = false;
     bool bullet = false;
     bool allowSleep = true;
-    bool awake = true;
+    bool awake = true;  ///< static bodies are never awake, as in Box2D
+    Real sleepTime = 0; ///< s the body has rested within the sleep tolerances
     std::uint64_t userData = 0;
 
     std::int32_t prev = kNullIndex, next = kNullIndex; ///< world body list
@@ -46,6 +47,35 @@ struct Body
     std::int32_t islandIndex = kNullIndex; ///< solver index while its island is solved
     bool islandFlag = false;
 };
+
+/// Wakes a body and restarts its rest time (Box2D 2.4.1's b2Body::SetAwake(true)); static
+/// bodies stay as they are. Every wake rule — API calls, contacts that begin or end, joint
+/// changes, continuous collision — goes through here.
+inline void WakeBody(Body& body)
+{
+    if (body.type == BodyType::Static)
+    {
+        return;
+    }
+    body.awake = true;
+    body.sleepTime = 0;
+}
+
+/// Puts a body to sleep (Box2D 2.4.1's b2Body::SetAwake(false)): a sleeping body keeps no
+/// velocity, force or rest time, so waking it later starts from rest.
+inline void PutBodyToSleep(Body& body)
+{
+    if (body.type == BodyType::Static)
+    {
+        return;
+    }
+    body.awake = false;
+    body.sleepTime = 0;
+    body.linearVelocity = {0, 0};
+    body.angularVelocity = 0;
+    body.force = {0, 0};
+    body.torque = 0;
+}
 
 /// Sets xf from the sweep's current centre and angle.
 inline void SynchronizeTransform(Body& body)

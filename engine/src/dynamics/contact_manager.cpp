@@ -190,6 +190,22 @@ void DestroyContact(WorldState& world, std::int32_t contactIndex)
     --world.contactCount;
 }
 
+void WakeTouchingBodies(WorldState& world, std::int32_t bodyIndex, std::int32_t shapeIndex)
+{
+    for (std::int32_t key = world.bodies[bodyIndex].contactList; key != kNullIndex;)
+    {
+        const Contact& contact = world.contacts[EdgeOwner(key)];
+        key = contact.edges[EdgeSide(key)].next;
+        const bool ofShape =
+            shapeIndex < 0 || contact.shapeA == shapeIndex || contact.shapeB == shapeIndex;
+        if (ofShape && contact.IsTouching())
+        {
+            WakeBody(world, contact.bodyA);
+            WakeBody(world, contact.bodyB);
+        }
+    }
+}
+
 void FlagContactsForFiltering(WorldState& world, std::int32_t bodyA, std::int32_t bodyB)
 {
     for (std::int32_t key = world.bodies[bodyB].contactList; key != kNullIndex;)
@@ -253,12 +269,19 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     Contact& contact = world.contacts[contactIndex];
     const Shape& shapeA = world.shapes[contact.shapeA];
     const Shape& shapeB = world.shapes[contact.shapeB];
-    const Body& bodyA = world.bodies[contact.bodyA];
-    const Body& bodyB = world.bodies[contact.bodyB];
+    Body& bodyA = world.bodies[contact.bodyA];
+    Body& bodyB = world.bodies[contact.bodyB];
     contact.flags &= ~Contact::Disabled; // an updated contact takes part again (Box2D: enabled)
 
     const bool wasTouching = contact.IsTouching();
     const bool touching = UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+    if (touching != wasTouching)
+    {
+        // A contact that begins or ends changes both bodies' islands: wake them
+        // (b2Contact::Update).
+        WakeBody(bodyA);
+        WakeBody(bodyB);
+    }
     if (touching)
     {
         contact.flags |= Contact::Touching;

@@ -67,7 +67,8 @@ void ResetContinuousState(WorldState& world)
 }
 
 /// The time of impact of one contact as a fraction of the whole step, or 1 for none; false
-/// when the contact is not swept at all (both sides inactive, or two non-bullet dynamics).
+/// when the contact is not swept at all (both sides inactive — asleep or static — or two
+/// non-bullet dynamics).
 bool ComputeImpact(WorldState& world, Contact& contact, const StepContext& step, Real& alpha)
 {
     Body& bodyA = world.bodies[contact.bodyA];
@@ -175,6 +176,9 @@ bool AdvanceToImpact(WorldState& world, std::int32_t contactIndex, Real alpha)
         RestoreSweep(bodyB, backupB);
         return false;
     }
+    // A solid impact is solved now, so both bodies are awake (and their rest time restarts).
+    WakeBody(bodyA);
+    WakeBody(bodyB);
     return true;
 }
 
@@ -242,6 +246,7 @@ void BuildImpactIsland(WorldState& world, std::int32_t contactIndex, Real alpha,
             island.contacts.push_back(c);
             if (!other.islandFlag)
             {
+                WakeBody(other); // static bodies stay as they are
                 AddIslandBody(world, island, edge.other);
             }
         }

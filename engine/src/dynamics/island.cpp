@@ -36,13 +36,15 @@ void BuildIsland(WorldState& world, std::int32_t seed, Island& island)
         Body& body = world.bodies[bodyIndex];
         body.islandIndex = static_cast<std::int32_t>(island.bodies.size());
         island.bodies.push_back(bodyIndex);
-        body.awake = true;
 
         // Static bodies end the search: they do not join the islands they touch.
         if (body.type == BodyType::Static)
         {
             continue;
         }
+        // A sleeping body reached from an awake one is solved with it and so is awake again;
+        // its rest time carries on (Box2D sets the flag without SetAwake's reset).
+        body.awake = true;
 
         for (std::int32_t key = body.contactList; key != kNullIndex;)
         {

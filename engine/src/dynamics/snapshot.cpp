@@ -55,6 +55,8 @@ std::uint64_t World::GetStateHash() const
         hash.Add(body.linearVelocity.x);
         hash.Add(body.linearVelocity.y);
         hash.Add(body.angularVelocity);
+        hash.Add(static_cast<unsigned char>(body.awake ? 1 : 0));
+        hash.Add(body.sleepTime);
     }
     for (const detail::Contact& contact : m_state->contacts)
     {

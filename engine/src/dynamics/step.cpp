@@ -2,8 +2,12 @@
 // b2World::Solve, b2Island::Solve), so the same scene agrees between the two engines:
 //
 //   find new contacts → collide → for each island: integrate velocities, prepare, warm start,
-//   solve velocities, integrate positions, correct positions, finish bodies, report →
+//   solve velocities, integrate positions, correct positions, finish bodies, report, sleep →
 //   synchronize shapes → find new contacts → continuous collision (if on) → clear forces
+//
+// Only awake bodies seed islands, so a sleeping island costs no solver work; the narrow phase
+// skips contacts whose bodies all sleep, and only bodies solved this step move in the broad
+// phase.
 #include "dynamics/step_stages.h"
 
 #include "dynamics/world_state.h"
@@ -105,9 +109,13 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step)
     world.contactSolver.StoreImpulses(world.contacts);
 
     IntegratePositions(island, step);
-    CorrectPositions(world, island, data);
+    const bool positionSolved = CorrectPositions(world, island, data);
     FinishBodies(world, island);
     ReportContacts(world);
+    if (world.allowSleep)
+    {
+        UpdateSleep(world, island, step, positionSolved);
+    }
 }
 
 void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step)
@@ -183,7 +191,7 @@ void IntegratePositions(Island& island, const StepContext& step)
     }
 }
 
-void CorrectPositions(WorldState& world, Island& island, SolverData& data)
+bool CorrectPositions(WorldState& world, Island& island, SolverData& data)
 {
     for (int i = 0; i < data.step.solver.positionIterations; ++i)
     {
@@ -196,9 +204,10 @@ void CorrectPositions(WorldState& world, Island& island, SolverData& data)
         }
         if (contactsOkay && jointsOkay)
         {
-            break; // every constraint within tolerance: later sweeps would only add drift
+            return true; // every constraint within tolerance: later sweeps would only add drift
         }
     }
+    return false;
 }
 
 void FinishBodies(WorldState& world, Island& island)
@@ -228,6 +237,45 @@ void FinishBodies(WorldState& world, Island& island)
         body.linearVelocity = island.velocities[i].v;
         body.angularVelocity = island.velocities[i].w;
         SynchronizeTransform(body);
+    }
+}
+
+void UpdateSleep(WorldState& world, const Island& island, const StepContext& step,
+                 bool positionSolved)
+{
+    // Speeds are compared squared, as Box2D does, so that no square root changes the verdict.
+    const Tolerances& tol = step.tolerances;
+    const Real linearToleranceSquared = tol.linearSleepTolerance * tol.linearSleepTolerance;
+    const Real angularToleranceSquared = tol.angularSleepTolerance * tol.angularSleepTolerance;
+    Real minSleepTime = kMaxReal;
+    for (const std::int32_t bodyIndex : island.bodies)
+    {
+        Body& body = world.bodies[bodyIndex];
+        if (body.type == BodyType::Static)
+        {
+            continue;
+        }
+        if (!body.allowSleep ||
+            body.angularVelocity * body.angularVelocity > angularToleranceSquared ||
+            Dot(body.linearVelocity, body.linearVelocity) > linearToleranceSquared)
+        {
+            body.sleepTime = 0; // moving, or never allowed to sleep: keeps the island awake
+            minSleepTime = 0;
+        }
+        else
+        {
+            body.sleepTime += step.dt;
+            minSleepTime = Min(minSleepTime, body.sleepTime);
+        }
+    }
+    // The island sleeps as a whole: one body put to sleep alone would be woken at once by the
+    // island search through its touching neighbours.
+    if (minSleepTime >= tol.timeToSleep && positionSolved)
+    {
+        for (const std::int32_t bodyIndex : island.bodies)
+        {
+            PutBodyToSleep(world.bodies[bodyIndex]);
+        }
     }
 }
 
@@ -277,9 +325,14 @@ void SynchronizeShapes(WorldState& world)
 
 void SynchronizeBodyShapes(WorldState& world, Body& body)
 {
-    Transform xf0;
-    xf0.q.Set(body.sweep.a0);
-    xf0.p = body.sweep.c0 - Mul(xf0.q, body.sweep.localCenter);
+    // A body that fell asleep this step gets tight boxes at its resting pose, not boxes
+    // covering its last motion (Box2D 2.4.1's b2Body::SynchronizeFixtures).
+    Transform xf0 = body.xf;
+    if (body.awake)
+    {
+        xf0.q.Set(body.sweep.a0);
+        xf0.p = body.sweep.c0 - Mul(xf0.q, body.sweep.localCenter);
+    }
     for (const std::int32_t s : body.shapes)
     {
         Shape& shape = world.shapes[s];

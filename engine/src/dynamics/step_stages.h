@@ -18,7 +18,8 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step);
 void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step);
 void PrepareJoints(WorldState& world, Island& island, SolverData& data);
 void IntegratePositions(Island& island, const StepContext& step);
-void CorrectPositions(WorldState& world, Island& island, SolverData& data);
+/// Returns true when the position pass converged (Box2D's positionSolved).
+bool CorrectPositions(WorldState& world, Island& island, SolverData& data);
 void FinishBodies(WorldState& world, Island& island);
 void ReportContacts(WorldState& world);
 void SynchronizeShapes(WorldState& world);
@@ -29,6 +30,11 @@ void SynchronizeBodyShapes(WorldState& world, Body& body);
 /// with its static, kinematic or bullet neighbours over the rest of the step, and repeats.
 void SolveContinuous(WorldState& world, const StepContext& step);
 void ClearForces(WorldState& world);
+/// After an island is solved (b2Island::Solve's sleep pass): advances each body's rest time
+/// and puts the whole island to sleep once every body has rested timeToSleep and the position
+/// pass converged.
+void UpdateSleep(WorldState& world, const Island& island, const StepContext& step,
+                 bool positionSolved);
 
 // Contact lifecycle
 /// Creates contacts for the broad phase's new pairs.
@@ -40,6 +46,9 @@ void Collide(WorldState& world);
 /// begin/end events, and clears Contact::Disabled (Box2D's b2Contact::Update).
 void UpdateContact(WorldState& world, std::int32_t contactIndex);
 void DestroyContact(WorldState& world, std::int32_t contactIndex);
+/// Wakes both bodies of every touching contact of `bodyIndex`; with `shapeIndex` set, only
+/// of that shape's contacts (a body or shape is about to be destroyed or was moved).
+void WakeTouchingBodies(WorldState& world, std::int32_t bodyIndex, std::int32_t shapeIndex = -1);
 /// Flags every contact between two bodies for re-filtering (a joint was added or removed).
 void FlagContactsForFiltering(WorldState& world, std::int32_t bodyA, std::int32_t bodyB);
 

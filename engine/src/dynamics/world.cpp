@@ -189,6 +189,7 @@ Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
     t.aabbMargin *= lengthUnitsPerMeter;
     t.maxLinearCorrection *= lengthUnitsPerMeter;
     t.maxTranslation *= lengthUnitsPerMeter;
+    t.linearSleepTolerance *= lengthUnitsPerMeter;
     return t;
 }
 
@@ -198,7 +199,8 @@ World::World(const WorldDef& def)
     const Tolerances& t = def.tolerances;
     for (const Real value :
          {t.linearSlop, t.polygonSkin, t.aabbMargin, t.maxLinearCorrection, t.maxAngularCorrection,
-          t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte, t.toiBaumgarte})
+          t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte, t.toiBaumgarte,
+          t.timeToSleep, t.linearSleepTolerance, t.angularSleepTolerance})
     {
         RequireNonNegative(value, "WorldDef::tolerances");
     }
@@ -243,7 +245,8 @@ BodyId World::CreateBody(const BodyDef& def)
     body.fixedRotation = def.fixedRotation;
     body.bullet = def.bullet;
     body.allowSleep = def.allowSleep;
-    body.awake = true; // sleeping is not modelled yet
+    body.awake = def.awake && def.type != BodyType::Static; // static bodies never wake
+    body.sleepTime = 0;
     body.userData = def.userData;
 
     body.prev = kNullIndex;
@@ -263,6 +266,9 @@ void World::DestroyBody(BodyId id)
 {
     WorldState& world = *m_state;
     Body& body = Resolve(world.bodies, id, "body");
+    // Bodies resting on this one must not sleep on in mid-air. Box2D 2.4.1 wakes only the
+    // jointed bodies (through DestroyJoint); meff also wakes the touching ones.
+    WakeTouchingBodies(world, id.index);
     while (body.jointList != kNullIndex)
     {
         const std::int32_t j = EdgeOwner(body.jointList);
@@ -378,79 +384,147 @@ void World::SetTransform(BodyId id, Vec2 position, Real angle)
         world.broadPhase.MoveProxy(shape.proxyId, shape.aabb, {0, 0});
     }
     world.newShapes = true;
+    // Box2D 2.4.1 does not wake here. meff wakes the moved body and what it was touching, so
+    // that a body the user moves never stays asleep where it was put, nor leaves its old
+    // neighbours asleep in mid-air.
+    WakeTouchingBodies(world, id.index);
+    WakeBody(body);
 }
 
 void World::SetLinearVelocity(BodyId id, Vec2 v)
 {
     Body& body = Resolve(m_state->bodies, id, "body");
     RequireFinite(v, "World::SetLinearVelocity: v");
-    if (body.type != BodyType::Static)
+    if (body.type == BodyType::Static)
     {
-        body.linearVelocity = v;
+        return;
     }
+    if (Dot(v, v) > 0)
+    {
+        WakeBody(body);
+    }
+    body.linearVelocity = v;
 }
 
 void World::SetAngularVelocity(BodyId id, Real w)
 {
     Body& body = Resolve(m_state->bodies, id, "body");
     RequireFinite(w, "World::SetAngularVelocity: w");
-    if (body.type != BodyType::Static)
+    if (body.type == BodyType::Static)
     {
-        body.angularVelocity = w;
+        return;
     }
+    if (w * w > 0)
+    {
+        WakeBody(body);
+    }
+    body.angularVelocity = w;
 }
 
-void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint)
+namespace
+{
+
+/// Box2D 2.4.1's rule for forces and impulses: only dynamic bodies take them; `wake` wakes a
+/// sleeping body first (an awake one keeps its rest time); a body still asleep ignores them.
+bool TakesLoad(Body& body, bool wake)
+{
+    if (body.type != BodyType::Dynamic)
+    {
+        return false;
+    }
+    if (wake && !body.awake)
+    {
+        WakeBody(body);
+    }
+    return body.awake;
+}
+
+} // namespace
+
+void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake)
 {
     Body& body = Resolve(m_state->bodies, id, "body");
     RequireFinite(force, "World::ApplyForce: force");
     RequireFinite(worldPoint, "World::ApplyForce: point");
-    if (body.type == BodyType::Dynamic)
+    if (TakesLoad(body, wake))
     {
         body.force += force;
         body.torque += Cross(worldPoint - body.sweep.c, force);
     }
 }
 
-void World::ApplyForceToCenter(BodyId id, Vec2 force)
+void World::ApplyForceToCenter(BodyId id, Vec2 force, bool wake)
 {
     Body& body = Resolve(m_state->bodies, id, "body");
     RequireFinite(force, "World::ApplyForceToCenter: force");
-    if (body.type == BodyType::Dynamic)
+    if (TakesLoad(body, wake))
     {
         body.force += force;
     }
 }
 
-void World::ApplyTorque(BodyId id, Real torque)
+void World::ApplyTorque(BodyId id, Real torque, bool wake)
 {
     Body& body = Resolve(m_state->bodies, id, "body");
     RequireFinite(torque, "World::ApplyTorque: torque");
-    if (body.type == BodyType::Dynamic)
+    if (TakesLoad(body, wake))
     {
         body.torque += torque;
     }
 }
 
-void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint)
+void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake)
 {
     Body& body = Resolve(m_state->bodies, id, "body");
     RequireFinite(impulse, "World::ApplyLinearImpulse: impulse");
     RequireFinite(worldPoint, "World::ApplyLinearImpulse: point");
-    if (body.type == BodyType::Dynamic)
+    if (TakesLoad(body, wake))
     {
         body.linearVelocity += body.invMass * impulse;
         body.angularVelocity += body.invI * Cross(worldPoint - body.sweep.c, impulse);
     }
 }
 
-void World::ApplyAngularImpulse(BodyId id, Real impulse)
+void World::ApplyAngularImpulse(BodyId id, Real impulse, bool wake)
 {
     Body& body = Resolve(m_state->bodies, id, "body");
     RequireFinite(impulse, "World::ApplyAngularImpulse: impulse");
-    if (body.type == BodyType::Dynamic)
+    if (TakesLoad(body, wake))
     {
         body.angularVelocity += body.invI * impulse;
+    }
+}
+
+bool World::IsAwake(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").awake;
+}
+
+void World::SetAwake(BodyId id, bool awake)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    if (awake)
+    {
+        WakeBody(body);
+    }
+    else
+    {
+        PutBodyToSleep(body);
+    }
+}
+
+bool World::IsSleepingAllowed(BodyId id) const
+{
+    return Resolve(m_state->bodies, id, "body").allowSleep;
+}
+
+void World::SetSleepingAllowed(BodyId id, bool allowed)
+{
+    Body& body = Resolve(m_state->bodies, id, "body");
+    body.allowSleep = allowed;
+    if (!allowed)
+    {
+        WakeBody(body);
     }
 }
 
@@ -590,6 +664,7 @@ void World::DestroyShape(ShapeId id)
     WorldState& world = *m_state;
     Shape& shape = Resolve(world.shapes, id, "shape");
     Body& body = world.bodies[shape.body];
+    WakeTouchingBodies(world, shape.body, id.index); // departs from Box2D 2.4.1, see world.h
     for (std::int32_t key = body.contactList; key != kNullIndex;)
     {
         const std::int32_t c = EdgeOwner(key);
@@ -675,6 +750,9 @@ JointId AddJoint(WorldState& world, Joint joint)
     world.jointList = index;
     LinkJointEdge(world, index, 0, joint.bodyA, joint.bodyB);
     LinkJointEdge(world, index, 1, joint.bodyB, joint.bodyA);
+    // Box2D 2.4.1 leaves the bodies as they are; meff wakes them so the new joint acts at once.
+    WakeBody(world, joint.bodyA);
+    WakeBody(world, joint.bodyB);
     if (!joint.collideConnected)
     {
         FlagContactsForFiltering(world, joint.bodyA, joint.bodyB);
@@ -738,6 +816,8 @@ void World::DestroyJoint(JointId id)
     {
         world.jointList = slot.next;
     }
+    WakeBody(world, slot.joint.bodyA); // as b2World::DestroyJoint
+    WakeBody(world, slot.joint.bodyB);
     UnlinkJointEdge(world, id.index, 0, slot.joint.bodyA);
     UnlinkJointEdge(world, id.index, 1, slot.joint.bodyB);
     if (!slot.joint.collideConnected)
@@ -966,6 +1046,26 @@ bool World::GetContinuous() const
 void World::SetContinuous(bool continuous)
 {
     m_state->continuous = continuous;
+}
+bool World::GetAllowSleeping() const
+{
+    return m_state->allowSleep;
+}
+void World::SetAllowSleeping(bool allow)
+{
+    WorldState& world = *m_state;
+    if (allow == world.allowSleep)
+    {
+        return;
+    }
+    world.allowSleep = allow;
+    if (!allow)
+    {
+        for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
+        {
+            WakeBody(world, b);
+        }
+    }
 }
 
 std::span<const ContactPointReport> World::GetContactReports() const

@@ -31,7 +31,8 @@ struct WorldState
 {
     explicit WorldState(const WorldDef& def)
         : gravity(def.gravity), solver(def.solver), tolerances(def.tolerances),
-          continuous(def.continuous), broadPhase(def.tolerances.aabbMargin)
+          continuous(def.continuous), allowSleep(def.allowSleep),
+          broadPhase(def.tolerances.aabbMargin)
     {
     }
 
@@ -39,6 +40,7 @@ struct WorldState
     SolverSettings solver;
     Tolerances tolerances;
     bool continuous = true; ///< run SolveContinuous after the discrete step
+    bool allowSleep = false;
 
     std::vector<Body> bodies;
     std::vector<std::int32_t> freeBodies;
@@ -73,5 +75,12 @@ struct WorldState
     std::uint64_t stepCount = 0;
     bool failed = false; ///< a step produced a non-finite state; stepping is refused
 };
+
+/// Wakes body `bodyIndex` (see WakeBody(Body&)): the helper for any world change — a joint
+/// setter, say — that must wake the bodies it affects.
+inline void WakeBody(WorldState& world, std::int32_t bodyIndex)
+{
+    WakeBody(world.bodies[bodyIndex]);
+}
 
 } // namespace meff::detail

@@ -45,7 +45,7 @@ struct SceneWorldSettings
     bool blockSolver = true; ///< 2×2 block solve of two-point manifolds
     bool blockJoints = true; ///< meff only: block solve of revolute and prismatic joints
     bool restitutionFromStepStart = false; ///< meff only: see SolverSettings
-    bool allowSleep = false;               ///< reserved (sleeping is not modelled yet)
+    bool allowSleep = false;               ///< let resting islands sleep (Box2D's rules)
     bool continuous = false;               ///< Box2D's continuous physics (time of impact)
 };
 
@@ -105,6 +105,8 @@ struct SceneBody
     double gravityScale = 1;
     bool fixedRotation = false;
     bool bullet = false;
+    bool allowSleep = true;         ///< may sleep, when the world allows sleeping
+    bool awake = true;              ///< false: starts asleep (dynamic and kinematic bodies)
     std::vector<SceneShape> shapes; ///< in file order, which is also creation order
 };
 

@@ -2,8 +2,7 @@
 // created in the same order as meff::BuildWorld creates them (creation order fixes Box2D's
 // body, fixture, contact and joint lists and so the order the solver visits them).
 //
-// Nothing is left to Box2D's defaults: every definition field is set from the scene, or, for
-// the few the scene does not have (a body's awake flag), from meff's own default.
+// Nothing is left to Box2D's defaults: every definition field is set from the scene.
 #pragma once
 
 #include "meff/scene.h"

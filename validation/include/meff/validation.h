@@ -37,6 +37,7 @@ struct BodySample
     double vx = 0;    ///< centre of mass velocity (m/s)
     double vy = 0;
     double angularVelocity = 0; ///< rad/s
+    bool awake = true;          ///< IsAwake (static bodies: false in both engines)
 };
 
 /// Which contact point: the two shapes, by scene body index and shape index within the body,
@@ -107,15 +108,16 @@ struct FrameErrors
     std::optional<ContactKey> contact; ///< the point holding contactImpulse
     int contactPointsMeff = 0;
     int contactPointsBox2D = 0;
-    int onlyInMeff = 0;  ///< points meff has and Box2D lacks
-    int onlyInBox2D = 0; ///< points Box2D has and meff lacks
+    int onlyInMeff = 0;      ///< points meff has and Box2D lacks
+    int onlyInBox2D = 0;     ///< points Box2D has and meff lacks
+    int awakeMismatches = 0; ///< bodies awake in one engine and asleep in the other
 
     double jointImpulse = 0; ///< largest |ΔF|·dt or |ΔT|·dt (N·s, N·m·s)
     double jointRatio = 0;   ///< largest |Δ| / allowance over the joints
     int joint = -1;
 
     /// Which quantities exceeded their tolerance: "position", "angle", "velocity",
-    /// "contact_impulse", "joint_impulse".
+    /// "contact_impulse", "joint_impulse", and "awake" (no tolerance: any mismatch).
     std::vector<std::string> exceeded;
     bool Exceeds() const { return !exceeded.empty(); }
 };
@@ -179,6 +181,7 @@ struct ValidationResult
     RunMaximum jointImpulse;
     long long onlyInMeff = 0; ///< contact points over the run
     long long onlyInBox2D = 0;
+    long long awakeMismatches = 0; ///< body-frames whose awake flags differ
 
     std::optional<SettleResult> settle;
     std::vector<std::string> notes; ///< what the mirror cannot reproduce, and other warnings
