@@ -891,6 +891,9 @@ void World::SetJointMotorSpeed(JointId id, Real speed)
         throw InvalidArgument("World::SetJointMotorSpeed: the joint has no motor (only "
                               "revolute, prismatic and wheel joints do)");
     }
+    // A changed motor moves its bodies: wake them, as Box2D's SetMotorSpeed does.
+    WakeBody(*m_state, joint.bodyA);
+    WakeBody(*m_state, joint.bodyB);
 }
 
 namespace
