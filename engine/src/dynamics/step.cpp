@@ -6,6 +6,7 @@
 //   synchronize shapes → find new contacts → continuous collision (if on) → clear forces
 #include "dynamics/step_stages.h"
 
+#include "dynamics/events.h"
 #include "dynamics/world_state.h"
 #include "meff/world.h"
 
@@ -69,9 +70,7 @@ StepContext BeginStep(WorldState& world, Real dt)
     step.dtRatio = world.invDt0 * dt;
     step.solver = world.solver;
     step.tolerances = world.tolerances;
-    world.contactReports.clear();
-    world.beginEvents.clear();
-    world.endEvents.clear();
+    ClearEvents(world);
     return step;
 }
 
@@ -108,6 +107,7 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step)
     CorrectPositions(world, island, data);
     FinishBodies(world, island);
     ReportContacts(world);
+    ReportHitEvents(world, step);
 }
 
 void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step)

@@ -173,7 +173,6 @@ void ValidateShapeDef(const ShapeDef& def)
     Require(meff::IsValid(def.restitution) && def.restitution >= 0 && def.restitution <= 1,
             "ShapeDef::restitution: must be in [0, 1], got " + std::to_string(def.restitution));
     RequireNonNegative(def.restitutionThreshold, "ShapeDef::restitutionThreshold");
-    Require(!def.isSensor, "ShapeDef::isSensor: sensors are not supported yet");
 }
 
 } // namespace
@@ -196,9 +195,9 @@ World::World(const WorldDef& def)
 {
     RequireFinite(def.gravity, "WorldDef::gravity");
     const Tolerances& t = def.tolerances;
-    for (const Real value :
-         {t.linearSlop, t.polygonSkin, t.aabbMargin, t.maxLinearCorrection, t.maxAngularCorrection,
-          t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte, t.toiBaumgarte})
+    for (const Real value : {t.linearSlop, t.polygonSkin, t.aabbMargin, t.maxLinearCorrection,
+                             t.maxAngularCorrection, t.angularSlop, t.maxTranslation, t.maxRotation,
+                             t.baumgarte, t.toiBaumgarte, t.hitEventThreshold})
     {
         RequireNonNegative(value, "WorldDef::tolerances");
     }
@@ -862,6 +861,10 @@ void World::SetContinuous(bool continuous)
 {
     m_state->continuous = continuous;
 }
+void World::SetPreSolveCallback(PreSolveCallback callback)
+{
+    m_state->preSolve = std::move(callback);
+}
 
 std::span<const ContactPointReport> World::GetContactReports() const
 {
@@ -874,6 +877,18 @@ std::span<const ContactEvent> World::GetContactBeginEvents() const
 std::span<const ContactEvent> World::GetContactEndEvents() const
 {
     return m_state->endEvents;
+}
+std::span<const SensorEvent> World::GetSensorBeginEvents() const
+{
+    return m_state->sensorBeginEvents;
+}
+std::span<const SensorEvent> World::GetSensorEndEvents() const
+{
+    return m_state->sensorEndEvents;
+}
+std::span<const ContactHitEvent> World::GetContactHitEvents() const
+{
+    return m_state->hitEvents;
 }
 int World::GetContactCount() const
 {
