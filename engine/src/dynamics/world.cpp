@@ -188,6 +188,7 @@ Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
     t.aabbMargin *= lengthUnitsPerMeter;
     t.maxLinearCorrection *= lengthUnitsPerMeter;
     t.maxTranslation *= lengthUnitsPerMeter;
+    t.hitEventThreshold *= lengthUnitsPerMeter; // a speed, in length units per second
     return t;
 }
 
