@@ -2,8 +2,13 @@
 // b2World::Solve, b2Island::Solve), so the same scene agrees between the two engines:
 //
 //   find new contacts → collide → for each island: integrate velocities, prepare, warm start,
-//   solve velocities, integrate positions, correct positions, finish bodies, report →
-//   synchronize shapes → find new contacts → continuous collision (if on) → clear forces
+//   solve velocities, integrate positions, correct positions, finish bodies, report contacts,
+//   report hits → synchronize shapes → find new contacts → continuous collision (if on) →
+//   clear forces
+//
+// Events: the narrow phase (collide, and continuous collision's contact updates) records
+// contact and sensor begin/end events and calls the pre-solve callback; the report stages
+// record contact points and hit events (events.cpp).
 #include "dynamics/step_stages.h"
 
 #include "dynamics/events.h"
