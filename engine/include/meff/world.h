@@ -248,8 +248,9 @@ class World
     /// Installs (or, with an empty function, removes) the pre-solve callback.
     /// WARNING: it runs INSIDE World::Step, in the narrow phase and in continuous collision.
     /// It must not modify the world — no Create/Destroy/Set/Apply/Step calls — and should only
-    /// read meff's data (the contact it is given, const getters of this world). It is
-    /// configuration, not state: RestoreSnapshot keeps the current callback.
+    /// read meff's data (the contact it is given, const getters of this world), and must not
+    /// throw (the step would be left half done). It is configuration, not state:
+    /// RestoreSnapshot keeps the current callback.
     void SetPreSolveCallback(PreSolveCallback callback);
 
     // Reports of the last step
