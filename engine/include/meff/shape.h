@@ -25,7 +25,14 @@ struct ShapeDef
     Real restitution = 0;          ///< coefficient e in [0,1]; mixed as max(eA, eB)
     Real restitutionThreshold = 1; ///< m/s; slower approaches do not bounce; mixed as min
     Filter filter{};
-    bool isSensor = false;      ///< detects overlap, never collides
+    /// Detects overlap, never collides (Box2D 2.4.1's sensor fixture): its contacts are never
+    /// solved; they touch while the shapes overlap (GJK distance < 10·epsilon, radii included)
+    /// and are reported by World::GetSensorBeginEvents/GetSensorEndEvents, not among the
+    /// contact events. A sensor's density still counts towards its body's mass, as in Box2D.
+    bool isSensor = false;
+    /// Report this shape's contacts that hit faster than Tolerances::hitEventThreshold in
+    /// World::GetContactHitEvents (Box2D v3's enableHitEvents; either shape of a pair enables).
+    bool enableHitEvents = false;
     std::uint64_t userData = 0; ///< yours; meff never reads it
 };
 

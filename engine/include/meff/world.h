@@ -11,6 +11,7 @@
 #include "meff/shape.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -38,12 +39,15 @@ struct Tolerances
     Real timeToSleep = Real(0.5);                           ///< s
     Real linearSleepTolerance = Real(0.01);                 ///< m/s
     Real angularSleepTolerance = Real(2) / Real(180) * kPi; ///< rad/s
+    /// Smallest approach speed that makes a contact hit event (m/s; Box2D v3's
+    /// hitEventThreshold). A speed, but in length units per second, so it scales with them.
+    Real hitEventThreshold = 1;
 };
 
 /// Tolerances for a world measured in `lengthUnitsPerMeter` units per metre (32 for a game
 /// that works in pixels at 32 px/m, say): every length tolerance — slop, skin, broad-phase
-/// margin, maximum correction, maximum translation, linear sleep tolerance — scales together;
-/// angles and times do not. Throws
+/// margin, maximum correction, maximum translation, linear sleep tolerance, the hit-event
+/// speed — scales together; angles and times do not. Throws
 /// InvalidArgument unless the scale is finite and > 0. Gravity, sizes, speeds and each shape's
 /// restitution threshold (m/s) are yours to give in the same units.
 Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter);
@@ -109,6 +113,41 @@ struct ContactEvent
     ShapeId shapeA{};
     ShapeId shapeB{};
 };
+
+/// A shape started or stopped overlapping a sensor during the last step. When both shapes are
+/// sensors, the event is reported once, with the contact's first shape as `sensorShape`.
+struct SensorEvent
+{
+    ShapeId sensorShape{};
+    ShapeId visitorShape{};
+};
+
+/// A contact that hit faster than Tolerances::hitEventThreshold in the last step (Box2D v3's
+/// b2ContactHitEvent): its fastest point, measured before the solver's impulses.
+struct ContactHitEvent
+{
+    ShapeId shapeA{};
+    ShapeId shapeB{};
+    Vec2 point{};           ///< world point of the fastest approaching point, after the step (m)
+    Vec2 normal{};          ///< unit normal from A to B
+    Real approachSpeed = 0; ///< −(relative normal velocity) before impulses (m/s), > threshold
+};
+
+/// What a pre-solve callback sees of one touching contact (Box2D 2.4.1's PreSolve).
+struct PreSolveContact
+{
+    ShapeId shapeA{};
+    ShapeId shapeB{};
+    BodyId bodyA{};
+    BodyId bodyB{};
+    const Manifold* manifold = nullptr; ///< the fresh manifold (≥ 1 point), body frames
+    WorldManifold worldManifold{};      ///< its normal (A to B), points and separations (world)
+};
+
+/// Called inside World::Step for every touching, non-sensor contact each time its manifold is
+/// updated; returning false disables the contact until its next update (not solved, not
+/// reported, no hit event). Contact begin/end events are geometric and are not affected.
+using PreSolveCallback = std::function<bool(const PreSolveContact& contact)>;
 
 /// A joint's reaction on body B, as Box2D's GetReactionForce/GetReactionTorque.
 struct JointReaction
@@ -259,6 +298,13 @@ class World
     bool GetAllowSleeping() const;
     /// Turning sleeping off wakes every body (Box2D's SetAllowSleeping).
     void SetAllowSleeping(bool allow);
+    /// Installs (or, with an empty function, removes) the pre-solve callback.
+    /// WARNING: it runs INSIDE World::Step, in the narrow phase and in continuous collision.
+    /// It must not modify the world — no Create/Destroy/Set/Apply/Step calls — and should only
+    /// read meff's data (the contact it is given, const getters of this world), and must not
+    /// throw (the step would be left half done). It is configuration, not state:
+    /// RestoreSnapshot keeps the current callback.
+    void SetPreSolveCallback(PreSolveCallback callback);
 
     // Reports of the last step
     /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).
@@ -268,6 +314,14 @@ class World
     std::span<const ContactPointReport> GetContactReports() const;
     std::span<const ContactEvent> GetContactBeginEvents() const;
     std::span<const ContactEvent> GetContactEndEvents() const;
+    /// Shapes that started / stopped overlapping a sensor, in the order Box2D 2.4.1 calls
+    /// BeginContact/EndContact for sensor fixtures. Sensor contacts never appear among the
+    /// contact begin/end events or the contact reports (as in Box2D v3).
+    std::span<const SensorEvent> GetSensorBeginEvents() const;
+    std::span<const SensorEvent> GetSensorEndEvents() const;
+    /// One event per contact that hit faster than Tolerances::hitEventThreshold (its fastest
+    /// point), for contacts with a shape that has ShapeDef::enableHitEvents; in solver order.
+    std::span<const ContactHitEvent> GetContactHitEvents() const;
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
 
     // Determinism and rollback

@@ -1,5 +1,6 @@
 #include "dynamics/contact.h"
 
+#include "collision/distance.h"
 #include "dynamics/shape.h"
 
 namespace meff::detail
@@ -86,6 +87,13 @@ bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
         }
     }
     return manifold.pointCount > 0;
+}
+
+bool UpdateSensorOverlap(Contact& contact, const Shape& shapeA, const Transform& xfA,
+                         const Shape& shapeB, const Transform& xfB)
+{
+    contact.manifold.pointCount = 0;
+    return TestOverlap(MakeProxy(shapeA), xfA, MakeProxy(shapeB), xfB);
 }
 
 } // namespace meff::detail

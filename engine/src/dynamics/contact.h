@@ -37,12 +37,15 @@ struct Contact
 {
     enum Flags : std::uint32_t
     {
-        Touching = 1u << 0, ///< the manifold has points
-        Filter = 1u << 1,   ///< re-check filtering before the next narrow phase
-        Island = 1u << 2,   ///< already added to an island this step
-        Toi = 1u << 3,      ///< `toi` holds a valid time of impact for this step
-        Disabled = 1u << 4, ///< a time-of-impact event found it not touching; skipped by the
-                            ///< continuous stage until its manifold is next updated
+        Touching = 1u << 0,  ///< the manifold has points
+        Filter = 1u << 1,    ///< re-check filtering before the next narrow phase
+        Island = 1u << 2,    ///< already added to an island this step
+        Toi = 1u << 3,       ///< `toi` holds a valid time of impact for this step
+        Disabled = 1u << 4,  ///< not solved until its manifold is next updated: the pre-solve
+                             ///< callback refused it, or a time-of-impact event found it not
+                             ///< touching (Box2D: !IsEnabled())
+        Sensor = 1u << 5,    ///< a shape is a sensor: overlap test only, never solved
+        HitEvents = 1u << 6, ///< a shape asked for hit events
     };
 
     bool alive = false;
@@ -57,8 +60,13 @@ struct Contact
     Edge edges[2];                     ///< [0] on bodyA's list, [1] on bodyB's
     int toiCount = 0;                  ///< time-of-impact events this step
     Real toi = 1;                      ///< cached time of impact (fraction of the step)
+    std::uint64_t hitStep = 0;         ///< 1 + the step count when hitEvent was last written
+    std::int32_t hitEvent = -1;        ///< its index in WorldState::hitEvents during that step
 
     bool IsTouching() const { return (flags & Touching) != 0; }
+    bool IsSensor() const { return (flags & Sensor) != 0; }
+    /// Touching, enabled and not a sensor: what the solver takes (Box2D's island test).
+    bool IsSolid() const { return (flags & (Touching | Disabled | Sensor)) == Touching; }
 };
 
 /// Box2D 2.4.1's mixing rules.
@@ -79,6 +87,11 @@ inline Real MixRestitutionThreshold(Real a, Real b)
 /// over to points with the same feature key. Returns the new touching state.
 bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
                     const Shape& shapeB, const Transform& xfB);
+
+/// Sensor contacts (Box2D's b2TestOverlap): the shapes touch when the GJK distance between
+/// them, radii included, is below 10·epsilon. The manifold is emptied: sensors have no points.
+bool UpdateSensorOverlap(Contact& contact, const Shape& shapeA, const Transform& xfA,
+                         const Shape& shapeB, const Transform& xfB);
 
 /// Does the pair of shape types produce contacts, and which one is A? Box2D puts the polygon
 /// before the circle and the segment before anything; two segments never collide.

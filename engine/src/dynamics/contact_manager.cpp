@@ -3,6 +3,7 @@
 // search — and so the solver — walks them in that order.
 #include "dynamics/step_stages.h"
 
+#include "dynamics/events.h"
 #include "dynamics/world_state.h"
 
 namespace meff::detail
@@ -132,6 +133,14 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     contact.restitution = MixRestitution(defA.restitution, defB.restitution);
     contact.restitutionThreshold =
         MixRestitutionThreshold(defA.restitutionThreshold, defB.restitutionThreshold);
+    if (defA.isSensor || defB.isSensor)
+    {
+        contact.flags |= Contact::Sensor;
+    }
+    if (defA.enableHitEvents || defB.enableHitEvents)
+    {
+        contact.flags |= Contact::HitEvents;
+    }
 
     contact.prev = kNullIndex;
     contact.next = world.contactList;
@@ -148,12 +157,6 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     ++world.contactCount;
 }
 
-ContactEvent MakeEvent(const WorldState& world, const Contact& contact)
-{
-    return {ShapeId{contact.shapeA, world.shapes[contact.shapeA].generation},
-            ShapeId{contact.shapeB, world.shapes[contact.shapeB].generation}};
-}
-
 } // namespace
 
 void FindNewContacts(WorldState& world)
@@ -168,7 +171,7 @@ void DestroyContact(WorldState& world, std::int32_t contactIndex)
     Contact& contact = world.contacts[contactIndex];
     if (contact.IsTouching())
     {
-        world.endEvents.push_back(MakeEvent(world, contact));
+        RecordTouchEnded(world, contact);
     }
     if (contact.prev != kNullIndex)
     {
@@ -274,11 +277,13 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     contact.flags &= ~Contact::Disabled; // an updated contact takes part again (Box2D: enabled)
 
     const bool wasTouching = contact.IsTouching();
-    const bool touching = UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
-    if (touching != wasTouching)
+    const bool touching = contact.IsSensor()
+                              ? UpdateSensorOverlap(contact, shapeA, bodyA.xf, shapeB, bodyB.xf)
+                              : UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+    if (!contact.IsSensor() && touching != wasTouching)
     {
-        // A contact that begins or ends changes both bodies' islands: wake them
-        // (b2Contact::Update).
+        // A solid contact that begins or ends changes both bodies' islands: wake them
+        // (b2Contact::Update; a sensor's overlap wakes nobody).
         WakeBody(bodyA);
         WakeBody(bodyB);
     }
@@ -292,11 +297,15 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     }
     if (touching && !wasTouching)
     {
-        world.beginEvents.push_back(MakeEvent(world, contact));
+        RecordTouchBegan(world, contact);
     }
     else if (!touching && wasTouching)
     {
-        world.endEvents.push_back(MakeEvent(world, contact));
+        RecordTouchEnded(world, contact);
+    }
+    if (touching && !contact.IsSensor())
+    {
+        RunPreSolve(world, contactIndex);
     }
 }
 

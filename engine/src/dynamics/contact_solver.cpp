@@ -132,6 +132,7 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
             // velocity −e·vn instead of 0 makes the impulse (1+e)·m_red·|vn|.
             vp.velocityBias = 0;
             const Real vRel = Dot(vc.normal, RelativeVelocity(velA.v, velA.w, velB.v, velB.w, vp));
+            vp.normalVelocity = vRel;
             if (vRel < -vc.threshold)
             {
                 vp.velocityBias = -vc.restitution * vRel;

@@ -25,6 +25,7 @@ struct ContactVelocityPoint
     Real normalImpulse = 0, tangentImpulse = 0;
     Real normalMass = 0, tangentMass = 0; ///< 1/k of the row (kg)
     Real velocityBias = 0;                ///< restitution target −e·vn (m/s)
+    Real normalVelocity = 0; ///< vn before impulses, as restitution measures it (m/s); hit events
 };
 
 struct ContactVelocityConstraint

@@ -16,6 +16,7 @@
 #include "dynamics/step_stages.h"
 
 #include "collision/distance.h"
+#include "dynamics/events.h"
 #include "dynamics/world_state.h"
 
 namespace meff::detail
@@ -49,6 +50,7 @@ void RestoreSweep(Body& body, const Sweep& backup)
 }
 
 /// Every sweep starts at the beginning of the step, and no contact has a cached impact yet.
+/// Contact::Disabled stays: a contact the pre-solve callback refused is not swept either.
 void ResetContinuousState(WorldState& world)
 {
     for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
@@ -60,7 +62,7 @@ void ResetContinuousState(WorldState& world)
     for (std::int32_t c = world.contactList; c != kNullIndex; c = world.contacts[c].next)
     {
         Contact& contact = world.contacts[c];
-        contact.flags &= ~(Contact::Toi | Contact::Island | Contact::Disabled);
+        contact.flags &= ~(Contact::Toi | Contact::Island);
         contact.toiCount = 0;
         contact.toi = 1;
     }
@@ -71,6 +73,10 @@ void ResetContinuousState(WorldState& world)
 /// non-bullet dynamics).
 bool ComputeImpact(WorldState& world, Contact& contact, const StepContext& step, Real& alpha)
 {
+    if (contact.IsSensor())
+    {
+        return false;
+    }
     Body& bodyA = world.bodies[contact.bodyA];
     Body& bodyB = world.bodies[contact.bodyB];
     const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
@@ -155,7 +161,7 @@ std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& m
 
 /// Moves the event's two bodies to alpha and refreshes its manifold. Returns false (and
 /// restores the bodies, disabling the contact for the rest of the step) when it has no points
-/// there.
+/// there or the pre-solve callback refused it.
 bool AdvanceToImpact(WorldState& world, std::int32_t contactIndex, Real alpha)
 {
     Body& bodyA = world.bodies[world.contacts[contactIndex].bodyA];
@@ -169,7 +175,7 @@ bool AdvanceToImpact(WorldState& world, std::int32_t contactIndex, Real alpha)
     Contact& contact = world.contacts[contactIndex];
     contact.flags &= ~Contact::Toi;
     ++contact.toiCount;
-    if (!contact.IsTouching())
+    if ((contact.flags & Contact::Disabled) != 0 || !contact.IsTouching())
     {
         contact.flags |= Contact::Disabled;
         RestoreSweep(bodyA, backupA);
@@ -229,6 +235,10 @@ void BuildImpactIsland(WorldState& world, std::int32_t contactIndex, Real alpha,
             {
                 continue;
             }
+            if (contact.IsSensor())
+            {
+                continue;
+            }
 
             // Tentatively move the neighbour to the impact time; keep it only if it touches.
             const Sweep backup = other.sweep;
@@ -237,7 +247,7 @@ void BuildImpactIsland(WorldState& world, std::int32_t contactIndex, Real alpha,
                 AdvanceBody(other, alpha);
             }
             UpdateContact(world, c);
-            if (!contact.IsTouching())
+            if ((contact.flags & Contact::Disabled) != 0 || !contact.IsTouching())
             {
                 RestoreSweep(other, backup);
                 continue;
@@ -303,6 +313,7 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
     IntegratePositions(island, subStep);
     FinishBodies(world, island);
     ReportContacts(world);
+    ReportHitEvents(world, subStep);
 }
 
 /// Clears the island flags, moves the broad-phase boxes of the island's dynamic bodies and

@@ -52,7 +52,8 @@ void BuildIsland(WorldState& world, std::int32_t seed, Island& island)
             Contact& contact = world.contacts[contactIndex];
             const Edge& edge = contact.edges[EdgeSide(key)];
             key = edge.next;
-            if ((contact.flags & Contact::Island) != 0 || !contact.IsTouching())
+            // Sensor contacts and contacts the pre-solve callback disabled are not solved.
+            if ((contact.flags & Contact::Island) != 0 || !contact.IsSolid())
             {
                 continue;
             }

@@ -7,6 +7,7 @@
 #include "meff/world.h"
 
 #include <cstring>
+#include <utility>
 
 namespace meff
 {
@@ -86,7 +87,9 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
     {
         throw InvalidArgument("World::RestoreSnapshot: the snapshot is empty");
     }
+    PreSolveCallback callback = std::move(m_state->preSolve); // configuration, not state
     *m_state = *snapshot.m_state;
+    m_state->preSolve = std::move(callback);
 }
 
 } // namespace meff

@@ -2,14 +2,20 @@
 // b2World::Solve, b2Island::Solve), so the same scene agrees between the two engines:
 //
 //   find new contacts → collide → for each island: integrate velocities, prepare, warm start,
-//   solve velocities, integrate positions, correct positions, finish bodies, report, sleep →
-//   synchronize shapes → find new contacts → continuous collision (if on) → clear forces
+//   solve velocities, integrate positions, correct positions, finish bodies, report contacts,
+//   report hits, sleep → synchronize shapes → find new contacts → continuous collision (if on) →
+//   clear forces
 //
 // Only awake bodies seed islands, so a sleeping island costs no solver work; the narrow phase
 // skips contacts whose bodies all sleep, and only bodies solved this step move in the broad
 // phase.
+//
+// Events: the narrow phase (collide, and continuous collision's contact updates) records
+// contact and sensor begin/end events and calls the pre-solve callback; the report stages
+// record contact points and hit events (events.cpp).
 #include "dynamics/step_stages.h"
 
+#include "dynamics/events.h"
 #include "dynamics/world_state.h"
 #include "meff/world.h"
 
@@ -73,9 +79,7 @@ StepContext BeginStep(WorldState& world, Real dt)
     step.dtRatio = world.invDt0 * dt;
     step.solver = world.solver;
     step.tolerances = world.tolerances;
-    world.contactReports.clear();
-    world.beginEvents.clear();
-    world.endEvents.clear();
+    ClearEvents(world);
     return step;
 }
 
@@ -112,6 +116,7 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step)
     const bool positionSolved = CorrectPositions(world, island, data);
     FinishBodies(world, island);
     ReportContacts(world);
+    ReportHitEvents(world, step);
     if (world.allowSleep)
     {
         UpdateSleep(world, island, step, positionSolved);

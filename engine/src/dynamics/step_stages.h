@@ -42,8 +42,9 @@ void FindNewContacts(WorldState& world);
 /// The narrow phase: re-filters flagged contacts, destroys contacts whose fat boxes no longer
 /// overlap, updates the manifolds of the rest and records begin/end events.
 void Collide(WorldState& world);
-/// Re-evaluates one contact's manifold at the bodies' current transforms: touching flag,
-/// begin/end events, and clears Contact::Disabled (Box2D's b2Contact::Update).
+/// Re-evaluates one contact's manifold (a sensor's overlap) at the bodies' current transforms:
+/// touching flag, begin/end events, clears Contact::Disabled, then the pre-solve callback may
+/// set it again (Box2D's b2Contact::Update).
 void UpdateContact(WorldState& world, std::int32_t contactIndex);
 void DestroyContact(WorldState& world, std::int32_t contactIndex);
 /// Wakes both bodies of every touching contact of `bodyIndex`; with `shapeIndex` set, only

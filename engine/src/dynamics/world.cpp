@@ -173,7 +173,6 @@ void ValidateShapeDef(const ShapeDef& def)
     Require(meff::IsValid(def.restitution) && def.restitution >= 0 && def.restitution <= 1,
             "ShapeDef::restitution: must be in [0, 1], got " + std::to_string(def.restitution));
     RequireNonNegative(def.restitutionThreshold, "ShapeDef::restitutionThreshold");
-    Require(!def.isSensor, "ShapeDef::isSensor: sensors are not supported yet");
 }
 
 } // namespace
@@ -190,6 +189,7 @@ Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
     t.maxLinearCorrection *= lengthUnitsPerMeter;
     t.maxTranslation *= lengthUnitsPerMeter;
     t.linearSleepTolerance *= lengthUnitsPerMeter;
+    t.hitEventThreshold *= lengthUnitsPerMeter; // a speed, in length units per second
     return t;
 }
 
@@ -200,7 +200,7 @@ World::World(const WorldDef& def)
     for (const Real value :
          {t.linearSlop, t.polygonSkin, t.aabbMargin, t.maxLinearCorrection, t.maxAngularCorrection,
           t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte, t.toiBaumgarte,
-          t.timeToSleep, t.linearSleepTolerance, t.angularSleepTolerance})
+          t.timeToSleep, t.linearSleepTolerance, t.angularSleepTolerance, t.hitEventThreshold})
     {
         RequireNonNegative(value, "WorldDef::tolerances");
     }
@@ -1071,6 +1071,11 @@ void World::SetAllowSleeping(bool allow)
     }
 }
 
+void World::SetPreSolveCallback(PreSolveCallback callback)
+{
+    m_state->preSolve = std::move(callback);
+}
+
 std::span<const ContactPointReport> World::GetContactReports() const
 {
     return m_state->contactReports;
@@ -1082,6 +1087,18 @@ std::span<const ContactEvent> World::GetContactBeginEvents() const
 std::span<const ContactEvent> World::GetContactEndEvents() const
 {
     return m_state->endEvents;
+}
+std::span<const SensorEvent> World::GetSensorBeginEvents() const
+{
+    return m_state->sensorBeginEvents;
+}
+std::span<const SensorEvent> World::GetSensorEndEvents() const
+{
+    return m_state->sensorEndEvents;
+}
+std::span<const ContactHitEvent> World::GetContactHitEvents() const
+{
+    return m_state->hitEvents;
 }
 int World::GetContactCount() const
 {

@@ -70,6 +70,10 @@ struct WorldState
     std::vector<ContactPointReport> contactReports;
     std::vector<ContactEvent> beginEvents;
     std::vector<ContactEvent> endEvents;
+    std::vector<SensorEvent> sensorBeginEvents;
+    std::vector<SensorEvent> sensorEndEvents;
+    std::vector<ContactHitEvent> hitEvents;
+    PreSolveCallback preSolve; ///< the user's, or empty; kept across RestoreSnapshot
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;

@@ -1,0 +1,152 @@
+// Sensor events, the pre-solve callback and contact hit events. None of them changes what the
+// solver computes: sensor contacts never reach it, hit events only read what it already knew,
+// and the pre-solve callback can only take a contact out, as Box2D 2.4.1's SetEnabled(false).
+#include "dynamics/events.h"
+
+#include "dynamics/world_state.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+ShapeId ShapeIdOf(const WorldState& world, std::int32_t shape)
+{
+    return {shape, world.shapes[shape].generation};
+}
+
+ContactEvent MakeContactEvent(const WorldState& world, const Contact& contact)
+{
+    return {ShapeIdOf(world, contact.shapeA), ShapeIdOf(world, contact.shapeB)};
+}
+
+/// The sensor is shape A when A is a sensor (also when both are), else shape B.
+SensorEvent MakeSensorEvent(const WorldState& world, const Contact& contact)
+{
+    const bool sensorIsA = world.shapes[contact.shapeA].def.isSensor;
+    const std::int32_t sensor = sensorIsA ? contact.shapeA : contact.shapeB;
+    const std::int32_t visitor = sensorIsA ? contact.shapeB : contact.shapeA;
+    return {ShapeIdOf(world, sensor), ShapeIdOf(world, visitor)};
+}
+
+} // namespace
+
+void ClearEvents(WorldState& world)
+{
+    world.contactReports.clear();
+    world.beginEvents.clear();
+    world.endEvents.clear();
+    world.sensorBeginEvents.clear();
+    world.sensorEndEvents.clear();
+    world.hitEvents.clear();
+}
+
+void RecordTouchBegan(WorldState& world, const Contact& contact)
+{
+    if (contact.IsSensor())
+    {
+        world.sensorBeginEvents.push_back(MakeSensorEvent(world, contact));
+    }
+    else
+    {
+        world.beginEvents.push_back(MakeContactEvent(world, contact));
+    }
+}
+
+void RecordTouchEnded(WorldState& world, const Contact& contact)
+{
+    if (contact.IsSensor())
+    {
+        world.sensorEndEvents.push_back(MakeSensorEvent(world, contact));
+    }
+    else
+    {
+        world.endEvents.push_back(MakeContactEvent(world, contact));
+    }
+}
+
+void RunPreSolve(WorldState& world, std::int32_t contactIndex)
+{
+    if (!world.preSolve)
+    {
+        return;
+    }
+    Contact& contact = world.contacts[contactIndex];
+    const Shape& shapeA = world.shapes[contact.shapeA];
+    const Shape& shapeB = world.shapes[contact.shapeB];
+    const Body& bodyA = world.bodies[contact.bodyA];
+    const Body& bodyB = world.bodies[contact.bodyB];
+
+    PreSolveContact info;
+    info.shapeA = ShapeIdOf(world, contact.shapeA);
+    info.shapeB = ShapeIdOf(world, contact.shapeB);
+    info.bodyA = {contact.bodyA, bodyA.generation};
+    info.bodyB = {contact.bodyB, bodyB.generation};
+    info.manifold = &contact.manifold;
+    info.worldManifold.Initialize(contact.manifold, bodyA.xf, shapeA.Radius(), bodyB.xf,
+                                  shapeB.Radius());
+    if (!world.preSolve(info))
+    {
+        contact.flags |= Contact::Disabled;
+    }
+}
+
+void ReportHitEvents(WorldState& world, const StepContext& step)
+{
+    const Real threshold = step.tolerances.hitEventThreshold;
+    // Marks the contacts that already have an event in this step (stepCount advances after it).
+    const std::uint64_t stamp = world.stepCount + 1;
+    for (const ContactVelocityConstraint& vc : world.contactSolver.VelocityConstraints())
+    {
+        Contact& contact = world.contacts[vc.contactIndex];
+        if ((contact.flags & Contact::HitEvents) == 0)
+        {
+            continue;
+        }
+        // The fastest approaching point; a point that took no impulse did not collide (it was
+        // already separating when the solver reached it), as Box2D v3 requires.
+        int fastest = -1;
+        Real fastestSpeed = threshold;
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            const ContactVelocityPoint& vp = vc.points[j];
+            const Real approachSpeed = -vp.normalVelocity;
+            if (approachSpeed > fastestSpeed && vp.normalImpulse > 0)
+            {
+                fastest = j;
+                fastestSpeed = approachSpeed;
+            }
+        }
+        if (fastest < 0)
+        {
+            continue;
+        }
+        const bool seen = contact.hitStep == stamp;
+        if (seen && world.hitEvents[contact.hitEvent].approachSpeed >= fastestSpeed)
+        {
+            continue; // an earlier sub-step of this step saw this contact hit harder
+        }
+
+        const Shape& shapeA = world.shapes[contact.shapeA];
+        const Shape& shapeB = world.shapes[contact.shapeB];
+        WorldManifold wm;
+        wm.Initialize(contact.manifold, world.bodies[contact.bodyA].xf, shapeA.Radius(),
+                      world.bodies[contact.bodyB].xf, shapeB.Radius());
+        const ContactHitEvent event{ShapeIdOf(world, contact.shapeA),
+                                    ShapeIdOf(world, contact.shapeB), wm.points[fastest], wm.normal,
+                                    fastestSpeed};
+        if (seen)
+        {
+            world.hitEvents[contact.hitEvent] = event;
+        }
+        else
+        {
+            contact.hitStep = stamp;
+            contact.hitEvent = static_cast<std::int32_t>(world.hitEvents.size());
+            world.hitEvents.push_back(event);
+        }
+    }
+}
+
+} // namespace meff::detail

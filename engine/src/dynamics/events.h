@@ -1,0 +1,30 @@
+// Game events of a step beyond the contact reports: which list a contact's begin/end goes to
+// (sensor or contact events), the pre-solve callback, and contact hit events.
+#pragma once
+
+#include "dynamics/solver_types.h"
+
+#include <cstdint>
+
+namespace meff::detail
+{
+
+struct WorldState;
+struct Contact;
+
+/// Empties every event list of the last step (World::Step's first stage).
+void ClearEvents(WorldState& world);
+/// A contact started touching: a sensor event when it is a sensor contact, else a contact event.
+void RecordTouchBegan(WorldState& world, const Contact& contact);
+/// A touching contact stopped touching or was destroyed.
+void RecordTouchEnded(WorldState& world, const Contact& contact);
+/// Box2D 2.4.1's PreSolve, called by UpdateContact for a touching, non-sensor contact: asks the
+/// user's callback, if any, and disables the contact for this step when it says no.
+void RunPreSolve(WorldState& world, std::int32_t contactIndex);
+/// Hit events of the contacts the solver has just solved (an island, or a time-of-impact
+/// sub-step): for each contact with Contact::HitEvents, its fastest point whose approach speed
+/// before impulses exceeds the threshold and which took an impulse. One event per contact per
+/// step: a later, faster hit of the same contact in the same step replaces the earlier one.
+void ReportHitEvents(WorldState& world, const StepContext& step);
+
+} // namespace meff::detail
