@@ -177,12 +177,17 @@ class World
     // Joints
     JointId CreateJoint(const RevoluteJointDef& def);
     JointId CreateJoint(const DistanceJointDef& def);
+    JointId CreateJoint(const WeldJointDef& def);
+    JointId CreateJoint(const MotorJointDef& def);
+    JointId CreateJoint(const MouseJointDef& def); ///< throws unless bodyB is dynamic
     void DestroyJoint(JointId id);
     bool IsValid(JointId id) const;
     JointType GetJointType(JointId id) const;
     BodyId GetBodyA(JointId id) const;
     BodyId GetBodyB(JointId id) const;
-    Vec2 GetAnchorA(JointId id) const; ///< world point (m)
+    /// World point (m); a motor joint's anchors are the bodies' origins, a mouse joint's
+    /// anchor A is its target.
+    Vec2 GetAnchorA(JointId id) const;
     Vec2 GetAnchorB(JointId id) const; ///< world point (m)
     /// Reaction on body B over the last step: the joint's accumulated impulse times invDt.
     JointReaction GetReaction(JointId id, Real invDt) const;
@@ -192,6 +197,16 @@ class World
     RevoluteJointDef MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
     DistanceJointDef MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAnchorA,
                                           Vec2 worldAnchorB) const;
+    /// Welds at worldAnchor, holding the bodies' present relative angle.
+    WeldJointDef MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
+    /// Holds the bodies' present relative pose: B's origin in A's frame and angleB − angleA.
+    MotorJointDef MakeMotorJointDef(BodyId a, BodyId b) const;
+    /// Moves a mouse joint's target (the pointer moved). Throws unless id is a mouse joint.
+    void SetMouseTarget(JointId id, Vec2 target);
+    Vec2 GetMouseTarget(JointId id) const;
+    /// Changes a motor joint's target pose of B relative to A (m in A's frame, rad). Throws
+    /// unless id is a motor joint.
+    void SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffset);
 
     // Stepping
     /// Advances the world by dt seconds (> 0 and finite). Throws SimulationError if a body's

@@ -708,6 +708,70 @@ JointId World::CreateJoint(const DistanceJointDef& def)
                                         m_state->tolerances));
 }
 
+namespace
+{
+
+/// Rotational inertia about the body's origin, as Box2D's b2Body::GetInertia (which
+/// b2AngularStiffness reads): I_centre + m·|localCenter|².
+Real InertiaAboutOrigin(const Body& body)
+{
+    return body.I + body.mass * Dot(body.sweep.localCenter, body.sweep.localCenter);
+}
+
+} // namespace
+
+JointId World::CreateJoint(const WeldJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    const Body& a = m_state->bodies[def.bodyA.index];
+    const Body& b = m_state->bodies[def.bodyB.index];
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index,
+                                        InertiaAboutOrigin(a), InertiaAboutOrigin(b)));
+}
+
+JointId World::CreateJoint(const MotorJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
+}
+
+JointId World::CreateJoint(const MouseJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    const Body& a = m_state->bodies[def.bodyA.index];
+    const Body& b = m_state->bodies[def.bodyB.index];
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass, b.xf,
+                                        b.type == BodyType::Dynamic));
+}
+
+void World::SetMouseTarget(JointId id, Vec2 target)
+{
+    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    auto* mouse = std::get_if<MouseJoint>(&joint.data);
+    Require(mouse != nullptr, "World::SetMouseTarget: the joint is not a mouse joint");
+    RequireFinite(target, "World::SetMouseTarget: target");
+    mouse->target = target;
+}
+
+Vec2 World::GetMouseTarget(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    const auto* mouse = std::get_if<MouseJoint>(&joint.data);
+    Require(mouse != nullptr, "World::GetMouseTarget: the joint is not a mouse joint");
+    return mouse->target;
+}
+
+void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffset)
+{
+    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    auto* motor = std::get_if<MotorJoint>(&joint.data);
+    Require(motor != nullptr, "World::SetMotorJointOffsets: the joint is not a motor joint");
+    RequireFinite(linearOffset, "World::SetMotorJointOffsets: linearOffset");
+    RequireFinite(angularOffset, "World::SetMotorJointOffsets: angularOffset");
+    motor->linearOffset = linearOffset;
+    motor->angularOffset = angularOffset;
+}
+
 void World::DestroyJoint(JointId id)
 {
     WorldState& world = *m_state;
@@ -757,30 +821,15 @@ BodyId World::GetBodyB(JointId id) const
     return {joint.bodyB, m_state->bodies[joint.bodyB].generation};
 }
 
-namespace
-{
-
-Vec2 LocalAnchor(const Joint& joint, int side)
-{
-    if (const auto* r = std::get_if<RevoluteJoint>(&joint.data))
-    {
-        return side == 0 ? r->localAnchorA : r->localAnchorB;
-    }
-    const auto& d = std::get<DistanceJoint>(joint.data);
-    return side == 0 ? d.localAnchorA : d.localAnchorB;
-}
-
-} // namespace
-
 Vec2 World::GetAnchorA(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return Mul(m_state->bodies[joint.bodyA].xf, LocalAnchor(joint, 0));
+    return JointAnchorA(joint, m_state->bodies[joint.bodyA].xf);
 }
 Vec2 World::GetAnchorB(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return Mul(m_state->bodies[joint.bodyB].xf, LocalAnchor(joint, 1));
+    return JointAnchorB(joint, m_state->bodies[joint.bodyB].xf);
 }
 JointReaction World::GetReaction(JointId id, Real invDt) const
 {
@@ -817,6 +866,28 @@ DistanceJointDef World::MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAncho
     def.length = Max(d.Length(), m_state->tolerances.linearSlop);
     def.minLength = def.length;
     def.maxLength = def.length;
+    return def;
+}
+
+WeldJointDef World::MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
+{
+    RequireFinite(worldAnchor, "MakeWeldJointDef: anchor");
+    WeldJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = GetLocalPoint(a, worldAnchor);
+    def.localAnchorB = GetLocalPoint(b, worldAnchor);
+    def.referenceAngle = GetAngle(b) - GetAngle(a);
+    return def;
+}
+
+MotorJointDef World::MakeMotorJointDef(BodyId a, BodyId b) const
+{
+    MotorJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.linearOffset = GetLocalPoint(a, GetPosition(b));
+    def.angularOffset = GetAngle(b) - GetAngle(a);
     return def;
 }
 
