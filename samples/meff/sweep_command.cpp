@@ -303,15 +303,23 @@ struct Trace
     double initialEnergy = 0;  ///< J, E(0), potential energy from y = 0 of the world
 };
 
-/// How far a joint is from satisfied: a revolute joint's anchors should coincide; a distance
-/// joint's should be between its minimum and maximum length apart.
+/// How far a joint is from satisfied: a revolute or weld joint's anchors should coincide; a
+/// distance joint's should be between its minimum and maximum length apart. Motor and mouse
+/// joints are force-limited springs with no hard constraint, so they have no error to drift.
 double JointError(const SceneJoint& joint, double anchorDistance)
 {
-    if (joint.type == JointType::Revolute)
+    switch (joint.type)
     {
+    case JointType::Revolute:
+    case JointType::Weld:
         return anchorDistance;
+    case JointType::Distance:
+        return std::max({0.0, anchorDistance - joint.maxLength, joint.minLength - anchorDistance});
+    case JointType::Motor:
+    case JointType::Mouse:
+        return 0.0;
     }
-    return std::max({0.0, anchorDistance - joint.maxLength, joint.minLength - anchorDistance});
+    return 0.0;
 }
 
 /// Kinetic plus gravitational potential energy of the dynamic bodies (the potential measured

@@ -79,8 +79,9 @@ std::vector<std::string> MirrorNotes(const Scene& scene, const RunOptions& optio
     std::vector<std::string> notes;
     if (!scene.world.blockJoints)
     {
-        notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a revolute "
-                           "point constraint as a 2x2 block, so revolute joints cannot agree");
+        notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a joint's "
+                           "point (and weld angle) constraints as one block, so revolute, weld, "
+                           "motor and mouse joints cannot agree");
     }
     if (scene.world.allowSleep)
     {

@@ -119,7 +119,7 @@ struct SceneJoint
     std::size_t bodyIndexA = 0; ///< index into Scene::bodies
     std::size_t bodyIndexB = 0; ///< index into Scene::bodies
     bool collideConnected = false;
-    // revolute
+    // revolute, weld; mouse: the grabbed point on body B
     SceneVec2 anchor; ///< world point (m)
     bool enableLimit = false;
     double lowerAngle = 0; ///< rad, ≤ upperAngle
@@ -133,8 +133,17 @@ struct SceneJoint
     double length = 0;       ///< m, > 0; the file's value or the distance between the anchors
     double minLength = 0;    ///< m; the file's value or `length`
     double maxLength = 0;    ///< m; the file's value or `length`
-    double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring
-    double dampingRatio = 0; ///< ≥ 0
+    double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring (distance, weld, mouse)
+    double dampingRatio = 0; ///< ≥ 0 (distance, weld, mouse)
+    // motor
+    std::optional<SceneVec2> linearOffset; ///< B's origin in A's frame (m); unset: as created
+    std::optional<double> angularOffset;   ///< angleB − angleA (rad); unset: as created
+    double maxTorque = 1;                  ///< N·m, ≥ 0
+    double correctionFactor = 0.3;         ///< in [0, 1]
+    // motor, mouse
+    double maxForce = 1; ///< N, ≥ 0
+    // mouse
+    SceneVec2 target; ///< world point body B's anchor is dragged towards (m)
 };
 
 /// "validate.tolerances": how far meff may drift from Box2D before validation fails.
