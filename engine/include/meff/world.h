@@ -49,7 +49,9 @@ struct SolverSettings
     /// Solve a two-point manifold's normal rows together as a 2×2 block (Box2D's block
     /// solver). Off: every row alone with its scalar effective mass.
     bool blockSolver = true;
-    /// Solve a revolute joint's point constraint as a 2×2 block (Box2D). Off: two scalar rows.
+    /// Solve a joint's coupled rows as one block (Box2D): the revolute and mouse point (2×2),
+    /// the weld's point and angle (3×3; 2×2 point when soft), the motor's linear part (2×2).
+    /// Off: each row alone with its scalar effective mass.
     bool blockJoints = true;
     /// Where restitution's approach speed vn is measured (the bounce targets −e·vn).
     /// Off (Box2D 2.4.1): after this step's gravity was added, so every bounce returns g·dt

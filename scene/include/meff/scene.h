@@ -43,7 +43,8 @@ struct SceneWorldSettings
     int positionIterations = 3; ///< 0..1000
     bool warmStarting = true;
     bool blockSolver = true; ///< 2×2 block solve of two-point manifolds
-    bool blockJoints = true; ///< meff only: 2×2 block solve of revolute point constraints
+    bool blockJoints =
+        true; ///< meff only: block solve of joint rows (revolute, weld, motor, mouse)
     bool restitutionFromStepStart = false; ///< meff only: see SolverSettings
     bool allowSleep = false;               ///< reserved (sleeping is not modelled yet)
     bool continuous = false;               ///< Box2D's continuous physics (time of impact)
