@@ -4,6 +4,7 @@
 // float with the same operation order, so they must agree bit for bit, step after step.
 //
 // Needs -lbox2d (and /usr/include/box2d).
+#include "box2d_joint_island.h"
 #include "joints/joint.h"
 
 #include <box2d/box2d.h>
@@ -15,168 +16,13 @@
 
 using namespace meff;
 using namespace meff::detail;
+using namespace meff::test;
 
 // Box2D computes in float: a double build has nothing to compare bit for bit.
 #ifndef MEFF_DOUBLE
 
 namespace
 {
-
-Vec2 ToMeff(const b2Vec2& v)
-{
-    return {v.x, v.y};
-}
-
-/// Box2D's tuning constants, straight from its macros.
-Tolerances Box2DTolerances()
-{
-    Tolerances tol;
-    tol.linearSlop = b2_linearSlop;
-    tol.angularSlop = b2_angularSlop;
-    tol.maxLinearCorrection = b2_maxLinearCorrection;
-    tol.maxAngularCorrection = b2_maxAngularCorrection;
-    tol.maxTranslation = b2_maxTranslation;
-    tol.maxRotation = b2_maxRotation;
-    tol.baumgarte = b2_baumgarte;
-    return tol;
-}
-
-/// One Box2D island mirrored: its bodies in island order and its joints in island order.
-struct Island
-{
-    std::vector<b2Body*> b2Bodies;
-    std::vector<JointBody> bodies;
-    std::vector<Real> mass, linearDamping, angularDamping;
-    std::vector<Position> positions;
-    std::vector<Velocity> velocities;
-    std::vector<Joint> joints;
-    std::vector<b2Joint*> b2Joints;
-
-    /// Adds a body with the data Box2D derives from SetMassData (invI from the inertia about
-    /// the centre of mass, m_I = I − m·|c|², in Box2D's float operations).
-    std::int32_t Add(b2Body* body, const b2MassData* md)
-    {
-        JointBody jb;
-        jb.solverIndex = static_cast<std::int32_t>(bodies.size());
-        jb.localCenter = ToMeff(body->GetLocalCenter());
-        Real m = 0;
-        if (md != nullptr)
-        {
-            m = md->mass;
-            jb.invMass = 1.0f / md->mass;
-            const float centerI = md->I - md->mass * b2Dot(md->center, md->center);
-            jb.invI = 1.0f / centerI;
-        }
-        b2Bodies.push_back(body);
-        bodies.push_back(jb);
-        mass.push_back(m);
-        linearDamping.push_back(body->GetLinearDamping());
-        angularDamping.push_back(body->GetAngularDamping());
-        Position p;
-        p.c = ToMeff(body->GetWorldCenter());
-        p.a = body->GetAngle();
-        positions.push_back(p);
-        Velocity v;
-        v.v = ToMeff(body->GetLinearVelocity());
-        v.w = body->GetAngularVelocity();
-        velocities.push_back(v);
-        return jb.solverIndex;
-    }
-};
-
-/// b2Island::Solve for an island without contacts, in its exact order of operations.
-void SolveIsland(Island& island, const StepContext& step, Vec2 gravity)
-{
-    const Real h = step.dt;
-    for (std::size_t i = 0; i < island.bodies.size(); ++i)
-    {
-        if (island.bodies[i].invMass == 0)
-        {
-            continue; // static: Box2D leaves its (zero) velocity alone
-        }
-        Vec2 v = island.velocities[i].v;
-        Real w = island.velocities[i].w;
-        const Vec2 force(0, 0);
-        v += h * island.bodies[i].invMass * (Real(1) * island.mass[i] * gravity + force);
-        w += h * island.bodies[i].invI * Real(0);
-        v *= Real(1) / (Real(1) + h * island.linearDamping[i]);
-        w *= Real(1) / (Real(1) + h * island.angularDamping[i]);
-        island.velocities[i].v = v;
-        island.velocities[i].w = w;
-    }
-
-    SolverData data;
-    data.step = step;
-    data.positions = island.positions.data();
-    data.velocities = island.velocities.data();
-    for (Joint& j : island.joints)
-    {
-        InitJointVelocityConstraints(j, island.bodies[j.bodyA], island.bodies[j.bodyB], data);
-    }
-    for (int i = 0; i < step.solver.velocityIterations; ++i)
-    {
-        for (Joint& j : island.joints)
-        {
-            SolveJointVelocityConstraints(j, data);
-        }
-    }
-
-    const Tolerances& tol = step.tolerances;
-    for (std::size_t i = 0; i < island.bodies.size(); ++i)
-    {
-        Vec2 c = island.positions[i].c;
-        Real a = island.positions[i].a;
-        Vec2 v = island.velocities[i].v;
-        Real w = island.velocities[i].w;
-        const Vec2 translation = h * v;
-        if (Dot(translation, translation) > tol.maxTranslation * tol.maxTranslation)
-        {
-            const Real ratio = tol.maxTranslation / translation.Length();
-            v *= ratio;
-        }
-        const Real rotation = h * w;
-        if (rotation * rotation > tol.maxRotation * tol.maxRotation)
-        {
-            const Real ratio = tol.maxRotation / std::abs(rotation);
-            w *= ratio;
-        }
-        c += h * v;
-        a += h * w;
-        island.positions[i].c = c;
-        island.positions[i].a = a;
-        island.velocities[i].v = v;
-        island.velocities[i].w = w;
-    }
-
-    for (int i = 0; i < step.solver.positionIterations; ++i)
-    {
-        const bool contactsOkay = true; // no contacts: Box2D's min separation stays 0
-        bool jointsOkay = true;
-        for (Joint& j : island.joints)
-        {
-            const bool jointOkay = SolveJointPositionConstraints(j, data);
-            jointsOkay = jointsOkay && jointOkay;
-        }
-        if (contactsOkay && jointsOkay)
-        {
-            break;
-        }
-    }
-}
-
-b2Body* MakeDynamic(b2World& world, b2Vec2 position, float angle, b2MassData& md,
-                    float linearDamping = 0, float angularDamping = 0)
-{
-    b2BodyDef bd;
-    bd.type = b2_dynamicBody;
-    bd.position = position;
-    bd.angle = angle;
-    bd.linearDamping = linearDamping;
-    bd.angularDamping = angularDamping;
-    b2Body* body = world.CreateBody(&bd);
-    body->SetMassData(&md);
-    return body;
-}
 
 RevoluteJointDef FromBox2D(const b2RevoluteJoint& j)
 {
@@ -192,18 +38,6 @@ RevoluteJointDef FromBox2D(const b2RevoluteJoint& j)
     def.maxMotorTorque = j.GetMaxMotorTorque();
     return def;
 }
-
-/// Largest absolute difference seen.
-struct Diff
-{
-    double max = 0;
-    void Add(double a, double b) { max = std::max(max, std::abs(a - b)); }
-    void Add(Vec2 a, b2Vec2 b)
-    {
-        Add(a.x, b.x);
-        Add(a.y, b.y);
-    }
-};
 
 } // namespace
 
