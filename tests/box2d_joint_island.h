@@ -6,6 +6,8 @@
 // Needs -lbox2d (and /usr/include/box2d).
 #pragma once
 
+#ifndef MEFF_DOUBLE
+
 #include "joints/joint.h"
 
 #include <box2d/box2d.h>
@@ -188,3 +190,5 @@ struct Diff
 };
 
 } // namespace meff::test
+
+#endif // MEFF_DOUBLE

@@ -10,6 +10,7 @@
 
 using namespace meff;
 using namespace meff::detail;
+using namespace meff::test;
 
 // Box2D computes in float: a double build has nothing to compare bit for bit.
 #ifndef MEFF_DOUBLE

@@ -306,7 +306,7 @@ TEST_CASE("Scene errors: joint values out of range", "[scene][errors]")
                    "x.json: joints[3].body_b: must be dynamic when body_a is not (a joint "
                    "between two bodies that cannot move does nothing), got \"c\"",
                    "x.json: joints[4].type: must be one of \"revolute\", \"distance\", "
-                   "\"prismatic\", \"wheel\", got \"gear\""});
+                   "\"prismatic\", \"wheel\", \"weld\", \"motor\", \"mouse\", got \"gear\""});
 }
 
 TEST_CASE("Scene errors: prismatic and wheel joint fields", "[scene][errors][prismatic][wheel]")
@@ -422,4 +422,81 @@ TEST_CASE("Per-body allow_sleep and awake reach the world", "[scene][sleeping]")
     CHECK(built.world.IsSleepingAllowed(built.bodies[0]));
     CHECK(built.world.IsAwake(built.bodies[1]));
     CHECK_FALSE(built.world.IsSleepingAllowed(built.bodies[1]));
+}
+
+TEST_CASE("Scene errors: weld, motor and mouse joint fields", "[scene][errors][joints]")
+{
+    CHECK(ErrorsOf(R"({ "meff_scene": 1,
+        "bodies": [ { "name": "ground", "type": "static" },
+                    { "name": "box", "type": "dynamic",
+                      "shapes": [ { "type": "circle", "radius": 1 } ] } ],
+        "joints": [ { "type": "weld", "name": "w", "body_a": "ground", "body_b": "box",
+                      "stiffness_hz": -1, "max_force": 3 },
+                    { "type": "motor", "name": "m", "body_a": "ground", "body_b": "box",
+                      "correction_factor": 1.5, "max_torque": -2, "linear_offset": [1] },
+                    { "type": "mouse", "name": "u", "body_a": "box", "body_b": "ground",
+                      "anchor": [0, 0] },
+                    { "type": "spring", "name": "s", "body_a": "ground", "body_b": "box" } ] })") ==
+          Messages{
+              "x.json: joints[0].anchor: required field is missing",
+              "x.json: joints[0].stiffness_hz: must be >= 0, got -1",
+              "x.json: joints[0].max_force: unknown field (known fields here: type, name, body_a, "
+              "body_b, collide_connected, anchor, stiffness_hz, damping_ratio)",
+              "x.json: joints[1].linear_offset: must be [x, y] with two finite numbers, got [1]",
+              "x.json: joints[1].max_torque: must be >= 0, got -2",
+              "x.json: joints[1].correction_factor: must be in [0, 1], got 1.5",
+              "x.json: joints[2].body_b: must be dynamic for a mouse joint (it drags body B), got "
+              "\"ground\"",
+              "x.json: joints[2].max_force: required field is missing",
+              "x.json: joints[3].type: must be one of \"revolute\", \"distance\", \"prismatic\", "
+              "\"wheel\", \"weld\", \"motor\", \"mouse\", got \"spring\""});
+}
+
+TEST_CASE("Scene files: weld, motor and mouse joints load their fields", "[scene][joints]")
+{
+    const Scene scene = ParseScene(R"({ "meff_scene": 1,
+        "bodies": [ { "name": "ground", "type": "static" },
+                    { "name": "box", "type": "dynamic",
+                      "shapes": [ { "type": "circle", "radius": 1 } ] } ],
+        "joints": [ { "type": "weld", "name": "w", "body_a": "ground", "body_b": "box",
+                      "anchor": [1, 2], "stiffness_hz": 3, "damping_ratio": 0.5 },
+                    { "type": "motor", "name": "m", "body_a": "ground", "body_b": "box" },
+                    { "type": "motor", "name": "m2", "body_a": "ground", "body_b": "box",
+                      "linear_offset": [1, 2], "angular_offset": 0.5, "max_force": 7,
+                      "max_torque": 8, "correction_factor": 1 },
+                    { "type": "mouse", "name": "u", "body_a": "ground", "body_b": "box",
+                      "anchor": [0.5, 0], "max_force": 100 } ] })",
+                                   "x.json");
+    REQUIRE(scene.joints.size() == 4);
+    const SceneJoint& weld = scene.joints[0];
+    CHECK(weld.type == JointType::Weld);
+    CHECK(weld.anchor.x == 1);
+    CHECK(weld.stiffnessHz == 3);
+    CHECK(weld.dampingRatio == 0.5);
+    const SceneJoint& motor = scene.joints[1];
+    CHECK(motor.type == JointType::Motor);
+    CHECK_FALSE(motor.linearOffset.has_value()); // taken from the bodies at creation
+    CHECK_FALSE(motor.angularOffset.has_value());
+    CHECK(motor.maxForce == 1); // b2MotorJointDef's defaults
+    CHECK(motor.maxTorque == 1);
+    CHECK(motor.correctionFactor == 0.3);
+    const SceneJoint& motor2 = scene.joints[2];
+    REQUIRE(motor2.linearOffset.has_value());
+    CHECK(motor2.linearOffset->y == 2);
+    CHECK(motor2.angularOffset == 0.5);
+    CHECK(motor2.maxForce == 7);
+    CHECK(motor2.maxTorque == 8);
+    CHECK(motor2.correctionFactor == 1);
+    const SceneJoint& mouse = scene.joints[3];
+    CHECK(mouse.type == JointType::Mouse);
+    CHECK(mouse.target.x == 0.5); // defaults to the grabbed point
+    CHECK(mouse.maxForce == 100);
+    CHECK(mouse.stiffnessHz == Approx(5)); // MouseJointDef's defaults
+    CHECK(mouse.dampingRatio == Approx(0.7));
+
+    // And the world gets them: the motor holds the pose the bodies had, the mouse its target.
+    const BuiltScene built = BuildWorld(scene);
+    CHECK(built.world.GetJointType(built.joints[0]) == JointType::Weld);
+    CHECK(built.world.GetAnchorA(built.joints[0]) == Vec2(1, 2));
+    CHECK(built.world.GetAnchorA(built.joints[3]) == Vec2(Real(0.5), 0));
 }

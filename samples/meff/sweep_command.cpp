@@ -303,23 +303,27 @@ struct Trace
     double initialEnergy = 0;  ///< J, E(0), potential energy from y = 0 of the world
 };
 
-/// How far a joint is from satisfied: a revolute joint's anchors should coincide; a distance
-/// joint's should be between its minimum and maximum length apart. Prismatic and wheel joints
-/// let their anchors part along the axis, so the anchor distance says nothing about them: they
-/// are not measured (0).
+/// How far a joint is from satisfied: a revolute or weld joint's anchors should coincide; a
+/// distance joint's should be between its minimum and maximum length apart. Prismatic and wheel
+/// joints let their anchors part along the axis, so the anchor distance says nothing about them;
+/// motor and mouse joints are force-limited springs with no hard constraint. Those are not
+/// measured (0).
 double JointError(const SceneJoint& joint, double anchorDistance)
 {
     switch (joint.type)
     {
     case JointType::Revolute:
+    case JointType::Weld:
         return anchorDistance;
     case JointType::Distance:
         return std::max({0.0, anchorDistance - joint.maxLength, joint.minLength - anchorDistance});
     case JointType::Prismatic:
     case JointType::Wheel:
-        return 0;
+    case JointType::Motor:
+    case JointType::Mouse:
+        return 0.0;
     }
-    return 0;
+    return 0.0;
 }
 
 /// Kinetic plus gravitational potential energy of the dynamic bodies (the potential measured

@@ -109,11 +109,14 @@ ShapeId CreateShape(World& world, BodyId body, const SceneShape& shape)
 
 JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
 {
+    World& world = built.world;
     const BodyId bodyA = built.bodies.at(joint.bodyIndexA);
     const BodyId bodyB = built.bodies.at(joint.bodyIndexB);
-    if (joint.type == JointType::Revolute)
+    switch (joint.type)
     {
-        RevoluteJointDef def = built.world.MakeRevoluteJointDef(bodyA, bodyB, ToVec2(joint.anchor));
+    case JointType::Revolute:
+    {
+        RevoluteJointDef def = world.MakeRevoluteJointDef(bodyA, bodyB, ToVec2(joint.anchor));
         def.enableLimit = joint.enableLimit;
         def.lowerAngle = Real(joint.lowerAngle);
         def.upperAngle = Real(joint.upperAngle);
@@ -121,12 +124,12 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         def.motorSpeed = Real(joint.motorSpeed);
         def.maxMotorTorque = Real(joint.maxMotorTorque);
         def.collideConnected = joint.collideConnected;
-        return built.world.CreateJoint(def);
+        return world.CreateJoint(def);
     }
-    if (joint.type == JointType::Prismatic)
+    case JointType::Prismatic:
     {
-        PrismaticJointDef def = built.world.MakePrismaticJointDef(
-            bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
+        PrismaticJointDef def =
+            world.MakePrismaticJointDef(bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
         def.enableLimit = joint.enableLimit;
         def.lowerTranslation = Real(joint.lowerTranslation);
         def.upperTranslation = Real(joint.upperTranslation);
@@ -134,12 +137,12 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         def.motorSpeed = Real(joint.motorSpeed);
         def.maxMotorForce = Real(joint.maxMotorForce);
         def.collideConnected = joint.collideConnected;
-        return built.world.CreateJoint(def);
+        return world.CreateJoint(def);
     }
-    if (joint.type == JointType::Wheel)
+    case JointType::Wheel:
     {
         WheelJointDef def =
-            built.world.MakeWheelJointDef(bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
+            world.MakeWheelJointDef(bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
         def.enableLimit = joint.enableLimit;
         def.lowerTranslation = Real(joint.lowerTranslation);
         def.upperTranslation = Real(joint.upperTranslation);
@@ -149,17 +152,63 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         def.hertz = Real(joint.stiffnessHz);
         def.dampingRatio = Real(joint.dampingRatio);
         def.collideConnected = joint.collideConnected;
-        return built.world.CreateJoint(def);
+        return world.CreateJoint(def);
     }
-    DistanceJointDef def = built.world.MakeDistanceJointDef(bodyA, bodyB, ToVec2(joint.anchorA),
-                                                            ToVec2(joint.anchorB));
-    def.length = Real(joint.length);
-    def.minLength = Real(joint.minLength);
-    def.maxLength = Real(joint.maxLength);
-    def.hertz = Real(joint.stiffnessHz);
-    def.dampingRatio = Real(joint.dampingRatio);
-    def.collideConnected = joint.collideConnected;
-    return built.world.CreateJoint(def);
+    case JointType::Distance:
+    {
+        DistanceJointDef def =
+            world.MakeDistanceJointDef(bodyA, bodyB, ToVec2(joint.anchorA), ToVec2(joint.anchorB));
+        def.length = Real(joint.length);
+        def.minLength = Real(joint.minLength);
+        def.maxLength = Real(joint.maxLength);
+        def.hertz = Real(joint.stiffnessHz);
+        def.dampingRatio = Real(joint.dampingRatio);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(def);
+    }
+    case JointType::Weld:
+    {
+        WeldJointDef def = world.MakeWeldJointDef(bodyA, bodyB, ToVec2(joint.anchor));
+        def.hertz = Real(joint.stiffnessHz);
+        def.dampingRatio = Real(joint.dampingRatio);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(def);
+    }
+    case JointType::Motor:
+    {
+        MotorJointDef def = world.MakeMotorJointDef(bodyA, bodyB);
+        if (joint.linearOffset)
+        {
+            def.linearOffset = ToVec2(*joint.linearOffset);
+        }
+        if (joint.angularOffset)
+        {
+            def.angularOffset = Real(*joint.angularOffset);
+        }
+        def.maxForce = Real(joint.maxForce);
+        def.maxTorque = Real(joint.maxTorque);
+        def.correctionFactor = Real(joint.correctionFactor);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(def);
+    }
+    case JointType::Mouse:
+    {
+        // The anchor grabs body B; then the pointer moves to the target (Box2D's testbed
+        // creates the joint at the grab point and calls SetTarget as the mouse moves).
+        MouseJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.target = ToVec2(joint.anchor);
+        def.maxForce = Real(joint.maxForce);
+        def.hertz = Real(joint.stiffnessHz);
+        def.dampingRatio = Real(joint.dampingRatio);
+        def.collideConnected = joint.collideConnected;
+        const JointId id = world.CreateJoint(def);
+        world.SetMouseTarget(id, ToVec2(joint.target));
+        return id;
+    }
+    }
+    throw InvalidArgument("unknown joint type");
 }
 
 } // namespace

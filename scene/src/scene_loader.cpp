@@ -450,6 +450,49 @@ void ReadWheelFields(ObjectReader& reader, SceneJoint& joint)
     Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", 0.0));
 }
 
+void ReadWeldFields(ObjectReader& reader, SceneJoint& joint)
+{
+    Assign(joint.anchor, reader.Vector("anchor", std::nullopt));
+    Assign(joint.stiffnessHz, ReadNonNegative(reader, "stiffness_hz", 0.0));
+    Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", 0.0));
+}
+
+void ReadMotorFields(ObjectReader& reader, SceneJoint& joint)
+{
+    const SceneJoint defaults;
+    if (reader.Find("linear_offset") != nullptr)
+    {
+        joint.linearOffset = reader.Vector("linear_offset", std::nullopt);
+    }
+    if (reader.Find("angular_offset") != nullptr)
+    {
+        joint.angularOffset = reader.Number("angular_offset", std::nullopt);
+    }
+    Assign(joint.maxForce, ReadNonNegative(reader, "max_force", defaults.maxForce));
+    Assign(joint.maxTorque, ReadNonNegative(reader, "max_torque", defaults.maxTorque));
+    std::optional<double> factor =
+        ReadNonNegative(reader, "correction_factor", defaults.correctionFactor);
+    if (factor && *factor > 1)
+    {
+        reader.Fail("correction_factor", "must be in [0, 1]");
+        factor.reset();
+    }
+    Assign(joint.correctionFactor, factor);
+}
+
+void ReadMouseFields(ObjectReader& reader, SceneJoint& joint)
+{
+    const std::optional<SceneVec2> anchor = reader.Vector("anchor", std::nullopt);
+    Assign(joint.anchor, anchor);
+    Assign(joint.target, reader.Vector("target", anchor));
+    Assign(joint.maxForce, ReadNonNegative(reader, "max_force", std::nullopt));
+    // MouseJointDef's defaults (Box2D testbed's values).
+    const MouseJointDef defaults;
+    Assign(joint.stiffnessHz, ReadNonNegative(reader, "stiffness_hz", double(defaults.hertz)));
+    Assign(joint.dampingRatio,
+           ReadNonNegative(reader, "damping_ratio", double(defaults.dampingRatio)));
+}
+
 /// Looks up body_a or body_b; returns the body index when the name is defined.
 std::optional<std::size_t> ReadBodyReference(ObjectReader& reader, std::string_view key,
                                              const std::map<std::string, std::size_t>& bodies,
@@ -473,9 +516,12 @@ std::optional<std::size_t> ReadBodyReference(ObjectReader& reader, std::string_v
 void ReadJoint(ObjectReader& reader, const Scene& scene,
                const std::map<std::string, std::size_t>& bodyIndexByName, SceneJoint& joint)
 {
-    // In JointType's order, so that the choice's index is the type.
-    const std::optional<std::size_t> type =
-        ReadChoice(reader, "type", {"revolute", "distance", "prismatic", "wheel"});
+    // In JointType's order.
+    const std::optional<std::size_t> type = ReadChoice(
+        reader, "type", {"revolute", "distance", "prismatic", "wheel", "weld", "motor", "mouse"});
+    constexpr JointType kTypes[] = {JointType::Revolute, JointType::Distance, JointType::Prismatic,
+                                    JointType::Wheel,    JointType::Weld,     JointType::Motor,
+                                    JointType::Mouse};
     Assign(joint.name, ReadName(reader));
     const std::optional<std::size_t> bodyA =
         ReadBodyReference(reader, "body_a", bodyIndexByName, joint.bodyA);
@@ -495,13 +541,18 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
             reader.Fail("body_b", "must be dynamic when body_a is not (a joint between two "
                                   "bodies that cannot move does nothing)");
         }
+        else if (type && kTypes[*type] == JointType::Mouse &&
+                 scene.bodies[*bodyB].type != BodyType::Dynamic)
+        {
+            reader.Fail("body_b", "must be dynamic for a mouse joint (it drags body B)");
+        }
     }
     Assign(joint.collideConnected, reader.Boolean("collide_connected", false));
     if (!type)
     {
         return;
     }
-    joint.type = JointType(*type);
+    joint.type = kTypes[*type];
     switch (joint.type)
     {
     case JointType::Revolute:
@@ -515,6 +566,15 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
         break;
     case JointType::Wheel:
         ReadWheelFields(reader, joint);
+        break;
+    case JointType::Weld:
+        ReadWeldFields(reader, joint);
+        break;
+    case JointType::Motor:
+        ReadMotorFields(reader, joint);
+        break;
+    case JointType::Mouse:
+        ReadMouseFields(reader, joint);
         break;
     }
     reader.Finish();
@@ -592,6 +652,12 @@ std::optional<std::size_t> ReadAnalyticJoint(ObjectReader& reader, const std::st
     {
         // The joint failed its own checks (body_a missing or naming no body), which are
         // reported already; its index is not a body's (found by the scene fuzzer).
+        return std::nullopt;
+    }
+    if (joint.type != JointType::Revolute && joint.type != JointType::Distance)
+    {
+        reader.Diag().Report(reader.PathOf(key),
+                             "must name a revolute or distance joint (a pendulum's rod)", value);
         return std::nullopt;
     }
     if (scene.bodies[joint.bodyIndexA].type != BodyType::Static)

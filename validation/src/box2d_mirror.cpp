@@ -116,7 +116,9 @@ b2Fixture* CreateFixture(b2Body* body, const SceneShape& shape)
 
 b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2Body* bodyB)
 {
-    if (joint.type == JointType::Revolute)
+    switch (joint.type)
+    {
+    case JointType::Revolute:
     {
         b2RevoluteJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchor));
@@ -129,7 +131,7 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(&def);
     }
-    if (joint.type == JointType::Prismatic)
+    case JointType::Prismatic:
     {
         b2PrismaticJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchor), ToB2(joint.axis));
@@ -142,7 +144,7 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(&def);
     }
-    if (joint.type == JointType::Wheel)
+    case JointType::Wheel:
     {
         b2WheelJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchor), ToB2(joint.axis));
@@ -166,20 +168,72 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(&def);
     }
-    b2DistanceJointDef def;
-    def.Initialize(bodyA, bodyB, ToB2(joint.anchorA), ToB2(joint.anchorB));
-    def.length = static_cast<float>(joint.length);
-    def.minLength = static_cast<float>(joint.minLength);
-    def.maxLength = static_cast<float>(joint.maxLength);
-    def.stiffness = 0.0f;
-    def.damping = 0.0f;
-    if (joint.stiffnessHz > 0)
+    case JointType::Distance:
     {
+        b2DistanceJointDef def;
+        def.Initialize(bodyA, bodyB, ToB2(joint.anchorA), ToB2(joint.anchorB));
+        def.length = static_cast<float>(joint.length);
+        def.minLength = static_cast<float>(joint.minLength);
+        def.maxLength = static_cast<float>(joint.maxLength);
+        def.stiffness = 0.0f;
+        def.damping = 0.0f;
+        if (joint.stiffnessHz > 0)
+        {
+            b2LinearStiffness(def.stiffness, def.damping, static_cast<float>(joint.stiffnessHz),
+                              static_cast<float>(joint.dampingRatio), bodyA, bodyB);
+        }
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Weld:
+    {
+        b2WeldJointDef def;
+        def.Initialize(bodyA, bodyB, ToB2(joint.anchor));
+        def.stiffness = 0.0f;
+        def.damping = 0.0f;
+        if (joint.stiffnessHz > 0)
+        {
+            b2AngularStiffness(def.stiffness, def.damping, static_cast<float>(joint.stiffnessHz),
+                               static_cast<float>(joint.dampingRatio), bodyA, bodyB);
+        }
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Motor:
+    {
+        b2MotorJointDef def;
+        def.Initialize(bodyA, bodyB);
+        if (joint.linearOffset)
+        {
+            def.linearOffset = ToB2(*joint.linearOffset);
+        }
+        if (joint.angularOffset)
+        {
+            def.angularOffset = static_cast<float>(*joint.angularOffset);
+        }
+        def.maxForce = static_cast<float>(joint.maxForce);
+        def.maxTorque = static_cast<float>(joint.maxTorque);
+        def.correctionFactor = static_cast<float>(joint.correctionFactor);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Mouse:
+    {
+        // Grab body B at the anchor, then move the pointer to the target (see build_world).
+        b2MouseJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.target = ToB2(joint.anchor);
+        def.maxForce = static_cast<float>(joint.maxForce);
         b2LinearStiffness(def.stiffness, def.damping, static_cast<float>(joint.stiffnessHz),
                           static_cast<float>(joint.dampingRatio), bodyA, bodyB);
+        def.collideConnected = joint.collideConnected;
+        auto* mouse = static_cast<b2MouseJoint*>(world.CreateJoint(&def));
+        mouse->SetTarget(ToB2(joint.target));
+        return mouse;
     }
-    def.collideConnected = joint.collideConnected;
-    return world.CreateJoint(&def);
+    }
+    throw std::invalid_argument("unknown joint type");
 }
 
 /// Restores g_blockSolve when a step ends, however it ends.

@@ -79,9 +79,10 @@ std::vector<std::string> MirrorNotes(const Scene& scene, const RunOptions& optio
     std::vector<std::string> notes;
     if (!scene.world.blockJoints)
     {
-        notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a revolute "
-                           "point constraint and a prismatic joint's perpendicular and angular "
-                           "rows as a block, so those joints cannot agree");
+        notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a joint's "
+                           "coupled rows as one block (revolute, prismatic and mouse points, "
+                           "weld point and angle, motor linear part), so those joints cannot "
+                           "agree");
     }
     if (options.meffVelocityIterations &&
         *options.meffVelocityIterations != scene.world.velocityIterations)

@@ -16,6 +16,9 @@ enum class JointType : std::uint8_t
     Distance = 1,
     Prismatic = 2,
     Wheel = 3,
+    Weld = 4,
+    Motor = 5,
+    Mouse = 6,
 };
 
 /// Pins two bodies together at one point (an anchored body when bodyA is static). Its point
@@ -100,6 +103,60 @@ struct WheelJointDef
     Real hertz = 0;
     Real dampingRatio = 0;         ///< dimensionless, ≥ 0; 1 = critical; default 0
     bool collideConnected = false; ///< may the two bodies' shapes collide; default false
+};
+
+/// Glues two bodies together at one point: their relative position and angle are held
+/// (Box2D's b2WeldJoint). Rigid when hertz = 0: point and angle form one 3×3 block (Box2D) or,
+/// with SolverSettings::blockJoints off, three scalar rows, each with the scalar effective
+/// mass. With hertz > 0 the angle is a torsional spring (the point stays rigid).
+struct WeldJointDef
+{
+    BodyId bodyA{};
+    BodyId bodyB{};
+    Vec2 localAnchorA{};     ///< anchor in bodyA's frame (m)
+    Vec2 localAnchorB{};     ///< anchor in bodyB's frame (m)
+    Real referenceAngle = 0; ///< angleB − angleA that the joint holds (rad)
+    /// Angular spring frequency (Hz), ≥ 0; 0 = rigid. Turned into Box2D's stiffness
+    /// (N·m/rad) and damping (N·m·s/rad) at creation as b2AngularStiffness does, from the
+    /// bodies' rotational inertias about their origins.
+    Real hertz = 0;
+    Real dampingRatio = 0;         ///< dimensionless, ≥ 0; 1 = critical
+    bool collideConnected = false; ///< may the two bodies' shapes collide
+};
+
+/// Drives bodyB towards a pose relative to bodyA with a bounded force and torque (Box2D's
+/// b2MotorJoint): bodyB's origin towards linearOffset in A's frame, angleB − angleA towards
+/// angularOffset. The linear part is a 2×2 block (Box2D) or, with blockJoints off, two
+/// scalar rows; the angular part is one scalar row. No position correction: the
+/// correctionFactor feeds the pose error into the velocity rows instead.
+struct MotorJointDef
+{
+    BodyId bodyA{};
+    BodyId bodyB{};
+    Vec2 linearOffset{};               ///< target position of bodyB's origin in bodyA's frame (m)
+    Real angularOffset = 0;            ///< target angleB − angleA (rad)
+    Real maxForce = 1;                 ///< N, ≥ 0 (Box2D's default)
+    Real maxTorque = 1;                ///< N·m, ≥ 0 (Box2D's default)
+    Real correctionFactor = Real(0.3); ///< fraction of the pose error removed per step, in [0, 1]
+    bool collideConnected = false;     ///< may the two bodies' shapes collide
+};
+
+/// Pulls a point of bodyB towards a world target with a soft, force-limited spring (Box2D's
+/// b2MouseJoint, for dragging with a pointer). bodyA takes no part in the solve; as in Box2D
+/// it is normally a static ground body. The point rows are a 2×2 block (Box2D) or, with
+/// blockJoints off, two scalar rows. Box2D's solver also scales bodyB's angular velocity by
+/// 0.98 each step, so the dragged body's spin decays; mirrored.
+struct MouseJointDef
+{
+    BodyId bodyA{};
+    BodyId bodyB{}; ///< dynamic
+    /// World point (m) that grabs bodyB at creation and is its first target; move the target
+    /// with World::SetMouseTarget.
+    Vec2 target{};
+    Real maxForce = 0;             ///< N, ≥ 0; 0 = the joint applies nothing
+    Real hertz = 5;                ///< spring frequency (Hz), ≥ 0 (Box2D testbed's value)
+    Real dampingRatio = Real(0.7); ///< dimensionless, ≥ 0; 1 = critical (testbed's value)
+    bool collideConnected = false; ///< may the two bodies' shapes collide
 };
 
 } // namespace meff

@@ -195,47 +195,6 @@ inline Vec2 Mul(const Mat22& A, Vec2 v)
     return {A.ex.x * v.x + A.ey.x * v.y, A.ex.y * v.x + A.ey.y * v.y};
 }
 
-/// A 3-vector, for the 3×3 blocks of joints that couple three rows (Box2D's b2Vec3).
-struct Vec3
-{
-    Real x = 0;
-    Real y = 0;
-    Real z = 0;
-
-    constexpr Vec3() = default;
-    constexpr Vec3(Real x_, Real y_, Real z_) : x(x_), y(y_), z(z_) {}
-    Vec3 operator-() const { return {-x, -y, -z}; }
-};
-
-inline Real Dot(Vec3 a, Vec3 b)
-{
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-inline Vec3 Cross(Vec3 a, Vec3 b)
-{
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-
-/// A 3×3 matrix stored by columns.
-struct Mat33
-{
-    Vec3 ex{1, 0, 0};
-    Vec3 ey{0, 1, 0};
-    Vec3 ez{0, 0, 1};
-
-    /// Solves A·x = b by Cramer's rule (as b2Mat33::Solve33); a singular matrix gives 0.
-    Vec3 Solve33(Vec3 b) const
-    {
-        Real det = Dot(ex, Cross(ey, ez));
-        if (det != 0)
-        {
-            det = Real(1) / det;
-        }
-        return {det * Dot(b, Cross(ey, ez)), det * Dot(ex, Cross(b, ez)),
-                det * Dot(ex, Cross(ey, b))};
-    }
-};
-
 /// A rotation stored as its sine and cosine.
 struct Rot
 {

@@ -61,9 +61,10 @@ struct SolverSettings
     /// Solve a two-point manifold's normal rows together as a 2×2 block (Box2D's block
     /// solver). Off: every row alone with its scalar effective mass.
     bool blockSolver = true;
-    /// Solve a revolute joint's point constraint, and a prismatic joint's perpendicular and
-    /// angular rows (with its axial limit row in the position pass when active), as a block
-    /// (Box2D). Off: scalar rows, each with its scalar effective mass.
+    /// Solve a joint's coupled rows as one block (Box2D): the revolute and mouse point (2×2),
+    /// the prismatic's perpendicular and angular rows (2×2, with its axial limit row in the
+    /// position pass when active), the weld's point and angle (3×3; 2×2 point when soft), the
+    /// motor's linear part (2×2). Off: each row alone with its scalar effective mass.
     bool blockJoints = true;
     /// Where restitution's approach speed vn is measured (the bounce targets −e·vn).
     /// Off (Box2D 2.4.1): after this step's gravity was added, so every bounce returns g·dt
@@ -250,12 +251,17 @@ class World
     JointId CreateJoint(const PrismaticJointDef& def);
     /// The suspension spring's stiffness comes from hertz and both bodies' masses now.
     JointId CreateJoint(const WheelJointDef& def);
+    JointId CreateJoint(const WeldJointDef& def);
+    JointId CreateJoint(const MotorJointDef& def);
+    JointId CreateJoint(const MouseJointDef& def); ///< throws unless bodyB is dynamic
     void DestroyJoint(JointId id);
     bool IsValid(JointId id) const;
     JointType GetJointType(JointId id) const;
     BodyId GetBodyA(JointId id) const;
     BodyId GetBodyB(JointId id) const;
-    Vec2 GetAnchorA(JointId id) const; ///< world point (m)
+    /// World point (m); a motor joint's anchors are the bodies' origins, a mouse joint's
+    /// anchor A is its target.
+    Vec2 GetAnchorA(JointId id) const;
     Vec2 GetAnchorB(JointId id) const; ///< world point (m)
     /// Reaction on body B over the last step: the joint's accumulated impulse times invDt.
     JointReaction GetReaction(JointId id, Real invDt) const;
@@ -282,6 +288,16 @@ class World
                                             Vec2 worldAxis) const;
     /// Wheel hub at worldAnchor (usually the wheel's centre), suspension along worldAxis.
     WheelJointDef MakeWheelJointDef(BodyId a, BodyId b, Vec2 worldAnchor, Vec2 worldAxis) const;
+    /// Welds at worldAnchor, holding the bodies' present relative angle.
+    WeldJointDef MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
+    /// Holds the bodies' present relative pose: B's origin in A's frame and angleB − angleA.
+    MotorJointDef MakeMotorJointDef(BodyId a, BodyId b) const;
+    /// Moves a mouse joint's target (the pointer moved). Throws unless id is a mouse joint.
+    void SetMouseTarget(JointId id, Vec2 target);
+    Vec2 GetMouseTarget(JointId id) const;
+    /// Changes a motor joint's target pose of B relative to A (m in A's frame, rad). Throws
+    /// unless id is a motor joint.
+    void SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffset);
 
     // Stepping
     /// Advances the world by dt seconds (> 0 and finite). Throws SimulationError if a body's

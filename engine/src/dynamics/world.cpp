@@ -792,12 +792,81 @@ JointId World::CreateJoint(const PrismaticJointDef& def)
     return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
+namespace
+{
+
+/// Rotational inertia about the body's origin, as Box2D's b2Body::GetInertia (which
+/// b2AngularStiffness reads): I_centre + m·|localCenter|².
+Real InertiaAboutOrigin(const Body& body)
+{
+    return body.I + body.mass * Dot(body.sweep.localCenter, body.sweep.localCenter);
+}
+
+} // namespace
+
+JointId World::CreateJoint(const WeldJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    const Body& a = m_state->bodies[def.bodyA.index];
+    const Body& b = m_state->bodies[def.bodyB.index];
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index,
+                                        InertiaAboutOrigin(a), InertiaAboutOrigin(b)));
+}
+
+JointId World::CreateJoint(const MotorJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
+}
+
 JointId World::CreateJoint(const WheelJointDef& def)
 {
     RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
     const Body& a = m_state->bodies[def.bodyA.index];
     const Body& b = m_state->bodies[def.bodyB.index];
     return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass));
+}
+
+JointId World::CreateJoint(const MouseJointDef& def)
+{
+    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
+    const Body& a = m_state->bodies[def.bodyA.index];
+    const Body& b = m_state->bodies[def.bodyB.index];
+    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass, b.xf,
+                                        b.type == BodyType::Dynamic));
+}
+
+void World::SetMouseTarget(JointId id, Vec2 target)
+{
+    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    auto* mouse = std::get_if<MouseJoint>(&joint.data);
+    Require(mouse != nullptr, "World::SetMouseTarget: the joint is not a mouse joint");
+    RequireFinite(target, "World::SetMouseTarget: target");
+    mouse->target = target;
+    // The pointer moved: the dragged body must follow (Box2D's SetTarget wakes it).
+    WakeBody(*m_state, joint.bodyB);
+}
+
+Vec2 World::GetMouseTarget(JointId id) const
+{
+    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    const auto* mouse = std::get_if<MouseJoint>(&joint.data);
+    Require(mouse != nullptr, "World::GetMouseTarget: the joint is not a mouse joint");
+    return mouse->target;
+}
+
+void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffset)
+{
+    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    auto* motor = std::get_if<MotorJoint>(&joint.data);
+    Require(motor != nullptr, "World::SetMotorJointOffsets: the joint is not a motor joint");
+    RequireFinite(linearOffset, "World::SetMotorJointOffsets: linearOffset");
+    RequireFinite(angularOffset, "World::SetMotorJointOffsets: angularOffset");
+    motor->linearOffset = linearOffset;
+    motor->angularOffset = angularOffset;
+    // A new target pose moves the bodies: wake them (Box2D's SetLinearOffset does).
+    WakeBody(*m_state, joint.bodyA);
+    WakeBody(*m_state, joint.bodyB);
 }
 
 void World::DestroyJoint(JointId id)
@@ -854,12 +923,12 @@ BodyId World::GetBodyB(JointId id) const
 Vec2 World::GetAnchorA(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return Mul(m_state->bodies[joint.bodyA].xf, GetLocalAnchor(joint, 0));
+    return JointAnchorA(joint, m_state->bodies[joint.bodyA].xf);
 }
 Vec2 World::GetAnchorB(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return Mul(m_state->bodies[joint.bodyB].xf, GetLocalAnchor(joint, 1));
+    return JointAnchorB(joint, m_state->bodies[joint.bodyB].xf);
 }
 JointReaction World::GetReaction(JointId id, Real invDt) const
 {
@@ -899,16 +968,22 @@ void World::SetJointMotorSpeed(JointId id, Real speed)
 namespace
 {
 
-/// The slide axis of a prismatic or wheel joint in body A's frame; throws for other types.
-Vec2 LocalSlideAxis(const Joint& joint, const char* caller)
+/// A prismatic or wheel joint's anchors and slide axis, in its bodies' frames.
+struct SlideFrame
+{
+    Vec2 localAnchorA, localAnchorB, localAxisA;
+};
+
+/// The slide frame of a prismatic or wheel joint; throws for other types.
+SlideFrame GetSlideFrame(const Joint& joint, const char* caller)
 {
     if (const auto* p = std::get_if<PrismaticJoint>(&joint.data))
     {
-        return p->localXAxisA;
+        return {p->localAnchorA, p->localAnchorB, p->localXAxisA};
     }
     if (const auto* w = std::get_if<WheelJoint>(&joint.data))
     {
-        return w->localXAxisA;
+        return {w->localAnchorA, w->localAnchorB, w->localXAxisA};
     }
     throw InvalidArgument(std::string("World::") + caller +
                           ": only prismatic and wheel joints have an axis");
@@ -919,13 +994,13 @@ Vec2 LocalSlideAxis(const Joint& joint, const char* caller)
 Real World::GetJointTranslation(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    const Vec2 localAxis = LocalSlideAxis(joint, "GetJointTranslation");
+    const SlideFrame frame = GetSlideFrame(joint, "GetJointTranslation");
     const Body& a = m_state->bodies[joint.bodyA];
     const Body& b = m_state->bodies[joint.bodyB];
-    const Vec2 pA = Mul(a.xf, GetLocalAnchor(joint, 0));
-    const Vec2 pB = Mul(b.xf, GetLocalAnchor(joint, 1));
+    const Vec2 pA = Mul(a.xf, frame.localAnchorA);
+    const Vec2 pB = Mul(b.xf, frame.localAnchorB);
     const Vec2 d = pB - pA;
-    const Vec2 axis = Mul(a.xf.q, localAxis);
+    const Vec2 axis = Mul(a.xf.q, frame.localAxisA);
     return Dot(d, axis);
 }
 
@@ -938,14 +1013,14 @@ Real World::GetJointSpeed(JointId id) const
     {
         return b.angularVelocity - a.angularVelocity;
     }
-    const Vec2 localAxis = LocalSlideAxis(joint, "GetJointSpeed");
+    const SlideFrame frame = GetSlideFrame(joint, "GetJointSpeed");
     // Cdot of the axial row: the axis turns with A, hence the d·(wA × axis) term.
-    const Vec2 rA = Mul(a.xf.q, GetLocalAnchor(joint, 0) - a.sweep.localCenter);
-    const Vec2 rB = Mul(b.xf.q, GetLocalAnchor(joint, 1) - b.sweep.localCenter);
+    const Vec2 rA = Mul(a.xf.q, frame.localAnchorA - a.sweep.localCenter);
+    const Vec2 rB = Mul(b.xf.q, frame.localAnchorB - b.sweep.localCenter);
     const Vec2 p1 = a.sweep.c + rA;
     const Vec2 p2 = b.sweep.c + rB;
     const Vec2 d = p2 - p1;
-    const Vec2 axis = Mul(a.xf.q, localAxis);
+    const Vec2 axis = Mul(a.xf.q, frame.localAxisA);
     const Vec2 vA = a.linearVelocity, vB = b.linearVelocity;
     const Real wA = a.angularVelocity, wB = b.angularVelocity;
     return Dot(d, Cross(wA, axis)) + Dot(axis, vB + Cross(wB, rB) - vA - Cross(wA, rA));
@@ -1005,6 +1080,28 @@ WheelJointDef World::MakeWheelJointDef(BodyId a, BodyId b, Vec2 worldAnchor, Vec
     def.localAnchorA = GetLocalPoint(a, worldAnchor);
     def.localAnchorB = GetLocalPoint(b, worldAnchor);
     def.localAxisA = MulT(GetTransform(a).q, worldAxis);
+    return def;
+}
+
+WeldJointDef World::MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
+{
+    RequireFinite(worldAnchor, "MakeWeldJointDef: anchor");
+    WeldJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = GetLocalPoint(a, worldAnchor);
+    def.localAnchorB = GetLocalPoint(b, worldAnchor);
+    def.referenceAngle = GetAngle(b) - GetAngle(a);
+    return def;
+}
+
+MotorJointDef World::MakeMotorJointDef(BodyId a, BodyId b) const
+{
+    MotorJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.linearOffset = GetLocalPoint(a, GetPosition(b));
+    def.angularOffset = GetAngle(b) - GetAngle(a);
     return def;
 }
 

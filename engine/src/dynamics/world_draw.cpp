@@ -183,8 +183,17 @@ void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
             const Joint& joint = world.joints[std::size_t(id.index)].joint;
             const Body& bodyA = world.bodies[std::size_t(joint.bodyA)];
             const Body& bodyB = world.bodies[std::size_t(joint.bodyB)];
-            const Vec2 anchorA = Mul(bodyA.xf, GetLocalAnchor(joint, 0));
-            const Vec2 anchorB = Mul(bodyB.xf, GetLocalAnchor(joint, 1));
+            const Vec2 anchorA = JointAnchorA(joint, bodyA.xf);
+            const Vec2 anchorB = JointAnchorB(joint, bodyB.xf);
+            if (joint.type == JointType::Mouse)
+            {
+                // As b2Joint::Draw for a mouse joint: the target (anchor A), the grabbed point
+                // and the line between them; body A (the ground) takes no part.
+                draw.DrawPoint(anchorA, flags.pointSize, colors.joint);
+                draw.DrawPoint(anchorB, flags.pointSize, colors.joint);
+                draw.DrawSegment(anchorA, anchorB, colors.joint);
+                continue;
+            }
             // As b2Joint::Draw: each moving body's centre to its anchor, then anchor to anchor
             // (the rod of a distance joint). A static body's origin is usually far away and
             // says nothing, so it is left out.
@@ -225,8 +234,7 @@ void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
         for (const JointId id : world.jointIds)
         {
             const Joint& joint = world.joints[std::size_t(id.index)].joint;
-            const Vec2 anchorB =
-                Mul(world.bodies[std::size_t(joint.bodyB)].xf, GetLocalAnchor(joint, 1));
+            const Vec2 anchorB = JointAnchorB(joint, world.bodies[std::size_t(joint.bodyB)].xf);
             // invDt = 1: the reaction as the last step's impulse (N·s), the contacts' unit.
             const JointReaction reaction = GetJointReaction(joint, Real(1));
             DrawArrow(draw, anchorB, anchorB + flags.impulseScale * reaction.force, flags.arrowHead,

@@ -5,6 +5,7 @@
 #include "meff/error.h"
 
 #include <sstream>
+#include <string>
 
 namespace meff::detail
 {
@@ -105,6 +106,42 @@ Vec2 RequireUnitAxis(const char* def, Vec2 axis)
     return unit;
 }
 
+/// Torsional spring constants from a frequency and damping ratio, as Box2D's
+/// b2AngularStiffness: the oscillator inertia is IA·IB/(IA + IB) when both bodies have one,
+/// else the one body's. k = I·ω², c = 2·I·ζ·ω with ω = 2πf, in b2AngularStiffness's order.
+/// Box2D takes the inertias about the bodies' origins (b2Body::GetInertia), not their
+/// centres of mass; the caller passes those.
+void AngularStiffness(Real& stiffness, Real& damping, Real hertz, Real dampingRatio, Real inertiaA,
+                      Real inertiaB)
+{
+    Real inertia;
+    if (inertiaA > 0 && inertiaB > 0)
+    {
+        inertia = inertiaA * inertiaB / (inertiaA + inertiaB);
+    }
+    else if (inertiaA > 0)
+    {
+        inertia = inertiaA;
+    }
+    else
+    {
+        inertia = inertiaB;
+    }
+    const Real omega = Real(2) * kPi * hertz;
+    stiffness = inertia * omega * omega;
+    damping = Real(2) * inertia * dampingRatio * omega;
+}
+
+Joint MakeTypedJoint(JointType type, std::int32_t bodyA, std::int32_t bodyB, bool collideConnected)
+{
+    Joint joint;
+    joint.type = type;
+    joint.bodyA = bodyA;
+    joint.bodyB = bodyB;
+    joint.collideConnected = collideConnected;
+    return joint;
+}
+
 } // namespace
 
 Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
@@ -137,11 +174,7 @@ Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bo
     revolute.motorSpeed = def.motorSpeed;
     revolute.maxMotorTorque = def.maxMotorTorque;
 
-    Joint joint;
-    joint.type = JointType::Revolute;
-    joint.bodyA = bodyA;
-    joint.bodyB = bodyB;
-    joint.collideConnected = def.collideConnected;
+    Joint joint = MakeTypedJoint(JointType::Revolute, bodyA, bodyB, def.collideConnected);
     joint.data = revolute;
     return joint;
 }
@@ -178,11 +211,7 @@ Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bo
     LinearStiffness(distance.stiffness, distance.damping, def.hertz, def.dampingRatio, massA,
                     massB);
 
-    Joint joint;
-    joint.type = JointType::Distance;
-    joint.bodyA = bodyA;
-    joint.bodyB = bodyB;
-    joint.collideConnected = def.collideConnected;
+    Joint joint = MakeTypedJoint(JointType::Distance, bodyA, bodyB, def.collideConnected);
     joint.data = distance;
     return joint;
 }
@@ -214,11 +243,7 @@ Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t b
     prismatic.motorSpeed = def.motorSpeed;
     prismatic.maxMotorForce = def.maxMotorForce;
 
-    Joint joint;
-    joint.type = JointType::Prismatic;
-    joint.bodyA = bodyA;
-    joint.bodyB = bodyB;
-    joint.collideConnected = def.collideConnected;
+    Joint joint = MakeTypedJoint(JointType::Prismatic, bodyA, bodyB, def.collideConnected);
     joint.data = prismatic;
     return joint;
 }
@@ -254,19 +279,120 @@ Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB
     // testbed's car passes both bodies to b2LinearStiffness.
     LinearStiffness(wheel.stiffness, wheel.damping, def.hertz, def.dampingRatio, massA, massB);
 
-    Joint joint;
-    joint.type = JointType::Wheel;
-    joint.bodyA = bodyA;
-    joint.bodyB = bodyB;
-    joint.collideConnected = def.collideConnected;
+    Joint joint = MakeTypedJoint(JointType::Wheel, bodyA, bodyB, def.collideConnected);
     joint.data = wheel;
     return joint;
 }
 
-Vec2 GetLocalAnchor(const Joint& joint, int side)
+Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real inertiaA,
+                Real inertiaB)
 {
-    return std::visit([side](const auto& j) { return side == 0 ? j.localAnchorA : j.localAnchorB; },
-                      joint.data);
+    constexpr const char* kDef = "WeldJointDef";
+    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
+    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
+    RequireFinite(kDef, "referenceAngle", def.referenceAngle);
+    RequireNonNegative(kDef, "hertz", def.hertz);
+    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+
+    WeldJoint weld;
+    weld.localAnchorA = def.localAnchorA;
+    weld.localAnchorB = def.localAnchorB;
+    weld.referenceAngle = def.referenceAngle;
+    // hertz = 0 gives stiffness 0: the rigid weld.
+    AngularStiffness(weld.stiffness, weld.damping, def.hertz, def.dampingRatio, inertiaA, inertiaB);
+
+    Joint joint = MakeTypedJoint(JointType::Weld, bodyA, bodyB, def.collideConnected);
+    joint.data = weld;
+    return joint;
+}
+
+Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
+{
+    constexpr const char* kDef = "MotorJointDef";
+    RequireFinite(kDef, "linearOffset", def.linearOffset);
+    RequireFinite(kDef, "angularOffset", def.angularOffset);
+    RequireNonNegative(kDef, "maxForce", def.maxForce);
+    RequireNonNegative(kDef, "maxTorque", def.maxTorque);
+    RequireNonNegative(kDef, "correctionFactor", def.correctionFactor);
+    if (def.correctionFactor > 1)
+    {
+        Reject(kDef, "correctionFactor", def.correctionFactor, "must be <= 1");
+    }
+
+    MotorJoint motor;
+    motor.linearOffset = def.linearOffset;
+    motor.angularOffset = def.angularOffset;
+    motor.maxForce = def.maxForce;
+    motor.maxTorque = def.maxTorque;
+    motor.correctionFactor = def.correctionFactor;
+
+    Joint joint = MakeTypedJoint(JointType::Motor, bodyA, bodyB, def.collideConnected);
+    joint.data = motor;
+    return joint;
+}
+
+Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
+                Real massB, const Transform& xfB, bool bodyBDynamic)
+{
+    constexpr const char* kDef = "MouseJointDef";
+    if (!bodyBDynamic)
+    {
+        throw InvalidArgument(std::string(kDef) +
+                              ".bodyB must be a dynamic body (the joint drags it)");
+    }
+    RequireFinite(kDef, "target", def.target);
+    RequireNonNegative(kDef, "maxForce", def.maxForce);
+    RequireNonNegative(kDef, "hertz", def.hertz);
+    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+
+    MouseJoint mouse;
+    mouse.target = def.target;
+    // The target grabs bodyB where it is now (Box2D's constructor).
+    mouse.localAnchorB = MulT(xfB, def.target);
+    mouse.maxForce = def.maxForce;
+    LinearStiffness(mouse.stiffness, mouse.damping, def.hertz, def.dampingRatio, massA, massB);
+
+    Joint joint = MakeTypedJoint(JointType::Mouse, bodyA, bodyB, def.collideConnected);
+    joint.data = mouse;
+    return joint;
+}
+
+Vec2 JointAnchorA(const Joint& joint, const Transform& xfA)
+{
+    if (const auto* mouse = std::get_if<MouseJoint>(&joint.data))
+    {
+        return mouse->target;
+    }
+    return std::visit(
+        [&](const auto& j) -> Vec2
+        {
+            if constexpr (requires { j.localAnchorA; })
+            {
+                return Mul(xfA, j.localAnchorA);
+            }
+            else
+            {
+                return xfA.p; // the motor joint: body A's origin
+            }
+        },
+        joint.data);
+}
+
+Vec2 JointAnchorB(const Joint& joint, const Transform& xfB)
+{
+    return std::visit(
+        [&](const auto& j) -> Vec2
+        {
+            if constexpr (requires { j.localAnchorB; })
+            {
+                return Mul(xfB, j.localAnchorB);
+            }
+            else
+            {
+                return xfB.p; // the motor joint: body B's origin
+            }
+        },
+        joint.data);
 }
 
 // The variant's alternative is the joint's type; the JointType tag exists for callers that

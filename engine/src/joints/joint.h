@@ -1,12 +1,13 @@
 // Joints inside the solver. Each joint type lives in its own file (revolute_joint.cpp,
-// distance_joint.cpp, prismatic_joint.cpp, wheel_joint.cpp) and is reached through the functions at
-// the bottom, which switch on the type. Every constraint row is solved with the scalar effective
-// mass
+// distance_joint.cpp, prismatic_joint.cpp, wheel_joint.cpp, weld_joint.cpp, motor_joint.cpp,
+// mouse_joint.cpp) and is reached through the functions at the bottom, which switch on the type.
+// Every constraint row is solved with the scalar effective mass
 //   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB   (seed: effective-mass.md)
 // and λ = −(Jv + bias)/k, following Box2D 2.4.1's sequential-impulse formulation.
 #pragma once
 
 #include "dynamics/solver_types.h"
+#include "joints/mat33.h"
 #include "meff/joint.h"
 #include "meff/world.h"
 
@@ -112,13 +113,73 @@ struct WheelJoint
     Real bias = 0, gamma = 0, translation = 0;
 };
 
+struct WeldJoint
+{
+    // Definition
+    Vec2 localAnchorA, localAnchorB;
+    Real referenceAngle = 0;
+    Real stiffness = 0; ///< N·m/rad, from hertz and the bodies' inertias at creation; 0 = rigid
+    Real damping = 0;   ///< N·m·s/rad
+    // Accumulated impulses (point x, point y, angle)
+    Vec3 impulse;
+    // Solver temporaries
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 rA, rB, localCenterA, localCenterB;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Mat33 K;    ///< J·M⁻¹·Jᵀ of the three rows; its diagonal holds each row's scalar k
+    Mat33 mass; ///< inverse of K (or of its point block, plus the soft angular mass)
+    Real gamma = 0, bias = 0;
+};
+
+struct MotorJoint
+{
+    // Definition (the offsets may change between steps)
+    Vec2 linearOffset;
+    Real angularOffset = 0;
+    Real maxForce = 1, maxTorque = 1, correctionFactor = Real(0.3);
+    // Accumulated impulses
+    Vec2 linearImpulse;
+    Real angularImpulse = 0;
+    // Solver temporaries
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 rA, rB, localCenterA, localCenterB;
+    Vec2 linearError;
+    Real angularError = 0;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Mat22 K;          ///< point block J·M⁻¹·Jᵀ; its diagonal holds each row's scalar k
+    Mat22 linearMass; ///< K⁻¹
+    Real angularMass = 0;
+};
+
+struct MouseJoint
+{
+    // Definition (the target may change between steps)
+    Vec2 target;       ///< world point (m)
+    Vec2 localAnchorB; ///< the grabbed point in bodyB's frame
+    Real maxForce = 0;
+    Real stiffness = 0; ///< N/m, from hertz and the bodies' masses at creation
+    Real damping = 0;   ///< N·s/m
+    // Accumulated impulse
+    Vec2 impulse;
+    // Solver temporaries (the A members are stored but unused: body A takes no part)
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 rB, localCenterA, localCenterB;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Mat22 K;    ///< soft point block, γ on the diagonal
+    Mat22 mass; ///< K⁻¹
+    Vec2 C;     ///< position error × β, the rows' bias
+    Real beta = 0, gamma = 0;
+};
+
 struct Joint
 {
     JointType type = JointType::Revolute;
     std::int32_t bodyA = -1; ///< world body index
     std::int32_t bodyB = -1;
     bool collideConnected = false;
-    std::variant<RevoluteJoint, DistanceJoint, PrismaticJoint, WheelJoint> data;
+    std::variant<RevoluteJoint, DistanceJoint, PrismaticJoint, WheelJoint, WeldJoint, MotorJoint,
+                 MouseJoint>
+        data;
 };
 
 /// Stores what a joint's rows need of its two bodies for this step (every joint type has these
@@ -147,8 +208,19 @@ Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t b
 Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB);
 
-/// The joint's anchors in its bodies' frames (m); side 0 is body A, 1 is body B.
-Vec2 GetLocalAnchor(const Joint& joint, int side);
+/// inertiaA/inertiaB: each body's rotational inertia about its origin (kg·m², Box2D's
+/// b2Body::GetInertia), which set the angular spring as b2AngularStiffness does.
+Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real inertiaA,
+                Real inertiaB);
+Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
+/// xfB: bodyB's transform now, which turns the target into the grabbed local point.
+/// bodyBDynamic: the world's answer to "is bodyB dynamic" (a mouse joint must move it).
+Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
+                Real massB, const Transform& xfB, bool bodyBDynamic);
+
+/// World anchors (m) as Box2D's GetAnchorA/GetAnchorB, from the bodies' transforms.
+Vec2 JointAnchorA(const Joint& joint, const Transform& xfA);
+Vec2 JointAnchorB(const Joint& joint, const Transform& xfB);
 
 /// Prepares the rows for this step and applies the warm-start impulse (or zeroes the
 /// accumulated impulses when warm starting is off): Box2D's InitVelocityConstraints.
@@ -185,5 +257,22 @@ void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointB
 void SolveVelocityConstraints(WheelJoint& joint, SolverData& data);
 bool SolvePositionConstraints(WheelJoint& joint, SolverData& data);
 JointReaction GetReaction(const WheelJoint& joint, Real invDt);
+void InitVelocityConstraints(WeldJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(WeldJoint& joint, SolverData& data);
+bool SolvePositionConstraints(WeldJoint& joint, SolverData& data);
+JointReaction GetReaction(const WeldJoint& joint, Real invDt);
+
+void InitVelocityConstraints(MotorJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(MotorJoint& joint, SolverData& data);
+bool SolvePositionConstraints(MotorJoint& joint, SolverData& data);
+JointReaction GetReaction(const MotorJoint& joint, Real invDt);
+
+void InitVelocityConstraints(MouseJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(MouseJoint& joint, SolverData& data);
+bool SolvePositionConstraints(MouseJoint& joint, SolverData& data);
+JointReaction GetReaction(const MouseJoint& joint, Real invDt);
 
 } // namespace meff::detail

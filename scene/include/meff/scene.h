@@ -43,7 +43,8 @@ struct SceneWorldSettings
     int positionIterations = 3; ///< 0..1000
     bool warmStarting = true;
     bool blockSolver = true; ///< 2×2 block solve of two-point manifolds
-    bool blockJoints = true; ///< meff only: block solve of revolute and prismatic joints
+    /// meff only: block solve of joint rows (revolute, prismatic, weld, motor, mouse)
+    bool blockJoints = true;
     bool restitutionFromStepStart = false; ///< meff only: see SolverSettings
     bool allowSleep = false;               ///< let resting islands sleep (Box2D's rules)
     bool continuous = false;               ///< Box2D's continuous physics (time of impact)
@@ -121,7 +122,8 @@ struct SceneJoint
     std::size_t bodyIndexA = 0; ///< index into Scene::bodies
     std::size_t bodyIndexB = 0; ///< index into Scene::bodies
     bool collideConnected = false;
-    // revolute (anchor, limit and motor fields are shared with prismatic and wheel)
+    // revolute, prismatic, wheel, weld; mouse: the grabbed point on body B (limit and motor
+    // fields are shared by revolute, prismatic and wheel)
     SceneVec2 anchor; ///< world point (m)
     bool enableLimit = false;
     double lowerAngle = 0; ///< rad, ≤ upperAngle
@@ -140,8 +142,17 @@ struct SceneJoint
     double length = 0;       ///< m, > 0; the file's value or the distance between the anchors
     double minLength = 0;    ///< m; the file's value or `length`
     double maxLength = 0;    ///< m; the file's value or `length`
-    double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring
-    double dampingRatio = 0; ///< ≥ 0
+    double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring (distance, weld, mouse)
+    double dampingRatio = 0; ///< ≥ 0 (distance, weld, mouse)
+    // motor
+    std::optional<SceneVec2> linearOffset; ///< B's origin in A's frame (m); unset: as created
+    std::optional<double> angularOffset;   ///< angleB − angleA (rad); unset: as created
+    double maxTorque = 1;                  ///< N·m, ≥ 0
+    double correctionFactor = 0.3;         ///< in [0, 1]
+    // motor, mouse
+    double maxForce = 1; ///< N, ≥ 0
+    // mouse
+    SceneVec2 target; ///< world point body B's anchor is dragged towards (m)
 };
 
 /// "validate.tolerances": how far meff may drift from Box2D before validation fails.
