@@ -413,6 +413,39 @@ TEST_CASE("CastRay callback steers the ray as Box2D's: clip, ignore, terminate",
     }
 }
 
+TEST_CASE("Queries may be nested: a callback may query the world again", "[queries]")
+{
+    // The tree's scratch stack is shared by nested queries; each must leave the others' part
+    // alone, so the outer cast still reports exactly the brute-force set.
+    const QueryWorld q(10);
+    Random rng(1010);
+    int inner = 0;
+    for (int ray = 0; ray < 100; ++ray)
+    {
+        const auto [origin, translation] = RandomRay(rng);
+        std::set<ShapeKey> expected;
+        for (const BruteHit& hit : BruteForceRay(q, origin, translation, {}))
+        {
+            expected.insert(Key(hit.shape));
+        }
+        std::set<ShapeKey> reported;
+        q.world().CastRay(
+            origin, translation, {},
+            [&](ShapeId shape, Vec2 point, Vec2 normal, Real)
+            {
+                reported.insert(Key(shape));
+                // A short ray back into the surface hits the same shape first.
+                const RayResult back =
+                    q.world().CastRayClosest(point + Real(0.05) * normal, Real(-0.1) * normal);
+                inner += back.hit ? 1 : 0;
+                q.world().OverlapAABB({point, point}, {}, [&](ShapeId) { return ++inner < 0; });
+                return Real(1);
+            });
+        REQUIRE(reported == expected);
+    }
+    CHECK(inner > 100);
+}
+
 TEST_CASE("OverlapAABB reports the brute-force set of fat-box overlaps", "[queries]")
 {
     const QueryWorld q(6);
