@@ -661,7 +661,7 @@ TEST_CASE("Queries refuse bad arguments and name them", "[queries]")
     CHECK_FALSE(world.CastRayClosest({10, 10}, {0, 0}).hit);
 }
 
-TEST_CASE("A ray hits the near side of a known shape", "[queries]")
+TEST_CASE("Rays and shape casts hit known shapes where expected", "[queries]")
 {
     // A hand-checked case: a 1 m box at (5, 0) and a ray along +x from the origin hit the face
     // x = 4 at fraction 0.4 of a 10 m ray, normal (−1, 0). A circle of radius 1 at (5, 3) is
@@ -697,6 +697,20 @@ TEST_CASE("A ray hits the near side of a known shape", "[queries]")
     CHECK_FALSE(world.CastRayClosest({5, 10}, {0, -10}, {.maskBits = 4}).hit);
     // From inside the box the ray does not hit the box, as Box2D.
     CHECK_FALSE(world.CastRayClosest({5, 0}, {0, -5}).hit);
+
+    // A ball of radius 0.5 dropped 10 m from (5.5, 5) lands on the box's top face (core at
+    // y = 1, skin 0.01 m): its centre stops at y = 1.5, 3.5 m down, so fraction 0.35. ShapeCast
+    // stops within linearSlop/2 = 0.0025 m before that, 0.00025 of the 10 m translation.
+    const RayResult drop = world.CastShapeClosest(
+        Circle{{0, 0}, Real(0.5)}, Transform({Real(5.5), 5}, Rot(0)), {0, -10}, {.maskBits = 1});
+    REQUIRE(drop.hit);
+    CHECK(drop.shape == box);
+    CHECK(drop.fraction <= Real(0.35) + Real(1e-6));    // float rounding of 3.5/10
+    CHECK(drop.fraction >= Real(0.35) - Real(0.00026)); // the tolerance above, plus rounding
+    CHECK(drop.normal.x == Approx(0).margin(1e-6));
+    CHECK(drop.normal.y == Approx(1).margin(1e-6));
+    CHECK(drop.point.x == Approx(5.5).margin(1e-4));  // under the ball's centre
+    CHECK(drop.point.y == Approx(1.01).margin(1e-4)); // on the skin of the top face
 }
 
 #ifndef MEFF_DOUBLE
