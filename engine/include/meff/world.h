@@ -251,8 +251,8 @@ class World
     std::span<const ContactEvent> GetContactEndEvents() const;
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
 
-    // Queries (world_query.cpp). They go through the broad phase, so a query costs about the
-    // logarithm of the shape count plus the shapes it finds. Do not create, destroy or move
+    // Queries (world_query.cpp). They go through the broad phase, so a query only visits the
+    // part of the tree near what it asks about, not every shape. Do not create, destroy or move
     // anything, or step, from inside a callback: the broad phase being walked would change
     // under the query. Queries share the broad phase's scratch stack, so one world must not
     // be queried from several threads at once. Bad arguments (non-finite numbers, an inverted
@@ -280,10 +280,11 @@ class World
     /// (point and normal on the hit shape's surface, normal pointing out of it; fraction of
     /// the translation) through `callback`, as CastRay does. Candidates come from the broad
     /// phase (a ray cast of the swept bounding box), and each is tested by ShapeCast
-    /// (meff/distance.h) with the world's polygonSkin and linearSlop, so both shapes count
-    /// their skin of at least polygonSkin and the cast stops about linearSlop short of contact.
-    /// The cast shape's rotation stays fixed. Shapes the cast shape already overlaps at
-    /// `start` are not reported.
+    /// (meff/distance.h) with the world's polygonSkin and linearSlop: as Box2D's b2ShapeCast,
+    /// it stops where the two surfaces (each radius at least polygonSkin) overlap by
+    /// polygonSkin — a circle cast onto a polygon stops touching its sharp outline — or up to
+    /// linearSlop/2 before. The cast shape's rotation stays fixed. Shapes the cast shape already
+    /// overlaps at `start` are not reported.
     void CastShape(const Circle& shape, const Transform& start, Vec2 translation,
                    QueryFilter filter, CastCallback callback) const;
     void CastShape(const Polygon& shape, const Transform& start, Vec2 translation,
@@ -297,7 +298,7 @@ class World
     /// The shape's bounding box at its body's current transform, skin included (m).
     AABB GetShapeAABB(ShapeId id) const;
     /// The shape's box in the broad phase: the bounding box fattened by the AABB margin and
-    /// the predicted motion, as last updated by a step (m). OverlapAABB tests these.
+    /// the predicted motion, as the broad phase last updated it (m). OverlapAABB tests these.
     AABB GetShapeFatAABB(ShapeId id) const;
 
     // Determinism and rollback
