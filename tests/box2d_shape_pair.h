@@ -27,6 +27,11 @@ struct ShapePair
 {
     std::unique_ptr<b2Shape> box2d;
     DistanceProxy proxy;
+    // The shape itself in meff (only the one `type` names is set).
+    ShapeType type = ShapeType::Circle;
+    Circle circle;
+    Segment segment;
+    Polygon polygon;
 };
 
 /// The ranges random shapes are drawn from (m).
@@ -50,7 +55,9 @@ inline ShapePair RandomShape(Random& rng, const ShapeSizes& sizes)
         circle->m_p.Set(rng.Uniform(-sizes.centerRange, sizes.centerRange),
                         rng.Uniform(-sizes.centerRange, sizes.centerRange));
         circle->m_radius = rng.Uniform(sizes.minRadius, sizes.maxRadius);
-        pair.proxy = MakeProxy(Circle{{circle->m_p.x, circle->m_p.y}, circle->m_radius});
+        pair.type = ShapeType::Circle;
+        pair.circle = Circle{{circle->m_p.x, circle->m_p.y}, circle->m_radius};
+        pair.proxy = MakeProxy(pair.circle);
         pair.box2d = std::move(circle);
         break;
     }
@@ -60,7 +67,9 @@ inline ShapePair RandomShape(Random& rng, const ShapeSizes& sizes)
         const b2Vec2 v1(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
         const b2Vec2 v2(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
         edge->SetTwoSided(v1, v2);
-        pair.proxy = MakeProxy(Segment{{v1.x, v1.y}, {v2.x, v2.y}, edge->m_radius});
+        pair.type = ShapeType::Segment;
+        pair.segment = Segment{{v1.x, v1.y}, {v2.x, v2.y}, edge->m_radius};
+        pair.proxy = MakeProxy(pair.segment);
         pair.box2d = std::move(edge);
         break;
     }
@@ -96,6 +105,8 @@ inline ShapePair RandomShape(Random& rng, const ShapeSizes& sizes)
                 REQUIRE(shape->m_vertices[i].y == polygon.vertices[i].y);
             }
             polygon.radius = shape->m_radius;
+            pair.type = ShapeType::Polygon;
+            pair.polygon = polygon;
             pair.proxy = MakeProxy(polygon);
             pair.box2d = std::move(shape);
             break;

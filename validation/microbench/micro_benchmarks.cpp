@@ -5,11 +5,14 @@
 #include "dynamics/contact_solver.h"
 #include "dynamics/shape.h"
 #include "meff/collision.h"
+#include "meff/ray_cast.h"
 #include "meff/world.h"
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 using namespace meff;
@@ -198,6 +201,93 @@ BENCHMARK(BM_StepRestingBoxes)
     ->Args({5000, 0})
     ->Args({5000, 1})
     ->Unit(benchmark::kMicrosecond);
+
+/// A world of 1000 static shapes (boxes and circles, alternating) scattered over 100 m × 100 m,
+/// and 256 random rays of 30 m through it.
+struct RayWorld
+{
+    World world{WorldDef{.gravity = {0, 0}}};
+    std::vector<ShapeId> shapes;
+    std::vector<std::pair<Vec2, Vec2>> rays; ///< origin, translation
+
+    RayWorld()
+    {
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<float> coordinate(-50, 50);
+        std::uniform_real_distribution<float> angle(-3.14159f, 3.14159f);
+        for (int i = 0; i < 1000; ++i)
+        {
+            const BodyId body = world.CreateBody(
+                {.position = {coordinate(rng), coordinate(rng)}, .angle = angle(rng)});
+            shapes.push_back(i % 2 == 0 ? world.CreateShape(body, {}, MakeBox(Real(0.5), Real(0.3)))
+                                        : world.CreateShape(body, {}, Circle{{0, 0}, Real(0.4)}));
+        }
+        for (int i = 0; i < 256; ++i)
+        {
+            const Real a = angle(rng);
+            rays.push_back({{coordinate(rng), coordinate(rng)},
+                            {Real(30) * std::cos(a), Real(30) * std::sin(a)}});
+        }
+    }
+};
+
+/// World::CastRayClosest through the broad phase.
+void BM_CastRayClosest(benchmark::State& state)
+{
+    const RayWorld scene;
+    std::size_t next = 0;
+    int hits = 0;
+    for (auto _ : state)
+    {
+        const auto& [origin, translation] = scene.rays[next++ % scene.rays.size()];
+        hits += scene.world.CastRayClosest(origin, translation).hit ? 1 : 0;
+    }
+    benchmark::DoNotOptimize(hits);
+}
+BENCHMARK(BM_CastRayClosest);
+
+/// The same rays tested against every shape, geometry and transforms copied out beforehand:
+/// what the broad phase saves.
+void BM_CastRayClosestBruteForce(benchmark::State& state)
+{
+    const RayWorld scene;
+    struct Target
+    {
+        Transform xf;
+        bool isBox;
+        Polygon box;
+        Circle circle;
+    };
+    std::vector<Target> targets;
+    for (const ShapeId id : scene.shapes)
+    {
+        const bool isBox = scene.world.GetShapeType(id) == ShapeType::Polygon;
+        targets.push_back({scene.world.GetTransform(scene.world.GetBody(id)), isBox,
+                           isBox ? scene.world.GetPolygon(id) : Polygon{},
+                           isBox ? Circle{} : scene.world.GetCircle(id)});
+    }
+    std::size_t next = 0;
+    int hits = 0;
+    for (auto _ : state)
+    {
+        const auto& [origin, translation] = scene.rays[next++ % scene.rays.size()];
+        const RayCastInput input{origin, origin + translation, 1};
+        Real closest = 2;
+        for (const Target& target : targets)
+        {
+            RayCastOutput output;
+            const bool hit = target.isBox ? RayCast(target.box, target.xf, input, output)
+                                          : RayCast(target.circle, target.xf, input, output);
+            if (hit && output.fraction < closest)
+            {
+                closest = output.fraction;
+            }
+        }
+        hits += closest <= 1 ? 1 : 0;
+    }
+    benchmark::DoNotOptimize(hits);
+}
+BENCHMARK(BM_CastRayClosestBruteForce);
 
 } // namespace
 

@@ -5,6 +5,7 @@
 #include "meff/collision.h"
 #include "meff/debug_draw.h"
 #include "meff/error.h"
+#include "meff/function_ref.h"
 #include "meff/ids.h"
 #include "meff/joint.h"
 #include "meff/math.h"
@@ -156,6 +157,40 @@ struct JointReaction
     Vec2 force{};    ///< N
     Real torque = 0; ///< N·m
 };
+
+/// Which shapes a world query sees, as Box2D v3's b2QueryFilter: a shape is seen when its
+/// Filter::categoryBits share a bit with maskBits and its Filter::maskBits share a bit with
+/// categoryBits. The default sees every shape that can collide with anything (a shape whose
+/// categoryBits or maskBits are 0 is never seen). Group indices are not looked at.
+struct QueryFilter
+{
+    std::uint16_t categoryBits = 0xFFFF; ///< what the query is
+    std::uint16_t maskBits = 0xFFFF;     ///< what it wants to find
+};
+
+/// The closest hit of a ray or shape cast.
+struct RayResult
+{
+    ShapeId shape{};   ///< null when nothing was hit
+    Vec2 point{};      ///< world point on the hit shape's surface (m)
+    Vec2 normal{};     ///< unit normal of that surface at the point
+    Real fraction = 0; ///< of the translation travelled to the hit, in [0, 1]
+    bool hit = false;
+};
+
+/// Called for each shape a ray or shape cast hits, in broad-phase order (not sorted by
+/// distance), with the hit point, surface normal and fraction of the translation. What it
+/// returns steers the cast, as Box2D's b2RayCastCallback::ReportFixture:
+///   −1 (any negative): ignore this shape and go on, the ray unchanged;
+///    0: stop the cast now;
+///    the fraction it was given: clip the ray there, so only closer hits are reported next
+///    (returning fraction for every call finds the closest hit);
+///    1: go on with the whole ray (all hits).
+/// Any positive value clips the ray to that fraction, as Box2D.
+using CastCallback = FunctionRef<Real(ShapeId shape, Vec2 point, Vec2 normal, Real fraction)>;
+
+/// Called for each shape an overlap query finds; return false to stop the query.
+using OverlapCallback = FunctionRef<bool(ShapeId shape)>;
 
 namespace detail
 {
@@ -339,6 +374,56 @@ class World
     /// point), for contacts with a shape that has ShapeDef::enableHitEvents; in solver order.
     std::span<const ContactHitEvent> GetContactHitEvents() const;
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
+
+    // Queries (world_query.cpp). They go through the broad phase, so a query only visits the
+    // part of the tree near what it asks about, not every shape. Do not create, destroy or move
+    // anything, or step, from inside a callback: the broad phase being walked would change
+    // under the query. Queries share the broad phase's scratch stack, so one world must not
+    // be queried from several threads at once. Bad arguments (non-finite numbers, an inverted
+    // box, a degenerate shape) throw InvalidArgument naming the argument.
+
+    /// The closest shape the ray origin → origin + translation hits, as Box2D 2.4.1's
+    /// b2World::RayCast with a callback returning every fraction (the same shape, point,
+    /// normal and fraction, bit for bit; on an exact tie the hit found last in tree order wins,
+    /// as in Box2D). Polygon and segment skins are ignored: hits are on the sharp outline. A
+    /// ray that starts inside a shape does not hit that shape; a zero translation hits nothing.
+    RayResult CastRayClosest(Vec2 origin, Vec2 translation, QueryFilter filter = {}) const;
+    /// Every shape the ray hits, through `callback` (see CastCallback for what it returns).
+    void CastRay(Vec2 origin, Vec2 translation, QueryFilter filter, CastCallback callback) const;
+
+    /// Every shape whose broad-phase box overlaps `box`, as Box2D 2.4.1's b2World::QueryAABB.
+    /// The broad-phase box is the shape's bounding box fattened by Tolerances::aabbMargin (and
+    /// stretched ahead of fast motion), so shapes up to a margin away are found too: a cheap
+    /// candidate list. For the exact answer, test GetShapeAABB(shape) in the callback.
+    void OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback callback) const;
+    /// Every shape containing the point (its boundary included), by each shape's exact test:
+    /// circles and polygons (skin not counted); segments contain nothing.
+    void OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callback) const;
+
+    /// Sweeps `shape`, placed at `start`, along `translation` and reports every shape it hits
+    /// (point and normal on the hit shape's surface, normal pointing out of it; fraction of
+    /// the translation) through `callback`, as CastRay does. Candidates come from the broad
+    /// phase (a ray cast of the swept bounding box), and each is tested by ShapeCast
+    /// (meff/distance.h) with the world's polygonSkin and linearSlop: as Box2D's b2ShapeCast,
+    /// it stops where the two surfaces (each radius at least polygonSkin) overlap by
+    /// polygonSkin — a circle cast onto a polygon stops touching its sharp outline — or up to
+    /// linearSlop/2 before. The cast shape's rotation stays fixed. Shapes the cast shape already
+    /// overlaps at `start` are not reported.
+    void CastShape(const Circle& shape, const Transform& start, Vec2 translation,
+                   QueryFilter filter, CastCallback callback) const;
+    void CastShape(const Polygon& shape, const Transform& start, Vec2 translation,
+                   QueryFilter filter, CastCallback callback) const;
+    /// The closest hit of CastShape.
+    RayResult CastShapeClosest(const Circle& shape, const Transform& start, Vec2 translation,
+                               QueryFilter filter = {}) const;
+    RayResult CastShapeClosest(const Polygon& shape, const Transform& start, Vec2 translation,
+                               QueryFilter filter = {}) const;
+
+    /// The shape's bounding box at its body's current transform, skin included (m).
+    AABB GetShapeAABB(ShapeId id) const;
+    /// The shape's box in the broad phase: the bounding box fattened by the AABB margin and
+    /// the predicted motion, as the broad phase last updated it (m). OverlapAABB tests these.
+    AABB GetShapeFatAABB(ShapeId id) const;
 
     // Determinism and rollback
     /// A 64-bit FNV-1a hash of every live body's transform, centre of mass, velocities, awake

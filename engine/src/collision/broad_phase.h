@@ -8,6 +8,7 @@
 #pragma once
 
 #include "meff/math.h"
+#include "meff/ray_cast.h"
 
 #include <cstdint>
 #include <vector>
@@ -39,6 +40,20 @@ class DynamicTree
     template <typename Callback>
     void Query(const AABB& aabb, Callback&& callback) const;
 
+    /// Calls callback(subInput, proxyId) -> Real for every leaf whose fat box the ray
+    /// input.p1 → input.p2 (up to input.maxFraction) may cross, pruning as Box2D 2.4.1's
+    /// b2DynamicTree::RayCast (the segment's box, then the segment's separating axis). The
+    /// callback's return value: 0 ends the cast; > 0 clips the ray to that fraction (subInput
+    /// carries the current clip); < 0 leaves the clip alone. The ray must have length > 0.
+    template <typename Callback>
+    void RayCast(const RayCastInput& input, Callback&& callback) const;
+
+    /// RayCast for a moving box: the ray is the path of the box's centre and every fat box is
+    /// grown by `halfExtents` (their Minkowski sum), so the leaves reported are those the
+    /// moving box may touch. With zero halfExtents it is RayCast, rounding included.
+    template <typename Callback>
+    void BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&& callback) const;
+
     int GetHeight() const;
     /// Checks parent links, heights and boxes of the whole tree; for tests.
     bool Validate() const;
@@ -67,7 +82,9 @@ class DynamicTree
     std::int32_t m_freeList = kNullProxy;
     std::int32_t m_nodeCount = 0;
     Real m_margin;
-    mutable std::vector<std::int32_t> m_stack; ///< reused by Query: no allocation per step
+    /// Reused by Query, RayCast and BoxCast: no allocation per step or per query. It makes
+    /// queries of one tree unsafe to run from several threads at once.
+    mutable std::vector<std::int32_t> m_stack;
 };
 
 class BroadPhase
@@ -96,6 +113,16 @@ class BroadPhase
     void Query(const AABB& aabb, Callback&& callback) const
     {
         m_tree.Query(aabb, callback);
+    }
+    template <typename Callback>
+    void RayCast(const RayCastInput& input, Callback&& callback) const
+    {
+        m_tree.RayCast(input, callback);
+    }
+    template <typename Callback>
+    void BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&& callback) const
+    {
+        m_tree.BoxCast(input, halfExtents, callback);
     }
 
   private:

@@ -4,6 +4,7 @@
 #include "collision/broad_phase.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace meff::detail
 {
@@ -43,6 +44,93 @@ void DynamicTree::Query(const AABB& aabb, Callback&& callback) const
             if (!callback(nodeId))
             {
                 return;
+            }
+        }
+        else
+        {
+            m_stack.push_back(node.child1);
+            m_stack.push_back(node.child2);
+        }
+    }
+}
+
+template <typename Callback>
+void DynamicTree::RayCast(const RayCastInput& input, Callback&& callback) const
+{
+    BoxCast(input, Vec2(0, 0), callback);
+}
+
+template <typename Callback>
+void DynamicTree::BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&& callback) const
+{
+    const Vec2 p1 = input.p1;
+    const Vec2 p2 = input.p2;
+    Vec2 r = p2 - p1;
+    r.Normalize();
+
+    // v is perpendicular to the ray. The segment p1 → t misses a box of centre c and
+    // half-extents h when |v·(p1 − c)| > |v|·h: its line passes outside the box (van den
+    // Bergen, Collision Detection in Interactive 3D Environments, p. 80). The other axes of
+    // the test are the box of the segment, checked first.
+    const Vec2 v = Cross(Real(1), r);
+    const Vec2 absV = Abs(v);
+
+    Real maxFraction = input.maxFraction;
+    auto segmentBox = [&p1, &p2](Real fraction)
+    {
+        const Vec2 t = p1 + fraction * (p2 - p1);
+        return AABB{Min(p1, t), Max(p1, t)};
+    };
+    AABB segmentAABB = segmentBox(maxFraction);
+
+    // The same explicit stack and visiting order as Query (child2 first); see there.
+    struct StackGuard
+    {
+        std::vector<std::int32_t>& stack;
+        std::size_t base;
+        ~StackGuard() { stack.resize(base); }
+    };
+    const StackGuard guard{m_stack, m_stack.size()};
+
+    m_stack.push_back(m_root);
+    while (m_stack.size() > guard.base)
+    {
+        const std::int32_t nodeId = m_stack.back();
+        m_stack.pop_back();
+        if (nodeId == kNullProxy)
+        {
+            continue;
+        }
+
+        const Node& node = m_nodes[nodeId];
+        // Minkowski sum with the moving box. x − 0 and x + 0 are exactly x (−0 stays −0), so
+        // a ray cast rounds as Box2D's.
+        const AABB box{node.aabb.lowerBound - halfExtents, node.aabb.upperBound + halfExtents};
+        if (!TestOverlap(box, segmentAABB))
+        {
+            continue;
+        }
+
+        const Vec2 c = box.GetCenter();
+        const Vec2 h = box.GetExtents();
+        const Real separation = std::abs(Dot(v, p1 - c)) - Dot(absV, h);
+        if (separation > Real(0))
+        {
+            continue;
+        }
+
+        if (node.IsLeaf())
+        {
+            const RayCastInput subInput{input.p1, input.p2, maxFraction};
+            const Real value = callback(subInput, nodeId);
+            if (value == Real(0))
+            {
+                return; // the caller has what it wants
+            }
+            if (value > Real(0))
+            {
+                maxFraction = value;
+                segmentAABB = segmentBox(maxFraction);
             }
         }
         else

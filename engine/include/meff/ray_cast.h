@@ -1,0 +1,52 @@
+// Queries against one shape: ray casts, as Box2D 2.4.1's b2CircleShape, b2PolygonShape and
+// (two-sided) b2EdgeShape::RayCast, and point containment, as their TestPoint, in the same
+// floating-point order so that fractions and normals agree with Box2D bit for bit in float
+// builds.
+//
+// The ray is the segment p1 → p2; a point on it is p1 + t·(p2 − p1) and t is the "fraction".
+// A ray that starts inside a shape does not hit it. These functions do not check their
+// arguments (they are the inner loop of the world's queries); World::CastRay does.
+#pragma once
+
+#include "meff/collision.h"
+#include "meff/math.h"
+
+namespace meff
+{
+
+struct RayCastInput
+{
+    Vec2 p1{};            ///< start of the ray, world coordinates (m)
+    Vec2 p2{};            ///< end of the ray at fraction 1 (m)
+    Real maxFraction = 1; ///< hits beyond p1 + maxFraction·(p2 − p1) are not reported
+};
+
+struct RayCastOutput
+{
+    Vec2 normal{};     ///< unit surface normal at the hit, world coordinates
+    Real fraction = 0; ///< the hit is at p1 + fraction·(p2 − p1), in [0, maxFraction]
+};
+
+/// The ray against the solid circle at `xf`. False when it misses, starts inside, is shorter
+/// than epsilon, or hits beyond maxFraction.
+bool RayCast(const Circle& circle, const Transform& xf, const RayCastInput& input,
+             RayCastOutput& output);
+/// The ray against the polygon's outline at `xf`. The polygon's radius (skin) is ignored, as
+/// Box2D 2.4.1 ignores it: the hit is on the sharp outline, up to polygonSkin (0.01 m) inside
+/// the surface the solver keeps other shapes at.
+bool RayCast(const Polygon& polygon, const Transform& xf, const RayCastInput& input,
+             RayCastOutput& output);
+/// The ray against the two-sided segment at `xf`; the normal faces the side the ray comes from.
+/// The segment's radius (skin) is ignored, as Box2D 2.4.1 ignores it. A ray parallel to the
+/// segment never hits it.
+bool RayCast(const Segment& segment, const Transform& xf, const RayCastInput& input,
+             RayCastOutput& output);
+
+/// Is the world point inside or on the circle at `xf`?
+bool TestPoint(const Circle& circle, const Transform& xf, Vec2 point);
+/// Is the world point inside or on the polygon's outline at `xf`? The skin is not counted.
+bool TestPoint(const Polygon& polygon, const Transform& xf, Vec2 point);
+/// Always false: a segment has no inside (as Box2D's b2EdgeShape::TestPoint).
+bool TestPoint(const Segment& segment, const Transform& xf, Vec2 point);
+
+} // namespace meff

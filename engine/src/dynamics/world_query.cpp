@@ -1,0 +1,315 @@
+// World queries through the broad phase: ray casts, box and point overlaps, shape casts.
+//
+// Ray casts reproduce Box2D 2.4.1's b2World::RayCast (b2DynamicTree::RayCast, the fixture's
+// RayCast, the hit point (1 − f)·p1 + f·p2, the callback's clipping), so that the same world
+// gives the same hits in the same order. Box overlaps are b2World::QueryAABB. Point overlaps
+// and shape casts, which Box2D 2.4.1 lacks, follow Box2D v3's b2World_OverlapPoint and
+// b2World_CastShape: the broad phase finds candidates, an exact test per shape decides.
+//
+// Every query only reads the world.
+#include "collision/broad_phase.h"
+#include "collision/distance.h"
+#include "dynamics/world_state.h"
+#include "meff/distance.h"
+#include "meff/ray_cast.h"
+#include "meff/world.h"
+
+#include <string>
+
+namespace meff
+{
+
+using namespace detail;
+
+namespace
+{
+
+std::string Describe(Vec2 v)
+{
+    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")";
+}
+
+void RequireFinite(Vec2 value, const char* where)
+{
+    if (!value.IsValid())
+    {
+        throw InvalidArgument(std::string(where) + ": must be finite, got " + Describe(value));
+    }
+}
+
+void RequireValidTransform(const Transform& xf, const char* where)
+{
+    if (!xf.p.IsValid() || !meff::IsValid(xf.q.s) || !meff::IsValid(xf.q.c))
+    {
+        throw InvalidArgument(std::string(where) + ": must be finite, got p = " + Describe(xf.p) +
+                              ", q = (s " + std::to_string(xf.q.s) + ", c " +
+                              std::to_string(xf.q.c) + ")");
+    }
+}
+
+const Shape& ResolveShape(const WorldState& world, ShapeId id, const char* where)
+{
+    const auto& pool = world.shapes;
+    if (id.index < 0 || static_cast<std::size_t>(id.index) >= pool.size() || id.IsNull() ||
+        !pool[id.index].alive || pool[id.index].generation != id.generation)
+    {
+        throw InvalidArgument(std::string(where) + ": invalid shape id (index " +
+                              std::to_string(id.index) + ", generation " +
+                              std::to_string(id.generation) + "): null, or already destroyed");
+    }
+    return pool[id.index];
+}
+
+/// Box2D v3's b2ShouldQueryShape: each side's category must be in the other's mask.
+bool IsSeen(const Shape& shape, QueryFilter filter)
+{
+    return (shape.def.filter.categoryBits & filter.maskBits) != 0 &&
+           (shape.def.filter.maskBits & filter.categoryBits) != 0;
+}
+
+ShapeId IdOf(const WorldState& world, std::int32_t index)
+{
+    return {index, world.shapes[index].generation};
+}
+
+bool RayCastShape(const Shape& shape, const Transform& xf, const RayCastInput& input,
+                  RayCastOutput& output)
+{
+    switch (shape.type)
+    {
+    case ShapeType::Circle:
+        return RayCast(shape.circle, xf, input, output);
+    case ShapeType::Polygon:
+        return RayCast(shape.polygon, xf, input, output);
+    case ShapeType::Segment:
+        return RayCast(shape.segment, xf, input, output);
+    }
+    return false;
+}
+
+bool TestPointShape(const Shape& shape, const Transform& xf, Vec2 point)
+{
+    switch (shape.type)
+    {
+    case ShapeType::Circle:
+        return TestPoint(shape.circle, xf, point);
+    case ShapeType::Polygon:
+        return TestPoint(shape.polygon, xf, point);
+    case ShapeType::Segment:
+        return TestPoint(shape.segment, xf, point);
+    }
+    return false;
+}
+
+/// The closest-hit callback: clipping the ray at every hit leaves only closer ones to report.
+struct ClosestHit
+{
+    RayResult result;
+    Real operator()(ShapeId shape, Vec2 point, Vec2 normal, Real fraction)
+    {
+        result = {shape, point, normal, fraction, true};
+        return fraction;
+    }
+};
+
+void RequireValidCastShape(const Circle& circle)
+{
+    RequireFinite(circle.center, "World::CastShape: shape.center");
+    if (!meff::IsValid(circle.radius) || circle.radius <= 0)
+    {
+        throw InvalidArgument("World::CastShape: shape.radius: must be finite and > 0, got " +
+                              std::to_string(circle.radius));
+    }
+}
+
+void RequireValidCastShape(const Polygon& polygon)
+{
+    if (polygon.count < 3 || polygon.count > kMaxPolygonVertices)
+    {
+        throw InvalidArgument("World::CastShape: shape.count: must be in [3, 8] (build "
+                              "polygons with MakePolygon or MakeBox), got " +
+                              std::to_string(polygon.count));
+    }
+    for (int i = 0; i < polygon.count; ++i)
+    {
+        RequireFinite(polygon.vertices[i], "World::CastShape: shape.vertices");
+    }
+    if (!meff::IsValid(polygon.radius) || polygon.radius < 0)
+    {
+        throw InvalidArgument("World::CastShape: shape.radius: must be finite and >= 0, got " +
+                              std::to_string(polygon.radius));
+    }
+}
+
+/// The shape cast behind both CastShape overloads: `proxy` at `start` swept by `translation`.
+void CastProxy(const WorldState& world, const DistanceProxy& proxy, const AABB& startBox,
+               const Transform& start, Vec2 translation, QueryFilter filter, CastCallback callback)
+{
+    const Tolerances& tolerances = world.tolerances;
+
+    // The broad phase is searched with the path of the start box's centre, every fat box grown
+    // by the start box's half-extents. ShapeCast gives each shape a radius of at least
+    // polygonSkin and stops when the cores are within radiusA + radiusB − polygonSkin plus
+    // its tolerance of linearSlop/2, so the start box (which holds the cast shape's own
+    // radius) is grown by polygonSkin + linearSlop more to never miss a shape ShapeCast hits.
+    const Real grow = tolerances.polygonSkin + tolerances.linearSlop;
+    const Vec2 halfExtents = startBox.GetExtents() + Vec2(grow, grow);
+    const Vec2 center = startBox.GetCenter();
+    const RayCastInput path{center, center + translation, 1};
+
+    world.broadPhase.BoxCast(
+        path, halfExtents,
+        [&](const RayCastInput& subInput, std::int32_t proxyId) -> Real
+        {
+            const std::int32_t index = world.broadPhase.GetUserData(proxyId);
+            const Shape& shape = world.shapes[index];
+            if (!IsSeen(shape, filter))
+            {
+                return Real(-1);
+            }
+            ShapeCastInput input;
+            input.proxyA = MakeProxy(shape);
+            input.proxyB = proxy;
+            input.transformA = world.bodies[shape.body].xf;
+            input.transformB = start;
+            input.translationB = translation;
+            input.polygonSkin = tolerances.polygonSkin;
+            input.linearSlop = tolerances.linearSlop;
+            ShapeCastOutput output;
+            // Beyond the current clip counts as a miss, as for ray casts.
+            if (!ShapeCast(input, output) || output.lambda > subInput.maxFraction)
+            {
+                return subInput.maxFraction;
+            }
+            return callback(IdOf(world, index), output.point, output.normal, output.lambda);
+        });
+}
+
+} // namespace
+
+void World::CastRay(Vec2 origin, Vec2 translation, QueryFilter filter, CastCallback callback) const
+{
+    RequireFinite(origin, "World::CastRay: origin");
+    RequireFinite(translation, "World::CastRay: translation");
+    RequireFinite(origin + translation, "World::CastRay: origin + translation");
+    const WorldState& world = *m_state;
+
+    const RayCastInput input{origin, origin + translation, 1};
+    world.broadPhase.RayCast(
+        input,
+        [&](const RayCastInput& subInput, std::int32_t proxyId) -> Real
+        {
+            const std::int32_t index = world.broadPhase.GetUserData(proxyId);
+            const Shape& shape = world.shapes[index];
+            if (!IsSeen(shape, filter))
+            {
+                return Real(-1);
+            }
+            RayCastOutput output;
+            if (!RayCastShape(shape, world.bodies[shape.body].xf, subInput, output))
+            {
+                // A miss leaves the ray as it is (Box2D returns the current maxFraction).
+                return subInput.maxFraction;
+            }
+            const Real fraction = output.fraction;
+            const Vec2 point = (Real(1) - fraction) * subInput.p1 + fraction * subInput.p2;
+            return callback(IdOf(world, index), point, output.normal, fraction);
+        });
+}
+
+RayResult World::CastRayClosest(Vec2 origin, Vec2 translation, QueryFilter filter) const
+{
+    ClosestHit closest;
+    CastRay(origin, translation, filter, closest);
+    return closest.result;
+}
+
+void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback callback) const
+{
+    if (!box.IsValid())
+    {
+        throw InvalidArgument("World::OverlapAABB: box: must be finite with lowerBound <= "
+                              "upperBound, got " +
+                              Describe(box.lowerBound) + " to " + Describe(box.upperBound));
+    }
+    const WorldState& world = *m_state;
+    world.broadPhase.Query(box,
+                           [&](std::int32_t proxyId)
+                           {
+                               const std::int32_t index = world.broadPhase.GetUserData(proxyId);
+                               if (!IsSeen(world.shapes[index], filter))
+                               {
+                                   return true;
+                               }
+                               return callback(IdOf(world, index));
+                           });
+}
+
+void World::OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callback) const
+{
+    RequireFinite(point, "World::OverlapPoint: point");
+    const WorldState& world = *m_state;
+    // A shape containing the point has it inside its tight box, so inside its fat box.
+    world.broadPhase.Query(AABB{point, point},
+                           [&](std::int32_t proxyId)
+                           {
+                               const std::int32_t index = world.broadPhase.GetUserData(proxyId);
+                               const Shape& shape = world.shapes[index];
+                               if (!IsSeen(shape, filter) ||
+                                   !TestPointShape(shape, world.bodies[shape.body].xf, point))
+                               {
+                                   return true;
+                               }
+                               return callback(IdOf(world, index));
+                           });
+}
+
+void World::CastShape(const Circle& shape, const Transform& start, Vec2 translation,
+                      QueryFilter filter, CastCallback callback) const
+{
+    RequireValidCastShape(shape);
+    RequireValidTransform(start, "World::CastShape: start");
+    RequireFinite(translation, "World::CastShape: translation");
+    CastProxy(*m_state, MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
+              callback);
+}
+
+void World::CastShape(const Polygon& shape, const Transform& start, Vec2 translation,
+                      QueryFilter filter, CastCallback callback) const
+{
+    RequireValidCastShape(shape);
+    RequireValidTransform(start, "World::CastShape: start");
+    RequireFinite(translation, "World::CastShape: translation");
+    CastProxy(*m_state, MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
+              callback);
+}
+
+RayResult World::CastShapeClosest(const Circle& shape, const Transform& start, Vec2 translation,
+                                  QueryFilter filter) const
+{
+    ClosestHit closest;
+    CastShape(shape, start, translation, filter, closest);
+    return closest.result;
+}
+
+RayResult World::CastShapeClosest(const Polygon& shape, const Transform& start, Vec2 translation,
+                                  QueryFilter filter) const
+{
+    ClosestHit closest;
+    CastShape(shape, start, translation, filter, closest);
+    return closest.result;
+}
+
+AABB World::GetShapeAABB(ShapeId id) const
+{
+    const Shape& shape = ResolveShape(*m_state, id, "World::GetShapeAABB");
+    return shape.ComputeAABB(m_state->bodies[shape.body].xf);
+}
+
+AABB World::GetShapeFatAABB(ShapeId id) const
+{
+    const Shape& shape = ResolveShape(*m_state, id, "World::GetShapeFatAABB");
+    return m_state->broadPhase.GetFatAABB(shape.proxyId);
+}
+
+} // namespace meff
