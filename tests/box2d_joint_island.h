@@ -189,6 +189,52 @@ struct Diff
     }
 };
 
+/// The StepContext b2World::Step hands to every island for one step of length dt, with the
+/// iteration counts given to b2World::Step. invDt0 is b2World's m_inv_dt0 (0 before the first
+/// step): it scales the warm-start impulses by dtRatio and is advanced to this step's 1/dt.
+inline StepContext Box2DStepContext(float dt, float& invDt0, int velocityIterations,
+                                    int positionIterations, bool warmStarting,
+                                    const Tolerances& tol)
+{
+    StepContext step;
+    step.dt = dt;
+    step.invDt = 1.0f / dt;
+    step.dtRatio = invDt0 * dt;
+    step.solver.velocityIterations = velocityIterations;
+    step.solver.positionIterations = positionIterations;
+    step.solver.warmStarting = warmStarting;
+    step.solver.blockJoints = true; // Box2D's only mode
+    step.tolerances = tol;
+    invDt0 = step.invDt;
+    return step;
+}
+
+/// Solves each mirrored island for one step (after Box2D's world has taken the same step) and
+/// accumulates how far every body's position, angle and velocity, and every joint's reaction
+/// force and torque, are from Box2D's.
+inline void SolveIslandsAndCompare(const std::vector<Island*>& islands, const StepContext& step,
+                                   Vec2 gravity, Diff& position, Diff& velocity, Diff& reaction)
+{
+    for (Island* island : islands)
+    {
+        SolveIsland(*island, step, gravity);
+        for (std::size_t b = 0; b < island->bodies.size(); ++b)
+        {
+            const b2Body* body = island->b2Bodies[b];
+            position.Add(island->positions[b].c, body->GetWorldCenter());
+            position.Add(island->positions[b].a, body->GetAngle());
+            velocity.Add(island->velocities[b].v, body->GetLinearVelocity());
+            velocity.Add(island->velocities[b].w, body->GetAngularVelocity());
+        }
+        for (std::size_t j = 0; j < island->joints.size(); ++j)
+        {
+            const JointReaction r = GetJointReaction(island->joints[j], step.invDt);
+            reaction.Add(r.force, island->b2Joints[j]->GetReactionForce(step.invDt));
+            reaction.Add(r.torque, island->b2Joints[j]->GetReactionTorque(step.invDt));
+        }
+    }
+}
+
 } // namespace meff::test
 
 #endif // MEFF_DOUBLE

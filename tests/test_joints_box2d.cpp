@@ -160,34 +160,8 @@ TEST_CASE("Joints agree with Box2D 2.4.1 step for step", "[joints][box2d]")
         const float dt = (i % 5 == 4) ? 1.0f / 30.0f : 1.0f / 60.0f;
         world.Step(dt, 8, 3);
 
-        StepContext step;
-        step.dt = dt;
-        step.invDt = 1.0f / dt;
-        step.dtRatio = invDt0 * dt;
-        step.solver.velocityIterations = 8;
-        step.solver.positionIterations = 3;
-        step.solver.warmStarting = warmStarting;
-        step.solver.blockJoints = true; // Box2D's only mode
-        step.tolerances = tol;
-        invDt0 = step.invDt;
-        for (Island* island : islands)
-        {
-            SolveIsland(*island, step, ToMeff(gravity));
-            for (std::size_t b = 0; b < island->bodies.size(); ++b)
-            {
-                const b2Body* body = island->b2Bodies[b];
-                position.Add(island->positions[b].c, body->GetWorldCenter());
-                position.Add(island->positions[b].a, body->GetAngle());
-                velocity.Add(island->velocities[b].v, body->GetLinearVelocity());
-                velocity.Add(island->velocities[b].w, body->GetAngularVelocity());
-            }
-            for (std::size_t j = 0; j < island->joints.size(); ++j)
-            {
-                const JointReaction r = GetJointReaction(island->joints[j], step.invDt);
-                reaction.Add(r.force, island->b2Joints[j]->GetReactionForce(step.invDt));
-                reaction.Add(r.torque, island->b2Joints[j]->GetReactionTorque(step.invDt));
-            }
-        }
+        const StepContext step = Box2DStepContext(dt, invDt0, 8, 3, warmStarting, tol);
+        SolveIslandsAndCompare(islands, step, ToMeff(gravity), position, velocity, reaction);
         const RevoluteJoint& p = std::get<RevoluteJoint>(pendulum.joints[0].data);
         lowerHit = lowerHit || p.lowerImpulse > 0;
         upperHit = upperHit || p.upperImpulse > 0;
