@@ -25,6 +25,29 @@ struct LineRowMasses
     Real mA = 0, mB = 0, iA = 0, iB = 0;
 };
 
+/// The inverse masses a joint stored for this step (every joint type has these members).
+template <typename JointData>
+LineRowMasses Masses(const JointData& joint)
+{
+    return {joint.invMassA, joint.invMassB, joint.invIA, joint.invIB};
+}
+
+/// A line row along n: its Jacobian's angular terms and its seed k (not yet inverted).
+struct LineRow
+{
+    Real sA = 0, sB = 0; ///< (d + rA) × n and rB × n
+    Real k = 0;          ///< 1/mA + 1/mB + sA²/IA + sB²/IB
+};
+
+inline LineRow MakeLineRow(Vec2 n, Vec2 d, Vec2 rA, Vec2 rB, const LineRowMasses& m)
+{
+    LineRow row;
+    row.sA = Cross(d + rA, n);
+    row.sB = Cross(rB, n);
+    row.k = m.mA + m.mB + m.iA * row.sA * row.sA + m.iB * row.sB * row.sB;
+    return row;
+}
+
 /// Applies a line row's impulse λ: λ·n on B and −λ·n on A, with the angular parts λ·sB and
 /// −λ·sA. A negative λ flips every term exactly (IEEE negation is exact).
 inline void ApplyLineRowImpulse(Real impulse, Vec2 n, Real sA, Real sB, const LineRowMasses& m,

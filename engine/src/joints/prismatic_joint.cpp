@@ -27,11 +27,6 @@ Real ScalarRowImpulse(Real jvPlusBias, Real k)
     return k > 0 ? -jvPlusBias / k : Real(0);
 }
 
-LineRowMasses Masses(const PrismaticJoint& joint)
-{
-    return {joint.invMassA, joint.invMassB, joint.invIA, joint.invIB};
-}
-
 /// Applies the (perpendicular, angular, axial) impulse triple: force λx·p + λz·a on B, and the
 /// angular parts λx·s + λy + λz·a on each body's turn (negated on A).
 void ApplyPrismaticImpulse(Vec3 impulse, Vec2 perp, Vec2 axis, Real s1, Real s2, Real a1, Real a2,
@@ -71,10 +66,12 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
     const Real iA = joint.invIA, iB = joint.invIB;
 
     // Axial rows (motor and limits): seed k = mA + mB + iA·a1² + iB·a2².
+    const LineRowMasses masses = Masses(joint);
     joint.axis = Mul(qA, joint.localXAxisA);
-    joint.a1 = Cross(d + rA, joint.axis);
-    joint.a2 = Cross(rB, joint.axis);
-    joint.axialMass = mA + mB + iA * joint.a1 * joint.a1 + iB * joint.a2 * joint.a2;
+    const LineRow axial = MakeLineRow(joint.axis, d, rA, rB, masses);
+    joint.a1 = axial.sA;
+    joint.a2 = axial.sB;
+    joint.axialMass = axial.k;
     if (joint.axialMass > 0)
     {
         joint.axialMass = Real(1) / joint.axialMass;
@@ -84,9 +81,10 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
     // k22 = 1/IA + 1/IB the angular row's; when neither body can turn, k22 = 1 keeps K
     // invertible (the angular row then moves nothing).
     joint.perp = Mul(qA, joint.localYAxisA);
-    joint.s1 = Cross(d + rA, joint.perp);
-    joint.s2 = Cross(rB, joint.perp);
-    const Real k11 = mA + mB + iA * joint.s1 * joint.s1 + iB * joint.s2 * joint.s2;
+    const LineRow perpendicular = MakeLineRow(joint.perp, d, rA, rB, masses);
+    joint.s1 = perpendicular.sA;
+    joint.s2 = perpendicular.sB;
+    const Real k11 = perpendicular.k;
     const Real k12 = iA * joint.s1 + iB * joint.s2;
     Real k22 = iA + iB;
     if (k22 == 0)

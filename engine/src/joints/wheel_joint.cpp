@@ -21,23 +21,10 @@
 namespace meff::detail
 {
 
-namespace
-{
-
-LineRowMasses Masses(const WheelJoint& joint)
-{
-    return {joint.invMassA, joint.invMassB, joint.invIA, joint.invIB};
-}
-
-} // namespace
-
 void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointBody& b,
                              SolverData& data)
 {
     StoreJointBodies(joint, a, b);
-
-    const Real mA = joint.invMassA, mB = joint.invMassB;
-    const Real iA = joint.invIA, iB = joint.invIB;
 
     const Vec2 cA = data.positions[joint.indexA].c;
     const Real aA = data.positions[joint.indexA].a;
@@ -54,10 +41,12 @@ void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointB
     const Vec2 d = cB + rB - cA - rA;
 
     // Point-to-line row: seed k along ay; mass = 1/k.
+    const LineRowMasses masses = Masses(joint);
     joint.ay = Mul(qA, joint.localYAxisA);
-    joint.sAy = Cross(d + rA, joint.ay);
-    joint.sBy = Cross(rB, joint.ay);
-    joint.mass = mA + mB + iA * joint.sAy * joint.sAy + iB * joint.sBy * joint.sBy;
+    const LineRow perpendicular = MakeLineRow(joint.ay, d, rA, rB, masses);
+    joint.sAy = perpendicular.sA;
+    joint.sBy = perpendicular.sB;
+    joint.mass = perpendicular.k;
     if (joint.mass > 0)
     {
         joint.mass = Real(1) / joint.mass;
@@ -65,15 +54,15 @@ void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointB
 
     // Axial rows (spring, limits): seed k along ax.
     joint.ax = Mul(qA, joint.localXAxisA);
-    joint.sAx = Cross(d + rA, joint.ax);
-    joint.sBx = Cross(rB, joint.ax);
-    const Real invMass = mA + mB + iA * joint.sAx * joint.sAx + iB * joint.sBx * joint.sBx;
-    joint.axialMass = invMass > 0 ? Real(1) / invMass : Real(0);
+    const LineRow axial = MakeLineRow(joint.ax, d, rA, rB, masses);
+    joint.sAx = axial.sA;
+    joint.sBx = axial.sB;
+    joint.axialMass = axial.k > 0 ? Real(1) / axial.k : Real(0);
 
     joint.springMass = 0;
     joint.bias = 0;
     joint.gamma = 0;
-    if (joint.stiffness > 0 && invMass > 0)
+    if (joint.stiffness > 0 && axial.k > 0)
     {
         // Soft row (Catto's soft constraints), as the distance joint's spring: implicit Euler
         // on m·Δv = −h·(k_s·C + c·v) gives λ = −(Cdot + bias + γ·λacc)/(k + γ) with
@@ -86,7 +75,7 @@ void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointB
             joint.gamma = Real(1) / joint.gamma;
         }
         joint.bias = C * h * joint.stiffness * joint.gamma;
-        joint.springMass = invMass + joint.gamma;
+        joint.springMass = axial.k + joint.gamma;
         if (joint.springMass > 0)
         {
             joint.springMass = Real(1) / joint.springMass;
@@ -111,7 +100,7 @@ void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointB
     // Motor row: k = 1/IA + 1/IB (Jacobian [0 0 −1 0 0 1]).
     if (joint.enableMotor)
     {
-        joint.motorMass = iA + iB;
+        joint.motorMass = masses.iA + masses.iB;
         if (joint.motorMass > 0)
         {
             joint.motorMass = Real(1) / joint.motorMass;
@@ -261,13 +250,7 @@ bool SolvePositionConstraints(WheelJoint& joint, SolverData& data)
             {
                 impulse = -C / invMass;
             }
-            const Vec2 P = impulse * ax;
-            const Real LA = impulse * sAx;
-            const Real LB = impulse * sBx;
-            cA -= joint.invMassA * P;
-            aA -= joint.invIA * LA;
-            cB += joint.invMassB * P;
-            aB += joint.invIB * LB;
+            ApplyLineRowImpulse(impulse, ax, sAx, sBx, Masses(joint), cA, aA, cB, aB);
             linearError = std::abs(C);
         }
     }
@@ -291,13 +274,7 @@ bool SolvePositionConstraints(WheelJoint& joint, SolverData& data)
         {
             impulse = -C / invMass;
         }
-        const Vec2 P = impulse * ay;
-        const Real LA = impulse * sAy;
-        const Real LB = impulse * sBy;
-        cA -= joint.invMassA * P;
-        aA -= joint.invIA * LA;
-        cB += joint.invMassB * P;
-        aB += joint.invIB * LB;
+        ApplyLineRowImpulse(impulse, ay, sAy, sBy, Masses(joint), cA, aA, cB, aB);
         linearError = Max(linearError, std::abs(C));
     }
 
