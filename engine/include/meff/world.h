@@ -223,7 +223,8 @@ class World
     // Bodies
     BodyId CreateBody(const BodyDef& def);
     /// Also destroys its shapes, joints and contacts, and wakes the bodies it touched or was
-    /// jointed to (Box2D 2.4.1 wakes only the jointed ones).
+    /// jointed to (as Box2D 2.4.1, whose contact destruction wakes both bodies of a touching
+    /// contact).
     void DestroyBody(BodyId id);
     bool IsValid(BodyId id) const;
     BodyType GetType(BodyId id) const;
@@ -267,7 +268,7 @@ class World
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Segment& segment);
-    /// Wakes the bodies of the contacts it was touching in (Box2D 2.4.1 does not).
+    /// Wakes the bodies of the contacts it was touching in (as Box2D 2.4.1 does).
     void DestroyShape(ShapeId id);
     bool IsValid(ShapeId id) const;
     BodyId GetBody(ShapeId id) const;

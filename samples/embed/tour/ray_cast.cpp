@@ -61,7 +61,8 @@ RayCastResult RunRayCast(std::FILE* log)
                       return Real(1);
                   });
 
-    // A sweep of 32 rays from the room's centre: in a closed room every ray hits something.
+    // A sweep of 32 rays from a point in the room's left half: in a closed room every ray hits
+    // something.
     result.sweepRays = 32;
     const Vec2 centre{-5, 5};
     for (int i = 0; i < result.sweepRays; ++i)

@@ -44,7 +44,7 @@ struct Match
     }
 };
 
-/// The inputs of frames [first, first + count): the player pushes on most frames.
+/// The input of one frame: the player pushes on most frames.
 Real InputFor(int frame)
 {
     return frame % 7 == 3 ? Real(0) : Real(20);
