@@ -10,6 +10,7 @@
 
 #include "test_random.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -424,6 +425,7 @@ TEST_CASE("Queries may be nested: a callback may query the world again", "[queri
     const QueryWorld q(10);
     Random rng(1010);
     int inner = 0;
+    int backHits = 0, backSameShape = 0;
     for (int ray = 0; ray < 100; ++ray)
     {
         const auto [origin, translation] = RandomRay(rng);
@@ -438,9 +440,26 @@ TEST_CASE("Queries may be nested: a callback may query the world again", "[queri
             [&](ShapeId shape, Vec2 point, Vec2 normal, Real)
             {
                 reported.insert(Key(shape));
-                // A short ray back into the surface hits the same shape first.
-                const RayResult back =
-                    q.world().CastRayClosest(point + Real(0.05) * normal, Real(-0.1) * normal);
+                // A short ray back into the surface, cast while the outer cast is under way,
+                // still finds the brute-force closest hit: usually the same shape, unless
+                // another shape overlaps it there or the ray starts inside one.
+                const Vec2 backOrigin = point + Real(0.05) * normal;
+                const Vec2 backTranslation = Real(-0.1) * normal;
+                const RayResult back = q.world().CastRayClosest(backOrigin, backTranslation);
+                const std::vector<BruteHit> brute =
+                    BruteForceRay(q, backOrigin, backTranslation, {});
+                REQUIRE(back.hit == !brute.empty());
+                if (back.hit)
+                {
+                    Real closest = 1;
+                    for (const BruteHit& hit : brute)
+                    {
+                        closest = std::min(closest, hit.fraction);
+                    }
+                    REQUIRE(back.fraction == closest);
+                    ++backHits;
+                    backSameShape += back.shape == shape ? 1 : 0;
+                }
                 inner += back.hit ? 1 : 0;
                 q.world().OverlapAABB({point, point}, {}, [&](ShapeId) { return ++inner < 0; });
                 return Real(1);
@@ -448,6 +467,9 @@ TEST_CASE("Queries may be nested: a callback may query the world again", "[queri
         REQUIRE(reported == expected);
     }
     CHECK(inner > 100);
+    // The back ray crosses the surface it came from half way along, so it nearly always hits
+    // that very shape first (measured: 288 of 289 hits; the other meets another shape first).
+    CHECK(backSameShape > backHits * 9 / 10);
 }
 
 TEST_CASE("OverlapAABB reports the brute-force set of fat-box overlaps", "[queries]")
