@@ -316,8 +316,14 @@ Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
     }
     for (const SceneJoint& joint : scene.joints)
     {
-        m_joints.push_back(CreateJoint(*m_world, joint, m_bodies.at(joint.bodyIndexA),
-                                       m_bodies.at(joint.bodyIndexB)));
+        b2Body* bodyA = m_bodies.at(joint.bodyIndexA);
+        b2Body* bodyB = m_bodies.at(joint.bodyIndexB);
+        m_joints.push_back(CreateJoint(*m_world, joint, bodyA, bodyB));
+        // meff wakes a joint's bodies when it is created (a joint change wakes, a documented
+        // departure from 2.4.1, whose CreateJoint does not): do the same, so that a scene with
+        // a body starting asleep on a joint compares like with like.
+        bodyA->SetAwake(true);
+        bodyB->SetAwake(true);
     }
 }
 

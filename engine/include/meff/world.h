@@ -171,10 +171,12 @@ struct QueryFilter
 /// The closest hit of a ray or shape cast.
 struct RayResult
 {
-    ShapeId shape{};   ///< null when nothing was hit
-    Vec2 point{};      ///< world point on the hit shape's surface (m)
-    Vec2 normal{};     ///< unit normal of that surface at the point
-    Real fraction = 0; ///< of the translation travelled to the hit, in [0, 1]
+    ShapeId shape{}; ///< null when nothing was hit
+    Vec2 point{};    ///< world point on the hit shape's surface (m)
+    Vec2 normal{};   ///< unit normal of that surface at the point
+    /// Of the translation travelled to the hit, in [0, 1] (a CastRay callback that returns
+    /// more than 1 lengthens the ray, as in Box2D, and can report fractions beyond 1).
+    Real fraction = 0;
     bool hit = false;
 };
 
@@ -365,6 +367,10 @@ class World
     /// more than once in one step.
     std::span<const ContactPointReport> GetContactReports() const;
     std::span<const ContactEvent> GetContactBeginEvents() const;
+    /// Contacts that stopped touching in the last step. Destroying a touching shape or body
+    /// between steps adds its end events at once, and they stay, first in the list, through
+    /// the next step: a game reading events once per step sees them. Their ids may be
+    /// invalid by then (compare them, do not look them up). Sensor end events do the same.
     std::span<const ContactEvent> GetContactEndEvents() const;
     /// Shapes that started / stopped overlapping a sensor, in the order Box2D 2.4.1 calls
     /// BeginContact/EndContact for sensor fixtures. Sensor contacts never appear among the
@@ -381,7 +387,8 @@ class World
     // anything, or step, from inside a callback: the broad phase being walked would change
     // under the query. Queries share the broad phase's scratch stack, so one world must not
     // be queried from several threads at once. Bad arguments (non-finite numbers, an inverted
-    // box, a degenerate shape) throw InvalidArgument naming the argument.
+    // box, a degenerate shape) throw InvalidArgument naming the argument. Sensor shapes are
+    // found like any other (as Box2D 2.4.1): filter them with QueryFilter or the callback.
 
     /// The closest shape the ray origin → origin + translation hits, as Box2D 2.4.1's
     /// b2World::RayCast with a callback returning every fraction (the same shape, point,

@@ -103,8 +103,9 @@ void DynamicTree::BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&
         }
 
         const Node& node = m_nodes[nodeId];
-        // Minkowski sum with the moving box. x − 0 and x + 0 are exactly x (−0 stays −0), so
-        // a ray cast rounds as Box2D's.
+        // Minkowski sum with the moving box. With zero extents x − 0 and x + 0 equal x (only a
+        // −0 upper bound turns +0, which no overlap test can tell), so a ray cast rounds as
+        // Box2D's.
         const AABB box{node.aabb.lowerBound - halfExtents, node.aabb.upperBound + halfExtents};
         if (!TestOverlap(box, segmentAABB))
         {

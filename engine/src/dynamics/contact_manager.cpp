@@ -201,7 +201,9 @@ void WakeTouchingBodies(WorldState& world, std::int32_t bodyIndex, std::int32_t 
         key = contact.edges[EdgeSide(key)].next;
         const bool ofShape =
             shapeIndex < 0 || contact.shapeA == shapeIndex || contact.shapeB == shapeIndex;
-        if (ofShape && contact.IsTouching())
+        // As b2Contact's destruction: a contact with manifold points wakes its bodies; a
+        // sensor's overlap (no points) wakes nobody.
+        if (ofShape && contact.IsTouching() && !contact.IsSensor())
         {
             WakeBody(world, contact.bodyA);
             WakeBody(world, contact.bodyB);

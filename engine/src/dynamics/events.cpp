@@ -5,6 +5,8 @@
 
 #include "dynamics/world_state.h"
 
+#include <cstddef>
+
 namespace meff::detail
 {
 
@@ -36,10 +38,19 @@ void ClearEvents(WorldState& world)
 {
     world.contactReports.clear();
     world.beginEvents.clear();
-    world.endEvents.clear();
     world.sensorBeginEvents.clear();
-    world.sensorEndEvents.clear();
     world.hitEvents.clear();
+    world.endEvents.erase(world.endEvents.begin(),
+                          world.endEvents.begin() + std::ptrdiff_t(world.stepEndEventCount));
+    world.sensorEndEvents.erase(world.sensorEndEvents.begin(),
+                                world.sensorEndEvents.begin() +
+                                    std::ptrdiff_t(world.stepSensorEndEventCount));
+}
+
+void MarkStepEvents(WorldState& world)
+{
+    world.stepEndEventCount = world.endEvents.size();
+    world.stepSensorEndEventCount = world.sensorEndEvents.size();
 }
 
 void RecordTouchBegan(WorldState& world, const Contact& contact)
@@ -104,8 +115,10 @@ void ReportHitEvents(WorldState& world, const StepContext& step)
         {
             continue;
         }
-        // The fastest approaching point; a point that took no impulse did not collide (it was
-        // already separating when the solver reached it), as Box2D v3 requires.
+        // The fastest approaching point; a point whose accumulated normal impulse ends at 0
+        // did not collide (it was already separating when the solver reached it). Box2D v3
+        // tests the largest impulse over the iterations instead, so a point pushed and then
+        // fully relaxed counts there and not here.
         int fastest = -1;
         Real fastestSpeed = threshold;
         for (int j = 0; j < vc.pointCount; ++j)

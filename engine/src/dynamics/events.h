@@ -12,8 +12,12 @@ namespace meff::detail
 struct WorldState;
 struct Contact;
 
-/// Empties every event list of the last step (World::Step's first stage).
+/// Empties the event lists of the last step (World::Step's first stage). End events recorded
+/// after that step ended — a touching shape or body destroyed between steps — are kept, at the
+/// front of this step's lists, so a game that reads events once per step still sees them.
 void ClearEvents(WorldState& world);
+/// Marks where this step's end events stop (World::Step's last stage), for ClearEvents.
+void MarkStepEvents(WorldState& world);
 /// A contact started touching: a sensor event when it is a sensor contact, else a contact event.
 void RecordTouchBegan(WorldState& world, const Contact& contact);
 /// A touching contact stopped touching or was destroyed.

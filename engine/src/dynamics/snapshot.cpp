@@ -77,7 +77,11 @@ std::uint64_t World::GetStateHash() const
 WorldSnapshot World::SaveSnapshot() const
 {
     WorldSnapshot snapshot;
-    snapshot.m_state = std::make_shared<const detail::WorldState>(*m_state);
+    auto copy = std::make_shared<detail::WorldState>(*m_state);
+    // The pre-solve callback is configuration, not state (RestoreSnapshot keeps the current
+    // one): a snapshot must not keep alive whatever the callback captured.
+    copy->preSolve = nullptr;
+    snapshot.m_state = std::move(copy);
     return snapshot;
 }
 

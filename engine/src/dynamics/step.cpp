@@ -64,6 +64,7 @@ void World::Step(Real dt)
         SolveContinuous(world, step);
     }
     ClearForces(world);
+    MarkStepEvents(world);
     world.invDt0 = step.invDt;
     ++world.stepCount;
 }

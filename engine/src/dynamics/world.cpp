@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace meff
 {
@@ -197,12 +198,24 @@ World::World(const WorldDef& def)
 {
     RequireFinite(def.gravity, "WorldDef::gravity");
     const Tolerances& t = def.tolerances;
-    for (const Real value :
-         {t.linearSlop, t.polygonSkin, t.aabbMargin, t.maxLinearCorrection, t.maxAngularCorrection,
-          t.angularSlop, t.maxTranslation, t.maxRotation, t.baumgarte, t.toiBaumgarte,
-          t.timeToSleep, t.linearSleepTolerance, t.angularSleepTolerance, t.hitEventThreshold})
+    const std::pair<const char*, Real> tolerances[] = {
+        {"linearSlop", t.linearSlop},
+        {"polygonSkin", t.polygonSkin},
+        {"aabbMargin", t.aabbMargin},
+        {"maxLinearCorrection", t.maxLinearCorrection},
+        {"maxAngularCorrection", t.maxAngularCorrection},
+        {"angularSlop", t.angularSlop},
+        {"maxTranslation", t.maxTranslation},
+        {"maxRotation", t.maxRotation},
+        {"baumgarte", t.baumgarte},
+        {"toiBaumgarte", t.toiBaumgarte},
+        {"timeToSleep", t.timeToSleep},
+        {"linearSleepTolerance", t.linearSleepTolerance},
+        {"angularSleepTolerance", t.angularSleepTolerance},
+        {"hitEventThreshold", t.hitEventThreshold}};
+    for (const auto& [name, value] : tolerances)
     {
-        RequireNonNegative(value, "WorldDef::tolerances");
+        RequireNonNegative(value, (std::string("WorldDef::tolerances.") + name).c_str());
     }
     m_state = std::make_unique<WorldState>(def);
     SetSolverSettings(def.solver);
@@ -842,9 +855,13 @@ void World::SetMouseTarget(JointId id, Vec2 target)
     auto* mouse = std::get_if<MouseJoint>(&joint.data);
     Require(mouse != nullptr, "World::SetMouseTarget: the joint is not a mouse joint");
     RequireFinite(target, "World::SetMouseTarget: target");
-    mouse->target = target;
-    // The pointer moved: the dragged body must follow (Box2D's SetTarget wakes it).
-    WakeBody(*m_state, joint.bodyB);
+    if (target != mouse->target)
+    {
+        // The pointer moved: the dragged body must follow (Box2D's SetTarget wakes it then;
+        // an unchanged target wakes nothing, so a game may set it every frame).
+        WakeBody(*m_state, joint.bodyB);
+        mouse->target = target;
+    }
 }
 
 Vec2 World::GetMouseTarget(JointId id) const
@@ -862,11 +879,15 @@ void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffs
     Require(motor != nullptr, "World::SetMotorJointOffsets: the joint is not a motor joint");
     RequireFinite(linearOffset, "World::SetMotorJointOffsets: linearOffset");
     RequireFinite(angularOffset, "World::SetMotorJointOffsets: angularOffset");
-    motor->linearOffset = linearOffset;
-    motor->angularOffset = angularOffset;
-    // A new target pose moves the bodies: wake them (Box2D's SetLinearOffset does).
-    WakeBody(*m_state, joint.bodyA);
-    WakeBody(*m_state, joint.bodyB);
+    if (linearOffset != motor->linearOffset || angularOffset != motor->angularOffset)
+    {
+        // A new target pose moves the bodies: wake them, as Box2D's SetLinearOffset and
+        // SetAngularOffset do when the value changes.
+        WakeBody(*m_state, joint.bodyA);
+        WakeBody(*m_state, joint.bodyB);
+        motor->linearOffset = linearOffset;
+        motor->angularOffset = angularOffset;
+    }
 }
 
 void World::DestroyJoint(JointId id)
@@ -942,27 +963,33 @@ std::span<const JointId> World::GetJoints() const
 void World::SetJointMotorSpeed(JointId id, Real speed)
 {
     Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    RequireFinite(speed, "SetJointMotorSpeed: speed");
+    RequireFinite(speed, "World::SetJointMotorSpeed: speed");
+    Real* motorSpeed = nullptr;
     if (auto* r = std::get_if<RevoluteJoint>(&joint.data))
     {
-        r->motorSpeed = speed;
+        motorSpeed = &r->motorSpeed;
     }
     else if (auto* p = std::get_if<PrismaticJoint>(&joint.data))
     {
-        p->motorSpeed = speed;
+        motorSpeed = &p->motorSpeed;
     }
     else if (auto* w = std::get_if<WheelJoint>(&joint.data))
     {
-        w->motorSpeed = speed;
+        motorSpeed = &w->motorSpeed;
     }
     else
     {
         throw InvalidArgument("World::SetJointMotorSpeed: the joint has no motor (only "
                               "revolute, prismatic and wheel joints do)");
     }
-    // A changed motor moves its bodies: wake them, as Box2D's SetMotorSpeed does.
-    WakeBody(*m_state, joint.bodyA);
-    WakeBody(*m_state, joint.bodyB);
+    if (speed != *motorSpeed)
+    {
+        // A changed motor moves its bodies: wake them, as Box2D's SetMotorSpeed does. An
+        // unchanged speed wakes nothing, so a game may set it every frame and still sleep.
+        WakeBody(*m_state, joint.bodyA);
+        WakeBody(*m_state, joint.bodyB);
+        *motorSpeed = speed;
+    }
 }
 
 namespace

@@ -11,6 +11,7 @@
 #include "joints/joint.h"
 #include "meff/world.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -73,6 +74,10 @@ struct WorldState
     std::vector<SensorEvent> sensorBeginEvents;
     std::vector<SensorEvent> sensorEndEvents;
     std::vector<ContactHitEvent> hitEvents;
+    /// How many end events the last step itself recorded; those after it came from destroying
+    /// shapes or bodies between steps and are carried into the next step's lists.
+    std::size_t stepEndEventCount = 0;
+    std::size_t stepSensorEndEventCount = 0;
     PreSolveCallback preSolve; ///< the user's, or empty; kept across RestoreSnapshot
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
