@@ -44,14 +44,10 @@ void InitVelocityConstraints(DistanceJoint& joint, const JointBody& a, const Joi
 {
     StoreJointBodies(joint, a, b);
 
-    const Vec2 cA = data.positions[joint.indexA].c;
-    const Real aA = data.positions[joint.indexA].a;
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    const Vec2 cB = data.positions[joint.indexB].c;
-    const Real aB = data.positions[joint.indexB].a;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    const auto [cA, aA] = data.positions[joint.indexA];
+    auto [vA, wA] = data.velocities[joint.indexA];
+    const auto [cB, aB] = data.positions[joint.indexB];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     joint.rA = Mul(qA, joint.localAnchorA - joint.localCenterA);
@@ -125,18 +121,14 @@ void InitVelocityConstraints(DistanceJoint& joint, const JointBody& a, const Joi
         joint.impulse = 0;
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 void SolveVelocityConstraints(DistanceJoint& joint, SolverData& data)
 {
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     if (joint.minLength < joint.maxLength)
     {
@@ -188,18 +180,14 @@ void SolveVelocityConstraints(DistanceJoint& joint, SolverData& data)
         ApplyImpulse(joint, impulse * joint.u, vA, wA, vB, wB);
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 bool SolvePositionConstraints(DistanceJoint& joint, SolverData& data)
 {
-    Vec2 cA = data.positions[joint.indexA].c;
-    Real aA = data.positions[joint.indexA].a;
-    Vec2 cB = data.positions[joint.indexB].c;
-    Real aB = data.positions[joint.indexB].a;
+    auto [cA, aA] = data.positions[joint.indexA];
+    auto [cB, aB] = data.positions[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     const Vec2 rA = Mul(qA, joint.localAnchorA - joint.localCenterA);
@@ -236,10 +224,8 @@ bool SolvePositionConstraints(DistanceJoint& joint, SolverData& data)
     cB += joint.invMassB * P;
     aB += joint.invIB * Cross(rB, P);
 
-    data.positions[joint.indexA].c = cA;
-    data.positions[joint.indexA].a = aA;
-    data.positions[joint.indexB].c = cB;
-    data.positions[joint.indexB].a = aB;
+    data.positions[joint.indexA] = {cA, aA};
+    data.positions[joint.indexB] = {cB, aB};
 
     return std::abs(C) < data.step.tolerances.linearSlop;
 }

@@ -4,6 +4,9 @@
 // Every constraint row is solved with the scalar effective mass
 //   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB   (seed: effective-mass.md)
 // and λ = −(Jv + bias)/k, following Box2D 2.4.1's sequential-impulse formulation.
+// Each solver function copies its bodies' state out of SolverData at the start
+// (`auto [vA, wA] = data.velocities[joint.indexA];`), works on the copies as Box2D does, and
+// writes them back at the end (`data.velocities[joint.indexA] = {vA, wA};`).
 #pragma once
 
 #include "dynamics/solver_types.h"

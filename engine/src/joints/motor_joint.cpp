@@ -55,14 +55,10 @@ void InitVelocityConstraints(MotorJoint& joint, const JointBody& a, const JointB
 {
     StoreJointBodies(joint, a, b);
 
-    const Vec2 cA = data.positions[joint.indexA].c;
-    const Real aA = data.positions[joint.indexA].a;
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    const Vec2 cB = data.positions[joint.indexB].c;
-    const Real aB = data.positions[joint.indexB].a;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    const auto [cA, aA] = data.positions[joint.indexA];
+    auto [vA, wA] = data.velocities[joint.indexA];
+    const auto [cB, aB] = data.positions[joint.indexB];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     joint.rA = Mul(qA, joint.linearOffset - joint.localCenterA);
@@ -105,18 +101,14 @@ void InitVelocityConstraints(MotorJoint& joint, const JointBody& a, const JointB
         joint.angularImpulse = 0;
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 void SolveVelocityConstraints(MotorJoint& joint, SolverData& data)
 {
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Real h = data.step.dt;
     const Real invH = data.step.invDt;
@@ -162,10 +154,8 @@ void SolveVelocityConstraints(MotorJoint& joint, SolverData& data)
         }
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 bool SolvePositionConstraints(MotorJoint&, SolverData&)

@@ -38,10 +38,8 @@ void InitVelocityConstraints(MouseJoint& joint, const JointBody& a, const JointB
 {
     StoreJointBodies(joint, a, b);
 
-    const Vec2 cB = data.positions[joint.indexB].c;
-    const Real aB = data.positions[joint.indexB].a;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    const auto [cB, aB] = data.positions[joint.indexB];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Rot qB(aB);
 
@@ -82,14 +80,12 @@ void InitVelocityConstraints(MouseJoint& joint, const JointBody& a, const JointB
         joint.impulse = Vec2(0, 0);
     }
 
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 void SolveVelocityConstraints(MouseJoint& joint, SolverData& data)
 {
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vB, wB] = data.velocities[joint.indexB];
     const Real maxImpulse = data.step.dt * joint.maxForce;
 
     if (data.step.solver.blockJoints)
@@ -122,8 +118,7 @@ void SolveVelocityConstraints(MouseJoint& joint, SolverData& data)
         }
     }
 
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 bool SolvePositionConstraints(MouseJoint&, SolverData&)

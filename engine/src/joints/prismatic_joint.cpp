@@ -48,14 +48,10 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
 {
     StoreJointBodies(joint, a, b);
 
-    const Vec2 cA = data.positions[joint.indexA].c;
-    const Real aA = data.positions[joint.indexA].a;
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    const Vec2 cB = data.positions[joint.indexB].c;
-    const Real aB = data.positions[joint.indexB].a;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    const auto [cA, aA] = data.positions[joint.indexA];
+    auto [vA, wA] = data.velocities[joint.indexA];
+    const auto [cB, aB] = data.positions[joint.indexB];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     const Vec2 rA = Mul(qA, joint.localAnchorA - joint.localCenterA);
@@ -136,18 +132,14 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
         joint.upperImpulse = 0;
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 void SolveVelocityConstraints(PrismaticJoint& joint, SolverData& data)
 {
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const LineRowMasses m = Masses(joint);
 
@@ -210,18 +202,14 @@ void SolveVelocityConstraints(PrismaticJoint& joint, SolverData& data)
         wB += m.iB * lambdaAngle;
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 bool SolvePositionConstraints(PrismaticJoint& joint, SolverData& data)
 {
-    Vec2 cA = data.positions[joint.indexA].c;
-    Real aA = data.positions[joint.indexA].a;
-    Vec2 cB = data.positions[joint.indexB].c;
-    Real aB = data.positions[joint.indexB].a;
+    auto [cA, aA] = data.positions[joint.indexA];
+    auto [cB, aB] = data.positions[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     const LineRowMasses m = Masses(joint);
@@ -323,10 +311,8 @@ bool SolvePositionConstraints(PrismaticJoint& joint, SolverData& data)
     }
     ApplyPrismaticImpulse(impulse, perp, axis, s1, s2, a1, a2, m, cA, aA, cB, aB);
 
-    data.positions[joint.indexA].c = cA;
-    data.positions[joint.indexA].a = aA;
-    data.positions[joint.indexB].c = cB;
-    data.positions[joint.indexB].a = aB;
+    data.positions[joint.indexA] = {cA, aA};
+    data.positions[joint.indexB] = {cB, aB};
 
     return linearError <= tol.linearSlop && angularError <= tol.angularSlop;
 }

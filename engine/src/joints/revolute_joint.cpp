@@ -48,11 +48,9 @@ void InitVelocityConstraints(RevoluteJoint& joint, const JointBody& a, const Joi
     StoreJointBodies(joint, a, b);
 
     const Real aA = data.positions[joint.indexA].a;
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
     const Real aB = data.positions[joint.indexB].a;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     joint.rA = Mul(qA, joint.localAnchorA - joint.localCenterA);
@@ -122,18 +120,14 @@ void InitVelocityConstraints(RevoluteJoint& joint, const JointBody& a, const Joi
         joint.upperImpulse = 0;
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 void SolveVelocityConstraints(RevoluteJoint& joint, SolverData& data)
 {
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Real mA = joint.invMassA, mB = joint.invMassB;
     const Real iA = joint.invIA, iB = joint.invIB;
@@ -213,18 +207,14 @@ void SolveVelocityConstraints(RevoluteJoint& joint, SolverData& data)
         ApplyPointImpulse(Vec2(0, lambdaY), mA, iA, rA, mB, iB, rB, vA, wA, vB, wB);
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 bool SolvePositionConstraints(RevoluteJoint& joint, SolverData& data)
 {
-    Vec2 cA = data.positions[joint.indexA].c;
-    Real aA = data.positions[joint.indexA].a;
-    Vec2 cB = data.positions[joint.indexB].c;
-    Real aB = data.positions[joint.indexB].a;
+    auto [cA, aA] = data.positions[joint.indexA];
+    auto [cB, aB] = data.positions[joint.indexB];
 
     const Tolerances& tol = data.step.tolerances;
     Real angularError = 0;
@@ -313,10 +303,8 @@ bool SolvePositionConstraints(RevoluteJoint& joint, SolverData& data)
         }
     }
 
-    data.positions[joint.indexA].c = cA;
-    data.positions[joint.indexA].a = aA;
-    data.positions[joint.indexB].c = cB;
-    data.positions[joint.indexB].a = aB;
+    data.positions[joint.indexA] = {cA, aA};
+    data.positions[joint.indexB] = {cB, aB};
 
     return positionError <= tol.linearSlop && angularError <= tol.angularSlop;
 }

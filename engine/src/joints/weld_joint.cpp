@@ -77,11 +77,9 @@ void InitVelocityConstraints(WeldJoint& joint, const JointBody& a, const JointBo
     StoreJointBodies(joint, a, b);
 
     const Real aA = data.positions[joint.indexA].a;
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
     const Real aB = data.positions[joint.indexB].a;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     joint.rA = Mul(qA, joint.localAnchorA - joint.localCenterA);
@@ -134,18 +132,14 @@ void InitVelocityConstraints(WeldJoint& joint, const JointBody& a, const JointBo
         joint.impulse = Vec3();
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 void SolveVelocityConstraints(WeldJoint& joint, SolverData& data)
 {
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
+    auto [vB, wB] = data.velocities[joint.indexB];
     const bool block = data.step.solver.blockJoints;
 
     if (joint.stiffness > 0)
@@ -197,18 +191,14 @@ void SolveVelocityConstraints(WeldJoint& joint, SolverData& data)
         SolvePointRowsScalar(joint, vA, wA, vB, wB);
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 bool SolvePositionConstraints(WeldJoint& joint, SolverData& data)
 {
-    Vec2 cA = data.positions[joint.indexA].c;
-    Real aA = data.positions[joint.indexA].a;
-    Vec2 cB = data.positions[joint.indexB].c;
-    Real aB = data.positions[joint.indexB].a;
+    auto [cA, aA] = data.positions[joint.indexA];
+    auto [cB, aB] = data.positions[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     const Real mA = joint.invMassA, mB = joint.invMassB;
@@ -273,10 +263,8 @@ bool SolvePositionConstraints(WeldJoint& joint, SolverData& data)
         aB += iB * (Cross(rB, P) + impulse.z);
     }
 
-    data.positions[joint.indexA].c = cA;
-    data.positions[joint.indexA].a = aA;
-    data.positions[joint.indexB].c = cB;
-    data.positions[joint.indexB].a = aB;
+    data.positions[joint.indexA] = {cA, aA};
+    data.positions[joint.indexB] = {cB, aB};
 
     const Tolerances& tol = data.step.tolerances;
     return positionError <= tol.linearSlop && angularError <= tol.angularSlop;

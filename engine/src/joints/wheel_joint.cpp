@@ -26,14 +26,10 @@ void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointB
 {
     StoreJointBodies(joint, a, b);
 
-    const Vec2 cA = data.positions[joint.indexA].c;
-    const Real aA = data.positions[joint.indexA].a;
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    const Vec2 cB = data.positions[joint.indexB].c;
-    const Real aB = data.positions[joint.indexB].a;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    const auto [cA, aA] = data.positions[joint.indexA];
+    auto [vA, wA] = data.velocities[joint.indexA];
+    const auto [cB, aB] = data.positions[joint.indexB];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     const Rot qA(aA), qB(aB);
     const Vec2 rA = Mul(qA, joint.localAnchorA - joint.localCenterA);
@@ -139,20 +135,16 @@ void InitVelocityConstraints(WheelJoint& joint, const JointBody& a, const JointB
         joint.upperImpulse = 0;
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 void SolveVelocityConstraints(WheelJoint& joint, SolverData& data)
 {
     const LineRowMasses m = Masses(joint);
 
-    Vec2 vA = data.velocities[joint.indexA].v;
-    Real wA = data.velocities[joint.indexA].w;
-    Vec2 vB = data.velocities[joint.indexB].v;
-    Real wB = data.velocities[joint.indexB].w;
+    auto [vA, wA] = data.velocities[joint.indexA];
+    auto [vB, wB] = data.velocities[joint.indexB];
 
     // Spring (without stiffness springMass is 0 and the row applies nothing).
     {
@@ -196,18 +188,14 @@ void SolveVelocityConstraints(WheelJoint& joint, SolverData& data)
         ApplyLineRowImpulse(impulse, joint.ay, joint.sAy, joint.sBy, m, vA, wA, vB, wB);
     }
 
-    data.velocities[joint.indexA].v = vA;
-    data.velocities[joint.indexA].w = wA;
-    data.velocities[joint.indexB].v = vB;
-    data.velocities[joint.indexB].w = wB;
+    data.velocities[joint.indexA] = {vA, wA};
+    data.velocities[joint.indexB] = {vB, wB};
 }
 
 bool SolvePositionConstraints(WheelJoint& joint, SolverData& data)
 {
-    Vec2 cA = data.positions[joint.indexA].c;
-    Real aA = data.positions[joint.indexA].a;
-    Vec2 cB = data.positions[joint.indexB].c;
-    Real aB = data.positions[joint.indexB].a;
+    auto [cA, aA] = data.positions[joint.indexA];
+    auto [cB, aB] = data.positions[joint.indexB];
 
     const Real slop = data.step.tolerances.linearSlop;
     Real linearError = 0;
@@ -278,10 +266,8 @@ bool SolvePositionConstraints(WheelJoint& joint, SolverData& data)
         linearError = Max(linearError, std::abs(C));
     }
 
-    data.positions[joint.indexA].c = cA;
-    data.positions[joint.indexA].a = aA;
-    data.positions[joint.indexB].c = cB;
-    data.positions[joint.indexB].a = aB;
+    data.positions[joint.indexA] = {cA, aA};
+    data.positions[joint.indexB] = {cB, aB};
 
     return linearError <= slop;
 }
