@@ -33,6 +33,7 @@ WorldDef MakeWorldDef(const SceneWorldSettings& settings)
     def.solver.blockSolver = settings.blockSolver;
     def.solver.blockJoints = settings.blockJoints;
     def.solver.restitutionFromStepStart = settings.restitutionFromStepStart;
+    def.solver.graphColoring = settings.graphColoring;
     def.allowSleep = settings.allowSleep;
     def.continuous = settings.continuous;
     return def;

@@ -137,6 +137,7 @@ void ReadWorld(ObjectReader& reader, SceneWorldSettings& world)
     Assign(world.blockJoints, reader.Boolean("block_joints", defaults.blockJoints));
     Assign(world.restitutionFromStepStart,
            reader.Boolean("restitution_from_step_start", defaults.restitutionFromStepStart));
+    Assign(world.graphColoring, reader.Boolean("graph_coloring", defaults.graphColoring));
     Assign(world.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
     Assign(world.continuous, reader.Boolean("continuous", defaults.continuous));
     reader.Finish();

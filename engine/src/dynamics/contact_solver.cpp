@@ -162,6 +162,17 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
             }
         }
     }
+    PrepareColors(data);
+}
+
+void ContactSolver::PrepareColors(const SolverData& data)
+{
+    m_colored = data.step.solver.graphColoring;
+    if (m_colored)
+    {
+        m_coloredSolver.Prepare({m_velocity.data(), m_count}, {m_position.data(), m_count},
+                                data.step.solver.blockSolver);
+    }
 }
 
 void ContactSolver::WarmStart(SolverData& data)
@@ -190,76 +201,13 @@ void ContactSolver::WarmStart(SolverData& data)
     }
 }
 
-void ContactSolver::SolveVelocities(SolverData& data)
+namespace
 {
-    const bool blockSolver = data.step.solver.blockSolver;
-    for (std::size_t i = 0; i < m_count; ++i)
-    {
-        ContactVelocityConstraint& vc = m_velocity[i];
-        Velocity& a = data.velocities[vc.indexA];
-        Velocity& b = data.velocities[vc.indexB];
-        Vec2 vA = a.v, vB = b.v;
-        Real wA = a.w, wB = b.w;
-        const Real mA = vc.invMassA, mB = vc.invMassB, iA = vc.invIA, iB = vc.invIB;
-        const Vec2 normal = vc.normal;
-        const Vec2 tangent = Cross(normal, Real(1));
-
-        // Friction rows first: non-penetration, solved last, matters more.
-        // A scene with friction 0 pays nothing for them.
-        if (vc.friction > 0)
-        {
-            for (int j = 0; j < vc.pointCount; ++j)
-            {
-                ContactVelocityPoint& vp = vc.points[j];
-                const Real vt = Dot(RelativeVelocity(vA, wA, vB, wB, vp), tangent);
-                Real lambda = vp.tangentMass * (-vt);
-                const Real maxFriction = vc.friction * vp.normalImpulse;
-                const Real newImpulse =
-                    Clamp(vp.tangentImpulse + lambda, -maxFriction, maxFriction);
-                lambda = newImpulse - vp.tangentImpulse;
-                vp.tangentImpulse = newImpulse;
-                const Vec2 P = lambda * tangent;
-                vA -= mA * P;
-                wA -= iA * Cross(vp.rA, P);
-                vB += mB * P;
-                wB += iB * Cross(vp.rB, P);
-            }
-        }
-
-        if (vc.pointCount == 1 || !blockSolver)
-        {
-            for (int j = 0; j < vc.pointCount; ++j)
-            {
-                ContactVelocityPoint& vp = vc.points[j];
-                const Real vn = Dot(RelativeVelocity(vA, wA, vB, wB, vp), normal);
-                Real lambda = -vp.normalMass * (vn - vp.velocityBias);
-                const Real newImpulse = Max(vp.normalImpulse + lambda, Real(0));
-                lambda = newImpulse - vp.normalImpulse;
-                vp.normalImpulse = newImpulse;
-                const Vec2 P = lambda * normal;
-                vA -= mA * P;
-                wA -= iA * Cross(vp.rA, P);
-                vB += mB * P;
-                wB += iB * Cross(vp.rB, P);
-            }
-        }
-        else
-        {
-            SolveNormalBlock(vc, vA, wA, vB, wB);
-        }
-
-        a.v = vA;
-        a.w = wA;
-        b.v = vB;
-        b.w = wB;
-    }
-}
 
 // The two normal rows as one linear complementarity problem vn = K·x + b, x ≥ 0, vn ≥ 0,
 // x·vn = 0, solved by trying its four cases in turn (total enumeration); x is the total
 // accumulated impulse, so b is corrected by K·a for the impulse a already applied.
-void ContactSolver::SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Real& wA, Vec2& vB,
-                                     Real& wB) const
+void SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Real& wA, Vec2& vB, Real& wB)
 {
     ContactVelocityPoint& p1 = vc.points[0];
     ContactVelocityPoint& p2 = vc.points[1];
@@ -318,8 +266,87 @@ void ContactSolver::SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Re
     // Otherwise no case holds (rare, from round-off); leave the impulses as they are.
 }
 
-void ContactSolver::StoreImpulses(std::span<Contact> contacts) const
+} // namespace
+
+void ContactSolver::SolveVelocities(SolverData& data)
 {
+    if (m_colored)
+    {
+        m_coloredSolver.SolveVelocities({m_velocity.data(), m_count}, data);
+        return;
+    }
+    const bool blockSolver = data.step.solver.blockSolver;
+    for (std::size_t i = 0; i < m_count; ++i)
+    {
+        SolveVelocityConstraint(m_velocity[i], data.velocities, blockSolver);
+    }
+}
+
+void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities, bool blockSolver)
+{
+    Velocity& a = velocities[vc.indexA];
+    Velocity& b = velocities[vc.indexB];
+    Vec2 vA = a.v, vB = b.v;
+    Real wA = a.w, wB = b.w;
+    const Real mA = vc.invMassA, mB = vc.invMassB, iA = vc.invIA, iB = vc.invIB;
+    const Vec2 normal = vc.normal;
+    const Vec2 tangent = Cross(normal, Real(1));
+
+    // Friction rows first: non-penetration, solved last, matters more.
+    // A scene with friction 0 pays nothing for them.
+    if (vc.friction > 0)
+    {
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            ContactVelocityPoint& vp = vc.points[j];
+            const Real vt = Dot(RelativeVelocity(vA, wA, vB, wB, vp), tangent);
+            Real lambda = vp.tangentMass * (-vt);
+            const Real maxFriction = vc.friction * vp.normalImpulse;
+            const Real newImpulse = Clamp(vp.tangentImpulse + lambda, -maxFriction, maxFriction);
+            lambda = newImpulse - vp.tangentImpulse;
+            vp.tangentImpulse = newImpulse;
+            const Vec2 P = lambda * tangent;
+            vA -= mA * P;
+            wA -= iA * Cross(vp.rA, P);
+            vB += mB * P;
+            wB += iB * Cross(vp.rB, P);
+        }
+    }
+
+    if (vc.pointCount == 1 || !blockSolver)
+    {
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            ContactVelocityPoint& vp = vc.points[j];
+            const Real vn = Dot(RelativeVelocity(vA, wA, vB, wB, vp), normal);
+            Real lambda = -vp.normalMass * (vn - vp.velocityBias);
+            const Real newImpulse = Max(vp.normalImpulse + lambda, Real(0));
+            lambda = newImpulse - vp.normalImpulse;
+            vp.normalImpulse = newImpulse;
+            const Vec2 P = lambda * normal;
+            vA -= mA * P;
+            wA -= iA * Cross(vp.rA, P);
+            vB += mB * P;
+            wB += iB * Cross(vp.rB, P);
+        }
+    }
+    else
+    {
+        SolveNormalBlock(vc, vA, wA, vB, wB);
+    }
+
+    a.v = vA;
+    a.w = wA;
+    b.v = vB;
+    b.w = wB;
+}
+
+void ContactSolver::StoreImpulses(std::span<Contact> contacts)
+{
+    if (m_colored)
+    {
+        m_coloredSolver.StoreImpulses({m_velocity.data(), m_count});
+    }
     for (std::size_t i = 0; i < m_count; ++i)
     {
         const ContactVelocityConstraint& vc = m_velocity[i];
@@ -387,12 +414,6 @@ PositionPoint EvaluatePositionPoint(const ContactPositionConstraint& pc, const T
 namespace
 {
 
-/// Inverse masses and inertias one position constraint uses.
-struct PositionMasses
-{
-    Real mA, mB, iA, iB;
-};
-
 /// One non-linear Gauss-Seidel sweep over the position constraints, with Baumgarte factor
 /// `baumgarte` and the inverse masses `masses(pc)` gives; returns the smallest separation seen.
 template <typename Masses>
@@ -402,46 +423,58 @@ Real SolvePositionSweep(std::span<const ContactPositionConstraint> constraints, 
     Real minSeparation = 0;
     for (const ContactPositionConstraint& pc : constraints)
     {
-        Position& a = positions[pc.indexA];
-        Position& b = positions[pc.indexB];
-        Vec2 cA = a.c, cB = b.c;
-        Real aA = a.a, aB = b.a;
-        const PositionMasses m = masses(pc);
-        const Real mA = m.mA, mB = m.mB, iA = m.iA, iB = m.iB;
-
-        for (int j = 0; j < pc.pointCount; ++j)
-        {
-            const Transform xfA = TransformFromCenter(cA, aA, pc.localCenterA);
-            const Transform xfB = TransformFromCenter(cB, aB, pc.localCenterB);
-            const PositionPoint pp = EvaluatePositionPoint(pc, xfA, xfB, j);
-            const Vec2 rA = pp.point - cA;
-            const Vec2 rB = pp.point - cB;
-            minSeparation = Min(minSeparation, pp.separation);
-
-            // Baumgarte-scaled correction that leaves linearSlop of overlap (so contacts
-            // persist) and never moves more than maxLinearCorrection at once.
-            const Real C = Clamp(baumgarte * (pp.separation + tol.linearSlop),
-                                 -tol.maxLinearCorrection, Real(0));
-            const Real K = InverseEffectiveMass(mA, mB, iA, iB, rA, rB, pp.normal);
-            const Real impulse = K > 0 ? -C / K : Real(0);
-            const Vec2 P = impulse * pp.normal;
-            cA -= mA * P;
-            aA -= iA * Cross(rA, P);
-            cB += mB * P;
-            aB += iB * Cross(rB, P);
-        }
-        a.c = cA;
-        a.a = aA;
-        b.c = cB;
-        b.a = aB;
+        minSeparation =
+            Min(minSeparation, SolvePositionConstraint(pc, positions, tol, baumgarte, masses(pc)));
     }
     return minSeparation;
 }
 
 } // namespace
 
+Real SolvePositionConstraint(const ContactPositionConstraint& pc, Position* positions,
+                             const Tolerances& tol, Real baumgarte, const PositionMasses& m)
+{
+    Position& a = positions[pc.indexA];
+    Position& b = positions[pc.indexB];
+    Vec2 cA = a.c, cB = b.c;
+    Real aA = a.a, aB = b.a;
+    const Real mA = m.mA, mB = m.mB, iA = m.iA, iB = m.iB;
+
+    Real minSeparation = 0;
+    for (int j = 0; j < pc.pointCount; ++j)
+    {
+        const Transform xfA = TransformFromCenter(cA, aA, pc.localCenterA);
+        const Transform xfB = TransformFromCenter(cB, aB, pc.localCenterB);
+        const PositionPoint pp = EvaluatePositionPoint(pc, xfA, xfB, j);
+        const Vec2 rA = pp.point - cA;
+        const Vec2 rB = pp.point - cB;
+        minSeparation = Min(minSeparation, pp.separation);
+
+        // Baumgarte-scaled correction that leaves linearSlop of overlap (so contacts
+        // persist) and never moves more than maxLinearCorrection at once.
+        const Real C =
+            Clamp(baumgarte * (pp.separation + tol.linearSlop), -tol.maxLinearCorrection, Real(0));
+        const Real K = InverseEffectiveMass(mA, mB, iA, iB, rA, rB, pp.normal);
+        const Real impulse = K > 0 ? -C / K : Real(0);
+        const Vec2 P = impulse * pp.normal;
+        cA -= mA * P;
+        aA -= iA * Cross(rA, P);
+        cB += mB * P;
+        aB += iB * Cross(rB, P);
+    }
+    a.c = cA;
+    a.a = aA;
+    b.c = cB;
+    b.a = aB;
+    return minSeparation;
+}
+
 bool ContactSolver::SolvePositions(SolverData& data)
 {
+    if (m_colored)
+    {
+        return m_coloredSolver.SolvePositions({m_position.data(), m_count}, data);
+    }
     const Tolerances& tol = data.step.tolerances;
     const Real minSeparation =
         SolvePositionSweep({m_position.data(), m_count}, data.positions, tol, tol.baumgarte,

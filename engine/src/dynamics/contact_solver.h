@@ -6,6 +6,8 @@
 // Optionally, a two-point manifold's normal rows are solved together (Box2D's block solver).
 #pragma once
 
+#include "dynamics/colored_contact_solver.h"
+#include "dynamics/contact_constraint.h"
 #include "dynamics/solver_types.h"
 
 #include <cstdint>
@@ -19,39 +21,6 @@ struct Body;
 struct Contact;
 struct Shape;
 
-struct ContactVelocityPoint
-{
-    Vec2 rA, rB; ///< from each centre of mass to the contact point (m)
-    Real normalImpulse = 0, tangentImpulse = 0;
-    Real normalMass = 0, tangentMass = 0; ///< 1/k of the row (kg)
-    Real velocityBias = 0;                ///< restitution target −e·vn (m/s)
-    Real normalVelocity = 0; ///< vn before impulses, as restitution measures it (m/s); hit events
-};
-
-struct ContactVelocityConstraint
-{
-    ContactVelocityPoint points[2];
-    Vec2 normal;
-    Mat22 normalMass, K; ///< block solver: K and K⁻¹
-    std::int32_t indexA = 0, indexB = 0;
-    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
-    Real friction = 0, restitution = 0, threshold = 0;
-    int pointCount = 0;
-    std::int32_t contactIndex = 0; ///< world contact index
-};
-
-struct ContactPositionConstraint
-{
-    Vec2 localPoints[2];
-    Vec2 localNormal, localPoint;
-    std::int32_t indexA = 0, indexB = 0;
-    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
-    Vec2 localCenterA, localCenterB;
-    Manifold::Type type = Manifold::Type::Circles;
-    Real radiusA = 0, radiusB = 0;
-    int pointCount = 0;
-};
-
 class ContactSolver
 {
   public:
@@ -61,7 +30,7 @@ class ContactSolver
     void WarmStart(SolverData& data);
     void SolveVelocities(SolverData& data);
     /// Copies the accumulated impulses back into the manifolds for next step's warm start.
-    void StoreImpulses(std::span<Contact> contacts) const;
+    void StoreImpulses(std::span<Contact> contacts);
     /// One non-linear Gauss-Seidel sweep; true when no point overlaps more than 3·slop.
     bool SolvePositions(SolverData& data);
     /// One sweep of a time-of-impact sub-step (Box2D's SolveTOIPositionConstraints): only the
@@ -75,12 +44,16 @@ class ContactSolver
     }
 
   private:
-    void SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Real& wA, Vec2& vB,
-                          Real& wB) const;
+    /// With SolverSettings::graphColoring: colours the prepared constraints for the sweeps.
+    void PrepareColors(const SolverData& data);
 
     std::vector<ContactVelocityConstraint> m_velocity; ///< reused from step to step
     std::vector<ContactPositionConstraint> m_position;
     std::size_t m_count = 0;
+    /// SolverSettings::graphColoring for the island prepared last: the velocity and position
+    /// sweeps then run colour by colour in m_coloredSolver.
+    bool m_colored = false;
+    ColoredContactSolver m_coloredSolver;
 };
 
 } // namespace meff::detail

@@ -46,6 +46,7 @@ struct SceneWorldSettings
     /// meff only: block solve of joint rows (revolute, prismatic, weld, motor, mouse)
     bool blockJoints = true;
     bool restitutionFromStepStart = false; ///< meff only: see SolverSettings
+    bool graphColoring = false;            ///< meff only: contacts by colour (SolverSettings)
     bool allowSleep = false;               ///< let resting islands sleep (Box2D's rules)
     bool continuous = false;               ///< Box2D's continuous physics (time of impact)
 };

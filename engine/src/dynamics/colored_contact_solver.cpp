@@ -1,0 +1,455 @@
+#include "dynamics/colored_contact_solver.h"
+
+#include <algorithm>
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// Velocities of four lanes' bodies.
+struct BodyVelocityW
+{
+    Vec2W v;
+    RealW w;
+};
+
+BodyVelocityW GatherVelocities(const Velocity* velocities, const std::int32_t (&index)[kLanes])
+{
+    BodyVelocityW out{};
+    for (int l = 0; l < kLanes; ++l)
+    {
+        const Velocity& body = velocities[index[l]];
+        out.v.x[l] = body.v.x;
+        out.v.y[l] = body.v.y;
+        out.w[l] = body.w;
+    }
+    return out;
+}
+
+void ScatterVelocities(Velocity* velocities, const std::int32_t (&index)[kLanes],
+                       const std::uint8_t (&write)[kLanes], const BodyVelocityW& in)
+{
+    for (int l = 0; l < kLanes; ++l)
+    {
+        if (write[l] != 0)
+        {
+            velocities[index[l]] = {{in.v.x[l], in.v.y[l]}, in.w[l]};
+        }
+    }
+}
+
+/// Centres of mass and angles of four lanes' bodies.
+struct BodyPositionW
+{
+    Vec2W c;
+    RealW a;
+};
+
+BodyPositionW GatherPositions(const Position* positions, const std::int32_t (&index)[kLanes])
+{
+    BodyPositionW out{};
+    for (int l = 0; l < kLanes; ++l)
+    {
+        const Position& body = positions[index[l]];
+        out.c.x[l] = body.c.x;
+        out.c.y[l] = body.c.y;
+        out.a[l] = body.a;
+    }
+    return out;
+}
+
+void ScatterPositions(Position* positions, const std::int32_t (&index)[kLanes],
+                      const std::uint8_t (&write)[kLanes], const BodyPositionW& in)
+{
+    for (int l = 0; l < kLanes; ++l)
+    {
+        if (write[l] != 0)
+        {
+            positions[index[l]] = {{in.c.x[l], in.c.y[l]}, in.a[l]};
+        }
+    }
+}
+
+/// Relative velocity of B's contact point with respect to A's, per lane.
+Vec2W RelativeVelocity(const BodyVelocityW& a, const BodyVelocityW& b, Vec2W rA, Vec2W rB)
+{
+    return b.v + Cross(b.w, rB) - a.v - Cross(a.w, rA);
+}
+
+/// Applies impulse P at lever arms rA, rB (−P to A, +P to B).
+void ApplyImpulse(const ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b, Vec2W rA,
+                  Vec2W rB, Vec2W P)
+{
+    a.v = a.v - g.invMassA * P;
+    a.w = a.w - g.invIA * Cross(rA, P);
+    b.v = b.v + g.invMassB * P;
+    b.w = b.w + g.invIB * Cross(rB, P);
+}
+
+void PackVelocityLane(ContactVelocityGroup& g, int l, const ContactVelocityConstraint& vc,
+                      std::int32_t source, bool blockSolver)
+{
+    g.source[l] = source;
+    g.indexA[l] = vc.indexA;
+    g.indexB[l] = vc.indexB;
+    g.writeA[l] = MovesBodyA(vc) ? 1 : 0;
+    g.writeB[l] = MovesBodyB(vc) ? 1 : 0;
+    g.invMassA[l] = vc.invMassA;
+    g.invMassB[l] = vc.invMassB;
+    g.invIA[l] = vc.invIA;
+    g.invIB[l] = vc.invIB;
+    g.friction[l] = vc.friction;
+    g.normal.x[l] = vc.normal.x;
+    g.normal.y[l] = vc.normal.y;
+    for (int j = 0; j < vc.pointCount; ++j)
+    {
+        const ContactVelocityPoint& vp = vc.points[j];
+        g.rA[j].x[l] = vp.rA.x;
+        g.rA[j].y[l] = vp.rA.y;
+        g.rB[j].x[l] = vp.rB.x;
+        g.rB[j].y[l] = vp.rB.y;
+        g.normalMass[j][l] = vp.normalMass;
+        g.tangentMass[j][l] = vp.tangentMass;
+        g.velocityBias[j][l] = vp.velocityBias;
+        g.normalImpulse[j][l] = vp.normalImpulse;
+        g.tangentImpulse[j][l] = vp.tangentImpulse;
+    }
+    const bool block = vc.pointCount == 2 && blockSolver;
+    g.block[l] = block ? -1 : 0;
+    g.anyBlock = g.anyBlock || block;
+    g.anyScalar = g.anyScalar || !block;
+    g.k11[l] = vc.K.ex.x;
+    g.k12[l] = vc.K.ey.x;
+    g.k22[l] = vc.K.ey.y;
+    g.inv11[l] = vc.normalMass.ex.x;
+    g.inv12[l] = vc.normalMass.ey.x;
+    g.inv21[l] = vc.normalMass.ex.y;
+    g.inv22[l] = vc.normalMass.ey.y;
+}
+
+void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConstraint& pc)
+{
+    g.indexA[l] = pc.indexA;
+    g.indexB[l] = pc.indexB;
+    g.writeA[l] = pc.invMassA > 0 || pc.invIA > 0 ? 1 : 0;
+    g.writeB[l] = pc.invMassB > 0 || pc.invIB > 0 ? 1 : 0;
+    g.invMassA[l] = pc.invMassA;
+    g.invMassB[l] = pc.invMassB;
+    g.invIA[l] = pc.invIA;
+    g.invIB[l] = pc.invIB;
+    g.localCenterA.x[l] = pc.localCenterA.x;
+    g.localCenterA.y[l] = pc.localCenterA.y;
+    g.localCenterB.x[l] = pc.localCenterB.x;
+    g.localCenterB.y[l] = pc.localCenterB.y;
+    g.localNormal.x[l] = pc.localNormal.x;
+    g.localNormal.y[l] = pc.localNormal.y;
+    g.localPoint.x[l] = pc.localPoint.x;
+    g.localPoint.y[l] = pc.localPoint.y;
+    for (int j = 0; j < pc.pointCount; ++j)
+    {
+        g.localPoints[j].x[l] = pc.localPoints[j].x;
+        g.localPoints[j].y[l] = pc.localPoints[j].y;
+        g.hasPoint[j][l] = -1;
+    }
+    g.radiusA[l] = pc.radiusA;
+    g.radiusB[l] = pc.radiusB;
+    g.circles[l] = pc.type == Manifold::Type::Circles ? -1 : 0;
+    g.faceB[l] = pc.type == Manifold::Type::FaceB ? -1 : 0;
+}
+
+/// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn).
+void SolveFriction(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b)
+{
+    const Vec2W tangent{g.normal.y, -g.normal.x};
+    for (int j = 0; j < 2; ++j)
+    {
+        const RealW vt = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), tangent);
+        const RealW maxFriction = g.friction * g.normalImpulse[j];
+        const RealW newImpulse =
+            MaxW(-maxFriction, MinW(g.tangentImpulse[j] + g.tangentMass[j] * (-vt), maxFriction));
+        const RealW lambda = newImpulse - g.tangentImpulse[j];
+        g.tangentImpulse[j] = newImpulse;
+        ApplyImpulse(g, a, b, g.rA[j], g.rB[j], lambda * tangent);
+    }
+}
+
+/// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0.
+void SolveNormalRows(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b)
+{
+    for (int j = 0; j < 2; ++j)
+    {
+        const RealW vn = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), g.normal);
+        const RealW lambda = -g.normalMass[j] * (vn - g.velocityBias[j]);
+        const RealW newImpulse = MaxW(g.normalImpulse[j] + lambda, Splat(0));
+        const RealW applied = newImpulse - g.normalImpulse[j];
+        g.normalImpulse[j] = newImpulse;
+        ApplyImpulse(g, a, b, g.rA[j], g.rB[j], applied * g.normal);
+    }
+}
+
+/// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
+/// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
+/// impulses.
+void SolveNormalBlock(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b)
+{
+    const RealW a1 = g.normalImpulse[0], a2 = g.normalImpulse[1];
+    const RealW vn1 = Dot(RelativeVelocity(a, b, g.rA[0], g.rB[0]), g.normal);
+    const RealW vn2 = Dot(RelativeVelocity(a, b, g.rA[1], g.rB[1]), g.normal);
+    const RealW b1 = (vn1 - g.velocityBias[0]) - (g.k11 * a1 + g.k12 * a2);
+    const RealW b2 = (vn2 - g.velocityBias[1]) - (g.k12 * a1 + g.k22 * a2);
+    const RealW zero = Splat(0);
+
+    // Case 1: both in contact, x = −K⁻¹·b.
+    const RealW x1 = -(g.inv11 * b1 + g.inv12 * b2);
+    const RealW x2 = -(g.inv21 * b1 + g.inv22 * b2);
+    const MaskW case1 = (x1 >= 0) & (x2 >= 0);
+    // Case 2: point 1 only (x2 = 0, vn2 ≥ 0).
+    const RealW y1 = -g.normalMass[0] * b1;
+    const MaskW case2 = (y1 >= 0) & (g.k12 * y1 + b2 >= 0);
+    // Case 3: point 2 only (x1 = 0, vn1 ≥ 0).
+    const RealW z2 = -g.normalMass[1] * b2;
+    const MaskW case3 = (z2 >= 0) & (g.k12 * z2 + b1 >= 0);
+    // Case 4: both separating.
+    const MaskW case4 = (b1 >= 0) & (b2 >= 0);
+
+    RealW new1 = Select(case4, zero, a1), new2 = Select(case4, zero, a2);
+    new1 = Select(case3, zero, new1);
+    new2 = Select(case3, z2, new2);
+    new1 = Select(case2, y1, new1);
+    new2 = Select(case2, zero, new2);
+    new1 = Select(case1, x1, new1);
+    new2 = Select(case1, x2, new2);
+    // Only the block lanes take the block's answer.
+    new1 = Select(g.block, new1, a1);
+    new2 = Select(g.block, new2, a2);
+
+    const Vec2W P1 = (new1 - a1) * g.normal;
+    const Vec2W P2 = (new2 - a2) * g.normal;
+    a.v = a.v - g.invMassA * (P1 + P2);
+    a.w = a.w - g.invIA * (Cross(g.rA[0], P1) + Cross(g.rA[1], P2));
+    b.v = b.v + g.invMassB * (P1 + P2);
+    b.w = b.w + g.invIB * (Cross(g.rB[0], P1) + Cross(g.rB[1], P2));
+    g.normalImpulse[0] = new1;
+    g.normalImpulse[1] = new2;
+}
+
+void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
+{
+    BodyVelocityW a = GatherVelocities(velocities, g.indexA);
+    BodyVelocityW b = GatherVelocities(velocities, g.indexB);
+    SolveFriction(g, a, b);
+    if (!g.anyBlock)
+    {
+        SolveNormalRows(g, a, b);
+    }
+    else if (!g.anyScalar)
+    {
+        SolveNormalBlock(g, a, b);
+    }
+    else
+    {
+        // Mixed group: each lane takes the velocities and impulses of its own kind of solve.
+        BodyVelocityW aRows = a, bRows = b;
+        ContactVelocityGroup rows = g;
+        SolveNormalRows(rows, aRows, bRows);
+        SolveNormalBlock(g, a, b);
+        a.v = Select(g.block, a.v, aRows.v);
+        a.w = Select(g.block, a.w, aRows.w);
+        b.v = Select(g.block, b.v, bRows.v);
+        b.w = Select(g.block, b.w, bRows.w);
+        for (int j = 0; j < 2; ++j)
+        {
+            g.normalImpulse[j] = Select(g.block, g.normalImpulse[j], rows.normalImpulse[j]);
+        }
+    }
+    ScatterVelocities(velocities, g.indexA, g.writeA, a);
+    ScatterVelocities(velocities, g.indexB, g.writeB, b);
+}
+
+/// One body's transform per lane from its centre of mass, angle and local centre.
+struct TransformW
+{
+    RotW q;
+    Vec2W p;
+};
+
+TransformW TransformFromCenter(const BodyPositionW& body, Vec2W localCenter)
+{
+    const RotW q = SinCosW(body.a);
+    return {q, body.c - Mul(q, localCenter)};
+}
+
+Vec2W Mul(const TransformW& xf, Vec2W v)
+{
+    return Mul(xf.q, v) + xf.p;
+}
+
+/// One sweep over a group's points (as SolvePositionConstraint); returns each lane's smallest
+/// separation.
+RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, const Tolerances& tol,
+                         Real baumgarte)
+{
+    BodyPositionW a = GatherPositions(positions, g.indexA);
+    BodyPositionW b = GatherPositions(positions, g.indexB);
+    RealW minSeparation = Splat(0);
+    for (int j = 0; j < 2; ++j)
+    {
+        if (!AnyLane(g.hasPoint[j]))
+        {
+            break;
+        }
+        const TransformW xfA = TransformFromCenter(a, g.localCenterA);
+        const TransformW xfB = TransformFromCenter(b, g.localCenterB);
+        // FaceA and circles: A holds the reference face (or centre); FaceB: B does.
+        const TransformW reference{
+            {Select(g.faceB, xfB.q.s, xfA.q.s), Select(g.faceB, xfB.q.c, xfA.q.c)},
+            Select(g.faceB, xfB.p, xfA.p)};
+        const TransformW incident{
+            {Select(g.faceB, xfA.q.s, xfB.q.s), Select(g.faceB, xfA.q.c, xfB.q.c)},
+            Select(g.faceB, xfA.p, xfB.p)};
+        const Vec2W planePoint = Mul(reference, g.localPoint);
+        const Vec2W clipPoint = Mul(incident, g.localPoints[j]);
+        const Vec2W d = clipPoint - planePoint;
+
+        // Circles: the normal joins the two centres (left as is when they coincide, as
+        // Vec2::Normalize); faces: the reference face's normal.
+        Vec2W centreNormal = d;
+        if (AnyLane(g.circles))
+        {
+            const RealW lengthSquared = d.x * d.x + d.y * d.y;
+            RealW distance{};
+            for (int l = 0; l < kLanes; ++l)
+            {
+                distance[l] = std::sqrt(lengthSquared[l]);
+            }
+            const MaskW normalizable = distance >= kEpsilon;
+            const RealW invDistance = Splat(1) / Select(normalizable, distance, Splat(1));
+            centreNormal = Select(normalizable, invDistance * d, d);
+        }
+        Vec2W normal = Select(g.circles, centreNormal, Mul(reference.q, g.localNormal));
+        const RealW separation = Dot(d, normal) - g.radiusA - g.radiusB;
+        const Vec2W point =
+            Select(g.circles, Splat(Real(0.5)) * (planePoint + clipPoint), clipPoint);
+        normal = Select(g.faceB, Vec2W{-normal.x, -normal.y}, normal);
+
+        const Vec2W rA = point - a.c;
+        const Vec2W rB = point - b.c;
+        minSeparation = Select(g.hasPoint[j], MinW(minSeparation, separation), minSeparation);
+
+        // Baumgarte-scaled correction leaving linearSlop of overlap, at most
+        // maxLinearCorrection; scalar effective mass k = Σ1/m + (r×n)²/I along the normal.
+        const RealW C =
+            MinW(MaxW(baumgarte * (separation + tol.linearSlop), Splat(-tol.maxLinearCorrection)),
+                 Splat(0));
+        const RealW rnA = Cross(rA, normal), rnB = Cross(rB, normal);
+        const RealW K = g.invMassA + g.invMassB + g.invIA * rnA * rnA + g.invIB * rnB * rnB;
+        const MaskW solvable = g.hasPoint[j] & (K > 0);
+        const RealW impulse = Select(solvable, -C / Select(solvable, K, Splat(1)), Splat(0));
+        const Vec2W P = impulse * normal;
+        a.c = a.c - g.invMassA * P;
+        a.a = a.a - g.invIA * Cross(rA, P);
+        b.c = b.c + g.invMassB * P;
+        b.a = b.a + g.invIB * Cross(rB, P);
+    }
+    ScatterPositions(positions, g.indexA, g.writeA, a);
+    ScatterPositions(positions, g.indexB, g.writeB, b);
+    return minSeparation;
+}
+
+} // namespace
+
+void ColoredContactSolver::Prepare(std::span<const ContactVelocityConstraint> velocity,
+                                   std::span<const ContactPositionConstraint> position,
+                                   bool blockSolver)
+{
+    m_blockSolver = blockSolver;
+    ColorContacts(velocity, m_coloring);
+    m_velocityGroups.clear();
+    m_positionGroups.clear();
+    for (int color = 0; color < m_coloring.ColorCount(); ++color)
+    {
+        const std::int32_t begin = m_coloring.colorStarts[color];
+        const std::int32_t end = m_coloring.colorStarts[color + 1];
+        for (std::int32_t first = begin; first < end; first += kLanes)
+        {
+            // Empty lanes read body 0 and write nothing; all their masses are zero.
+            ContactVelocityGroup& vg = m_velocityGroups.emplace_back();
+            ContactPositionGroup& pg = m_positionGroups.emplace_back();
+            for (int l = 0; l < kLanes; ++l)
+            {
+                vg.source[l] = -1;
+                vg.indexA[l] = vg.indexB[l] = pg.indexA[l] = pg.indexB[l] = 0;
+                vg.writeA[l] = vg.writeB[l] = pg.writeA[l] = pg.writeB[l] = 0;
+            }
+            for (int l = 0; l < kLanes && first + l < end; ++l)
+            {
+                const std::int32_t i = m_coloring.order[first + l];
+                PackVelocityLane(vg, l, velocity[i], i, blockSolver);
+                PackPositionLane(pg, l, position[i]);
+            }
+        }
+    }
+}
+
+void ColoredContactSolver::SolveVelocities(std::span<ContactVelocityConstraint> velocity,
+                                           SolverData& data)
+{
+    for (ContactVelocityGroup& group : m_velocityGroups)
+    {
+        SolveVelocityGroup(group, data.velocities);
+    }
+    for (const std::int32_t i : m_coloring.overflow)
+    {
+        SolveVelocityConstraint(velocity[i], data.velocities, m_blockSolver);
+    }
+}
+
+void ColoredContactSolver::StoreImpulses(std::span<ContactVelocityConstraint> velocity) const
+{
+    for (const ContactVelocityGroup& group : m_velocityGroups)
+    {
+        for (int l = 0; l < kLanes; ++l)
+        {
+            if (group.source[l] < 0)
+            {
+                continue;
+            }
+            ContactVelocityConstraint& vc = velocity[group.source[l]];
+            for (int j = 0; j < vc.pointCount; ++j)
+            {
+                vc.points[j].normalImpulse = group.normalImpulse[j][l];
+                vc.points[j].tangentImpulse = group.tangentImpulse[j][l];
+            }
+        }
+    }
+}
+
+bool ColoredContactSolver::SolvePositions(std::span<const ContactPositionConstraint> position,
+                                          SolverData& data)
+{
+    const Tolerances& tol = data.step.tolerances;
+    RealW minSeparationW = Splat(0);
+    for (const ContactPositionGroup& group : m_positionGroups)
+    {
+        minSeparationW =
+            MinW(minSeparationW, SolvePositionGroup(group, data.positions, tol, tol.baumgarte));
+    }
+    Real minSeparation = 0;
+    for (int l = 0; l < kLanes; ++l)
+    {
+        minSeparation = Min(minSeparation, minSeparationW[l]);
+    }
+    for (const std::int32_t i : m_coloring.overflow)
+    {
+        const ContactPositionConstraint& pc = position[i];
+        minSeparation = Min(
+            minSeparation, SolvePositionConstraint(pc, data.positions, tol, tol.baumgarte,
+                                                   {pc.invMassA, pc.invMassB, pc.invIA, pc.invIB}));
+    }
+    // As ContactSolver::SolvePositions: −3·slop counts as solved.
+    return minSeparation >= Real(-3) * tol.linearSlop;
+}
+
+} // namespace meff::detail

@@ -1,0 +1,75 @@
+// The contact solver by colours (SolverSettings::graphColoring). The same rows, effective
+// masses, clamps, block solver and position pass as ContactSolver (Box2D 2.4.1's algorithm,
+// with the same iteration counts), visited in another order: colour after colour, each colour's
+// contacts four at a time in SIMD lanes (wide_real.h), contacts no colour could take one by
+// one at the end. A colour's contacts share no moving body, so lanes never write the same
+// body. What changes is the Gauss-Seidel order, so results differ from Box2D's — by round-off in
+// a single contact, by the order's effect on convergence in a pile — and are validated by
+// settled-state checks instead of bit for bit.
+#pragma once
+
+#include "dynamics/contact_coloring.h"
+#include "dynamics/contact_constraint.h"
+#include "dynamics/wide_real.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace meff::detail
+{
+
+/// Four contacts' velocity rows, one per lane. A lane with one point has a second point with
+/// zero masses, which the updates leave unchanged; an empty lane has zero masses throughout.
+struct ContactVelocityGroup
+{
+    std::int32_t source[kLanes];                 ///< constraint index, −1 for an empty lane
+    std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices (0 in empty lanes)
+    std::uint8_t writeA[kLanes], writeB[kLanes]; ///< 1 where the lane moves that body
+    RealW invMassA, invMassB, invIA, invIB, friction;
+    Vec2W normal;
+    Vec2W rA[2], rB[2];
+    RealW normalMass[2], tangentMass[2], velocityBias[2]; ///< 1/k of each row (kg); m/s
+    RealW normalImpulse[2], tangentImpulse[2];            ///< accumulated (N·s)
+    RealW k11, k12, k22;                                  ///< block matrix K
+    RealW inv11, inv12, inv21, inv22;                     ///< K⁻¹
+    MaskW block; ///< lanes whose normal rows are solved as the 2×2 block
+    bool anyBlock = false, anyScalar = false;
+};
+
+/// Four contacts' position constraints, one per lane.
+struct ContactPositionGroup
+{
+    std::int32_t indexA[kLanes], indexB[kLanes];
+    std::uint8_t writeA[kLanes], writeB[kLanes];
+    RealW invMassA, invMassB, invIA, invIB;
+    Vec2W localCenterA, localCenterB, localNormal, localPoint;
+    Vec2W localPoints[2];
+    RealW radiusA, radiusB;
+    MaskW circles, faceB; ///< manifold type (FaceA otherwise)
+    MaskW hasPoint[2];
+};
+
+class ColoredContactSolver
+{
+  public:
+    /// Colours the prepared constraints and packs them four to a group.
+    void Prepare(std::span<const ContactVelocityConstraint> velocity,
+                 std::span<const ContactPositionConstraint> position, bool blockSolver);
+    /// One velocity sweep: the colours in order, then the overflow in island order.
+    void SolveVelocities(std::span<ContactVelocityConstraint> velocity, SolverData& data);
+    /// Copies the lanes' accumulated impulses back into the constraints.
+    void StoreImpulses(std::span<ContactVelocityConstraint> velocity) const;
+    /// One position sweep; true when no point overlaps more than 3·slop.
+    bool SolvePositions(std::span<const ContactPositionConstraint> position, SolverData& data);
+
+    const ContactColoring& Coloring() const { return m_coloring; }
+
+  private:
+    ContactColoring m_coloring;
+    std::vector<ContactVelocityGroup> m_velocityGroups;
+    std::vector<ContactPositionGroup> m_positionGroups;
+    bool m_blockSolver = true;
+};
+
+} // namespace meff::detail

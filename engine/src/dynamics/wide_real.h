@@ -1,0 +1,153 @@
+// Four Reals side by side, so that four independent constraints are solved by one instruction
+// stream (SIMD). Written with GCC's vector extensions (also understood by Clang): SSE2 on
+// x86-64, NEON on ARM, scalar code elsewhere — no intrinsics, no extra dependency. Every lane
+// does exactly the operations the scalar solver does, in the same order; only which
+// constraints run together changes (see contact_coloring.h).
+#pragma once
+
+#include "meff/math.h"
+
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
+namespace meff::detail
+{
+
+inline constexpr int kLanes = 4;
+
+using RealW = Real __attribute__((vector_size(kLanes * sizeof(Real))));
+/// A lane mask: all bits set in the lanes where a comparison holds.
+using MaskW = decltype(RealW{} < RealW{});
+
+inline RealW Splat(Real x)
+{
+    return RealW{} + x;
+}
+inline RealW Select(MaskW m, RealW ifTrue, RealW ifFalse)
+{
+    return m ? ifTrue : ifFalse;
+}
+inline RealW MinW(RealW a, RealW b)
+{
+    return a < b ? a : b;
+}
+inline RealW MaxW(RealW a, RealW b)
+{
+    return a > b ? a : b;
+}
+inline bool AnyLane(MaskW m)
+{
+    for (int l = 0; l < kLanes; ++l)
+    {
+        if (m[l] != 0)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+struct Vec2W
+{
+    RealW x, y;
+};
+
+inline Vec2W operator+(Vec2W a, Vec2W b)
+{
+    return {a.x + b.x, a.y + b.y};
+}
+inline Vec2W operator-(Vec2W a, Vec2W b)
+{
+    return {a.x - b.x, a.y - b.y};
+}
+inline Vec2W operator*(RealW s, Vec2W a)
+{
+    return {s * a.x, s * a.y};
+}
+inline RealW Dot(Vec2W a, Vec2W b)
+{
+    return a.x * b.x + a.y * b.y;
+}
+/// a × b (the z of the 3D cross product).
+inline RealW Cross(Vec2W a, Vec2W b)
+{
+    return a.x * b.y - a.y * b.x;
+}
+/// w × r for an angular velocity w: (−w·r.y, w·r.x).
+inline Vec2W Cross(RealW w, Vec2W r)
+{
+    return {-w * r.y, w * r.x};
+}
+inline Vec2W Select(MaskW m, Vec2W ifTrue, Vec2W ifFalse)
+{
+    return {m ? ifTrue.x : ifFalse.x, m ? ifTrue.y : ifFalse.y};
+}
+
+/// Four rotations: sine and cosine of each lane's angle.
+struct RotW
+{
+    RealW s, c;
+};
+
+/// q·v: each lane's vector rotated by its rotation.
+inline Vec2W Mul(RotW q, Vec2W v)
+{
+    return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+}
+
+/// Sine and cosine of four angles at once, each within about an ulp of std::sin/std::cos.
+/// The angle is reduced by the nearest multiple k of π/2, r = a − k·π/2 with |r| ≤ π/4, π/2 split
+/// into three floats (Cody and Waite) whose leading two have so few bits that k·C1 and k·C2 are
+/// exact for |k| < 4096; sin r and cos r are their Taylor series to r⁹ and r¹⁰, whose first
+/// omitted terms, (π/4)¹¹/11! and (π/4)¹²/12!, are below 2e-9, under float's half ulp. Lanes
+/// beyond 6000 rad (k too large for exact products) or non-finite, and double builds, use the
+/// standard library.
+inline RotW SinCosW(RealW angle)
+{
+    constexpr Real kReducible = Real(6000);
+    bool reducible = std::is_same_v<Real, float>;
+    for (int l = 0; l < kLanes && reducible; ++l)
+    {
+        reducible = std::abs(angle[l]) <= kReducible;
+    }
+    if (!reducible)
+    {
+        RotW q{};
+        for (int l = 0; l < kLanes; ++l)
+        {
+            q.s[l] = std::sin(angle[l]);
+            q.c[l] = std::cos(angle[l]);
+        }
+        return q;
+    }
+
+    using IntW = decltype(RealW{} < RealW{});
+    constexpr Real kTwoOverPi = Real(0.636619772367581343);
+    constexpr Real kHalfPi1 = Real(1.5703125);              // 201/128
+    constexpr Real kHalfPi2 = Real(4.838705062866211e-4);   // 12 significant bits
+    constexpr Real kHalfPi3 = Real(-4.371138828673793e-08); // π/2 − C1 − C2
+    // Adding and subtracting 1.5·2²³ rounds a float to the nearest integer (|x| < 2²²).
+    constexpr Real kRoundingShift = Real(12582912.0);
+    const RealW k = (angle * kTwoOverPi + kRoundingShift) - kRoundingShift;
+    const RealW r = ((angle - k * kHalfPi1) - k * kHalfPi2) - k * kHalfPi3;
+    const RealW r2 = r * r;
+    const RealW sinR =
+        r + r * r2 *
+                (Real(-1.0 / 6) +
+                 r2 * (Real(1.0 / 120) + r2 * (Real(-1.0 / 5040) + r2 * Real(1.0 / 362880))));
+    const RealW cosR =
+        1 +
+        r2 * (Real(-1.0 / 2) +
+              r2 * (Real(1.0 / 24) + r2 * (Real(-1.0 / 720) +
+                                           r2 * (Real(1.0 / 40320) + r2 * Real(-1.0 / 3628800)))));
+
+    // a = k·π/2 + r: quadrant k mod 4 swaps sine and cosine and sets their signs.
+    const IntW quadrant = __builtin_convertvector(k, IntW) & 3;
+    const IntW swap = (quadrant & 1) != 0;
+    const RealW s = swap ? cosR : sinR;
+    const RealW c = swap ? sinR : cosR;
+    return {(quadrant & 2) != 0 ? -s : s, ((quadrant + 1) & 2) != 0 ? -c : c};
+}
+
+} // namespace meff::detail
