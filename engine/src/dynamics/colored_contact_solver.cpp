@@ -8,84 +8,59 @@ namespace meff::detail
 namespace
 {
 
-/// Velocities of four lanes' bodies.
-struct BodyVelocityW
+/// One body state of four lanes: a velocity (v, w) or a position (c, a).
+struct BodyStateW
 {
-    Vec2W v;
-    RealW w;
+    Vec2W linear;  ///< v (m/s) or c (m)
+    RealW angular; ///< w (rad/s) or a (rad)
 };
 
-BodyVelocityW GatherVelocities(const Velocity* velocities, const std::int32_t (&index)[kLanes])
+/// Reads the lanes' bodies from the island's velocities or positions.
+template <auto Linear, auto Angular, typename State>
+BodyStateW Gather(const State* states, const std::int32_t (&index)[kLanes])
 {
-    BodyVelocityW out{};
+    BodyStateW out{};
     for (int l = 0; l < kLanes; ++l)
     {
-        const Velocity& body = velocities[index[l]];
-        out.v.x[l] = body.v.x;
-        out.v.y[l] = body.v.y;
-        out.w[l] = body.w;
+        const State& state = states[index[l]];
+        out.linear.x[l] = (state.*Linear).x;
+        out.linear.y[l] = (state.*Linear).y;
+        out.angular[l] = state.*Angular;
     }
     return out;
 }
 
-void ScatterVelocities(Velocity* velocities, const std::int32_t (&index)[kLanes],
-                       const std::uint8_t (&write)[kLanes], const BodyVelocityW& in)
+/// Writes back the lanes that move their body (a colour's lanes never share one).
+template <auto Linear, auto Angular, typename State>
+void Scatter(State* states, const std::int32_t (&index)[kLanes],
+             const std::uint8_t (&write)[kLanes], const BodyStateW& in)
 {
     for (int l = 0; l < kLanes; ++l)
     {
         if (write[l] != 0)
         {
-            velocities[index[l]] = {{in.v.x[l], in.v.y[l]}, in.w[l]};
-        }
-    }
-}
-
-/// Centres of mass and angles of four lanes' bodies.
-struct BodyPositionW
-{
-    Vec2W c;
-    RealW a;
-};
-
-BodyPositionW GatherPositions(const Position* positions, const std::int32_t (&index)[kLanes])
-{
-    BodyPositionW out{};
-    for (int l = 0; l < kLanes; ++l)
-    {
-        const Position& body = positions[index[l]];
-        out.c.x[l] = body.c.x;
-        out.c.y[l] = body.c.y;
-        out.a[l] = body.a;
-    }
-    return out;
-}
-
-void ScatterPositions(Position* positions, const std::int32_t (&index)[kLanes],
-                      const std::uint8_t (&write)[kLanes], const BodyPositionW& in)
-{
-    for (int l = 0; l < kLanes; ++l)
-    {
-        if (write[l] != 0)
-        {
-            positions[index[l]] = {{in.c.x[l], in.c.y[l]}, in.a[l]};
+            State state{};
+            state.*Linear = {in.linear.x[l], in.linear.y[l]};
+            state.*Angular = in.angular[l];
+            states[index[l]] = state;
         }
     }
 }
 
 /// Relative velocity of B's contact point with respect to A's, per lane.
-Vec2W RelativeVelocity(const BodyVelocityW& a, const BodyVelocityW& b, Vec2W rA, Vec2W rB)
+Vec2W RelativeVelocity(const BodyStateW& a, const BodyStateW& b, Vec2W rA, Vec2W rB)
 {
-    return b.v + Cross(b.w, rB) - a.v - Cross(a.w, rA);
+    return b.linear + Cross(b.angular, rB) - a.linear - Cross(a.angular, rA);
 }
 
 /// Applies impulse P at lever arms rA, rB (−P to A, +P to B).
-void ApplyImpulse(const ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b, Vec2W rA,
-                  Vec2W rB, Vec2W P)
+void ApplyImpulse(const ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b, Vec2W rA, Vec2W rB,
+                  Vec2W P)
 {
-    a.v = a.v - g.invMassA * P;
-    a.w = a.w - g.invIA * Cross(rA, P);
-    b.v = b.v + g.invMassB * P;
-    b.w = b.w + g.invIB * Cross(rB, P);
+    a.linear = a.linear - g.invMassA * P;
+    a.angular = a.angular - g.invIA * Cross(rA, P);
+    b.linear = b.linear + g.invMassB * P;
+    b.angular = b.angular + g.invIB * Cross(rB, P);
 }
 
 void PackVelocityLane(ContactVelocityGroup& g, int l, const ContactVelocityConstraint& vc,
@@ -160,7 +135,7 @@ void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConst
 }
 
 /// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn).
-void SolveFriction(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b)
+void SolveFriction(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
 {
     const Vec2W tangent{g.normal.y, -g.normal.x};
     for (int j = 0; j < 2; ++j)
@@ -176,7 +151,7 @@ void SolveFriction(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b)
 }
 
 /// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0.
-void SolveNormalRows(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b)
+void SolveNormalRows(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
 {
     for (int j = 0; j < 2; ++j)
     {
@@ -192,7 +167,7 @@ void SolveNormalRows(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
 /// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
 /// impulses.
-void SolveNormalBlock(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& b)
+void SolveNormalBlock(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
 {
     const RealW a1 = g.normalImpulse[0], a2 = g.normalImpulse[1];
     const RealW vn1 = Dot(RelativeVelocity(a, b, g.rA[0], g.rB[0]), g.normal);
@@ -227,18 +202,18 @@ void SolveNormalBlock(ContactVelocityGroup& g, BodyVelocityW& a, BodyVelocityW& 
 
     const Vec2W P1 = (new1 - a1) * g.normal;
     const Vec2W P2 = (new2 - a2) * g.normal;
-    a.v = a.v - g.invMassA * (P1 + P2);
-    a.w = a.w - g.invIA * (Cross(g.rA[0], P1) + Cross(g.rA[1], P2));
-    b.v = b.v + g.invMassB * (P1 + P2);
-    b.w = b.w + g.invIB * (Cross(g.rB[0], P1) + Cross(g.rB[1], P2));
+    a.linear = a.linear - g.invMassA * (P1 + P2);
+    a.angular = a.angular - g.invIA * (Cross(g.rA[0], P1) + Cross(g.rA[1], P2));
+    b.linear = b.linear + g.invMassB * (P1 + P2);
+    b.angular = b.angular + g.invIB * (Cross(g.rB[0], P1) + Cross(g.rB[1], P2));
     g.normalImpulse[0] = new1;
     g.normalImpulse[1] = new2;
 }
 
 void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
 {
-    BodyVelocityW a = GatherVelocities(velocities, g.indexA);
-    BodyVelocityW b = GatherVelocities(velocities, g.indexB);
+    BodyStateW a = Gather<&Velocity::v, &Velocity::w>(velocities, g.indexA);
+    BodyStateW b = Gather<&Velocity::v, &Velocity::w>(velocities, g.indexB);
     SolveFriction(g, a, b);
     if (!g.anyBlock)
     {
@@ -251,21 +226,21 @@ void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
     else
     {
         // Mixed group: each lane takes the velocities and impulses of its own kind of solve.
-        BodyVelocityW aRows = a, bRows = b;
+        BodyStateW aRows = a, bRows = b;
         ContactVelocityGroup rows = g;
         SolveNormalRows(rows, aRows, bRows);
         SolveNormalBlock(g, a, b);
-        a.v = Select(g.block, a.v, aRows.v);
-        a.w = Select(g.block, a.w, aRows.w);
-        b.v = Select(g.block, b.v, bRows.v);
-        b.w = Select(g.block, b.w, bRows.w);
+        a.linear = Select(g.block, a.linear, aRows.linear);
+        a.angular = Select(g.block, a.angular, aRows.angular);
+        b.linear = Select(g.block, b.linear, bRows.linear);
+        b.angular = Select(g.block, b.angular, bRows.angular);
         for (int j = 0; j < 2; ++j)
         {
             g.normalImpulse[j] = Select(g.block, g.normalImpulse[j], rows.normalImpulse[j]);
         }
     }
-    ScatterVelocities(velocities, g.indexA, g.writeA, a);
-    ScatterVelocities(velocities, g.indexB, g.writeB, b);
+    Scatter<&Velocity::v, &Velocity::w>(velocities, g.indexA, g.writeA, a);
+    Scatter<&Velocity::v, &Velocity::w>(velocities, g.indexB, g.writeB, b);
 }
 
 /// One body's transform per lane from its centre of mass, angle and local centre.
@@ -275,10 +250,10 @@ struct TransformW
     Vec2W p;
 };
 
-TransformW TransformFromCenter(const BodyPositionW& body, Vec2W localCenter)
+TransformW TransformFromCenter(const BodyStateW& body, Vec2W localCenter)
 {
-    const RotW q = SinCosW(body.a);
-    return {q, body.c - Mul(q, localCenter)};
+    const RotW q = SinCosW(body.angular);
+    return {q, body.linear - Mul(q, localCenter)};
 }
 
 Vec2W Mul(const TransformW& xf, Vec2W v)
@@ -291,8 +266,8 @@ Vec2W Mul(const TransformW& xf, Vec2W v)
 RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, const Tolerances& tol,
                          Real baumgarte)
 {
-    BodyPositionW a = GatherPositions(positions, g.indexA);
-    BodyPositionW b = GatherPositions(positions, g.indexB);
+    BodyStateW a = Gather<&Position::c, &Position::a>(positions, g.indexA);
+    BodyStateW b = Gather<&Position::c, &Position::a>(positions, g.indexB);
     RealW minSeparation = Splat(0);
     for (int j = 0; j < 2; ++j)
     {
@@ -334,8 +309,8 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
             Select(g.circles, Splat(Real(0.5)) * (planePoint + clipPoint), clipPoint);
         normal = Select(g.faceB, Vec2W{-normal.x, -normal.y}, normal);
 
-        const Vec2W rA = point - a.c;
-        const Vec2W rB = point - b.c;
+        const Vec2W rA = point - a.linear;
+        const Vec2W rB = point - b.linear;
         minSeparation = Select(g.hasPoint[j], MinW(minSeparation, separation), minSeparation);
 
         // Baumgarte-scaled correction leaving linearSlop of overlap, at most
@@ -348,13 +323,13 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
         const MaskW solvable = g.hasPoint[j] & (K > 0);
         const RealW impulse = Select(solvable, -C / Select(solvable, K, Splat(1)), Splat(0));
         const Vec2W P = impulse * normal;
-        a.c = a.c - g.invMassA * P;
-        a.a = a.a - g.invIA * Cross(rA, P);
-        b.c = b.c + g.invMassB * P;
-        b.a = b.a + g.invIB * Cross(rB, P);
+        a.linear = a.linear - g.invMassA * P;
+        a.angular = a.angular - g.invIA * Cross(rA, P);
+        b.linear = b.linear + g.invMassB * P;
+        b.angular = b.angular + g.invIB * Cross(rB, P);
     }
-    ScatterPositions(positions, g.indexA, g.writeA, a);
-    ScatterPositions(positions, g.indexB, g.writeB, b);
+    Scatter<&Position::c, &Position::a>(positions, g.indexA, g.writeA, a);
+    Scatter<&Position::c, &Position::a>(positions, g.indexB, g.writeB, b);
     return minSeparation;
 }
 

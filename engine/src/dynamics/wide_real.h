@@ -48,6 +48,18 @@ inline bool AnyLane(MaskW m)
     return false;
 }
 
+inline bool AllLanes(MaskW m)
+{
+    for (int l = 0; l < kLanes; ++l)
+    {
+        if (m[l] == 0)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
 struct Vec2W
 {
     RealW x, y;
@@ -103,23 +115,25 @@ inline Vec2W Mul(RotW q, Vec2W v)
 /// omitted terms, (π/4)¹¹/11! and (π/4)¹²/12!, are below 2e-9, under float's half ulp. Lanes
 /// beyond 6000 rad (k too large for exact products) or non-finite, and double builds, use the
 /// standard library.
-inline RotW SinCosW(RealW angle)
+/// SinCosW's exact fallback, lane by lane through the standard library.
+[[gnu::noinline, gnu::cold]] inline RotW SinCosLanes(RealW angle)
+{
+    RotW q{};
+    for (int l = 0; l < kLanes; ++l)
+    {
+        q.s[l] = std::sin(angle[l]);
+        q.c[l] = std::cos(angle[l]);
+    }
+    return q;
+}
+
+[[gnu::always_inline]] inline RotW SinCosW(RealW angle)
 {
     constexpr Real kReducible = Real(6000);
-    bool reducible = std::is_same_v<Real, float>;
-    for (int l = 0; l < kLanes && reducible; ++l)
+    const MaskW reducible = (angle <= kReducible) & (angle >= -kReducible); // false for NaN
+    if (!std::is_same_v<Real, float> || !AllLanes(reducible))
     {
-        reducible = std::abs(angle[l]) <= kReducible;
-    }
-    if (!reducible)
-    {
-        RotW q{};
-        for (int l = 0; l < kLanes; ++l)
-        {
-            q.s[l] = std::sin(angle[l]);
-            q.c[l] = std::cos(angle[l]);
-        }
-        return q;
+        return SinCosLanes(angle);
     }
 
     using IntW = decltype(RealW{} < RealW{});
