@@ -150,41 +150,23 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
 
     // Reference polygon 1 and incident polygon 2. A's face is preferred unless B's is clearly
     // better, so that the reference face does not flicker between the two.
-    const Polygon* poly1;
-    const Polygon* poly2;
-    Transform xf1, xf2;
-    int edge1;
-    bool flip;
-    if (separationB > separationA + kReferenceFaceTolerance)
-    {
-        poly1 = &polygonB;
-        poly2 = &polygonA;
-        xf1 = xfB;
-        xf2 = xfA;
-        edge1 = edgeB;
-        manifold.type = Manifold::Type::FaceB;
-        flip = true;
-    }
-    else
-    {
-        poly1 = &polygonA;
-        poly2 = &polygonB;
-        xf1 = xfA;
-        xf2 = xfB;
-        edge1 = edgeA;
-        manifold.type = Manifold::Type::FaceA;
-        flip = false;
-    }
+    const bool flip = separationB > separationA + kReferenceFaceTolerance;
+    const Polygon& poly1 = flip ? polygonB : polygonA;
+    const Polygon& poly2 = flip ? polygonA : polygonB;
+    const Transform& xf1 = flip ? xfB : xfA;
+    const Transform& xf2 = flip ? xfA : xfB;
+    const int edge1 = flip ? edgeB : edgeA;
+    manifold.type = flip ? Manifold::Type::FaceB : Manifold::Type::FaceA;
 
     detail::ClipVertex incidentEdge[2];
-    FindIncidentEdge(incidentEdge, *poly1, xf1, edge1, *poly2, xf2);
+    FindIncidentEdge(incidentEdge, poly1, xf1, edge1, poly2, xf2);
 
-    const int count1 = poly1->count;
+    const int count1 = poly1.count;
     const int iv1 = edge1;
     const int iv2 = edge1 + 1 < count1 ? edge1 + 1 : 0;
 
-    Vec2 v11 = poly1->vertices[iv1];
-    Vec2 v12 = poly1->vertices[iv2];
+    Vec2 v11 = poly1.vertices[iv1];
+    Vec2 v12 = poly1.vertices[iv2];
 
     Vec2 localTangent = v12 - v11;
     localTangent.Normalize();
