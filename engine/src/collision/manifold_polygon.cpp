@@ -13,68 +13,82 @@ namespace
 /// which may round differently) so that the flip decision agrees bit for bit.
 constexpr Real kReferenceFaceTolerance = Real(0.1) * detail::kCollisionLinearSlop;
 
-/// The greatest separation of poly2 from poly1 along poly1's face normals; writes the face.
+/// Faces of one polygon placed in another polygon's frame, laid out for b2FindMaxSeparation's
+/// search: one face per lane of small fixed-size arrays (structure of arrays), so that the
+/// compiler can evaluate several faces in one SIMD instruction.
 ///
-/// Laid out for speed, with Box2D's arithmetic kept: each of poly1's faces is one lane of
-/// small fixed-size arrays (structure of arrays), so the compiler can evaluate several faces
-/// in one SIMD instruction. Every lane performs exactly the scalar operations of
-/// b2FindMaxSeparation in the same order (no reassociation: -ffp-contract=off and no fast-math),
-/// and each face's running minimum visits poly2's vertices in order with the same strict `<`,
-/// so the separations, and the face picked on ties, are bit for bit Box2D's.
+/// Box2D's arithmetic is kept bit for bit: every lane performs exactly the scalar operations of
+/// b2FindMaxSeparation for its face, in the same order (no reassociation: -ffp-contract=off and
+/// no fast-math), and each face's running minimum visits the other polygon's vertices in order
+/// with the same strict `<`. Lanes past the polygon's count hold its zero padding; they are
+/// computed but never read back.
 template <int kLanes>
-Real FindMaxSeparationLanes(int& edgeIndex, const Polygon& poly1, const Transform& xf1,
-                            const Polygon& poly2, const Transform& xf2)
+struct FaceLanes
 {
     static_assert(kLanes <= kMaxPolygonVertices);
-    const Transform xf = MulT(xf2, xf1);
 
-    // Faces of poly1 in poly2's frame: the normal n = xf.q·normal and the face's first vertex
-    // v1 = xf·vertex, written out as Mul(Rot, Vec2) and Mul(Transform, Vec2) do. Lanes past
-    // poly1.count hold the polygon's zero padding and are never read back.
     Real nx[kLanes];
     Real ny[kLanes];
     Real vx[kLanes];
     Real vy[kLanes];
     Real minSeparation[kLanes];
-    for (int i = 0; i < kLanes; ++i)
-    {
-        const Vec2 normal = poly1.normals[i];
-        const Vec2 vertex = poly1.vertices[i];
-        nx[i] = xf.q.c * normal.x - xf.q.s * normal.y;
-        ny[i] = xf.q.s * normal.x + xf.q.c * normal.y;
-        vx[i] = (xf.q.c * vertex.x - xf.q.s * vertex.y) + xf.p.x;
-        vy[i] = (xf.q.s * vertex.x + xf.q.c * vertex.y) + xf.p.y;
-        minSeparation[i] = kMaxReal;
-    }
 
-    // The deepest vertex of poly2 along each face normal: Dot(n, w - v1) per face.
-    const int count2 = poly2.count;
-    for (int j = 0; j < count2; ++j)
+    /// Face i's normal n = xf.q·normal and first vertex v1 = xf·vertex, written out as
+    /// Mul(Rot, Vec2) and Mul(Transform, Vec2) do.
+    FaceLanes(const Polygon& poly, const Transform& xf)
     {
-        const Real wx = poly2.vertices[j].x;
-        const Real wy = poly2.vertices[j].y;
         for (int i = 0; i < kLanes; ++i)
         {
-            const Real sij = nx[i] * (wx - vx[i]) + ny[i] * (wy - vy[i]);
+            const Vec2 normal = poly.normals[i];
+            const Vec2 vertex = poly.vertices[i];
+            nx[i] = xf.q.c * normal.x - xf.q.s * normal.y;
+            ny[i] = xf.q.s * normal.x + xf.q.c * normal.y;
+            vx[i] = (xf.q.c * vertex.x - xf.q.s * vertex.y) + xf.p.x;
+            vy[i] = (xf.q.s * vertex.x + xf.q.c * vertex.y) + xf.p.y;
+            minSeparation[i] = kMaxReal;
+        }
+    }
+
+    /// Lowers each face's separation to vertex w of the other polygon if deeper: Dot(n, w − v1).
+    void Visit(Vec2 w)
+    {
+        for (int i = 0; i < kLanes; ++i)
+        {
+            const Real sij = nx[i] * (w.x - vx[i]) + ny[i] * (w.y - vy[i]);
             minSeparation[i] = sij < minSeparation[i] ? sij : minSeparation[i];
         }
     }
 
-    // The first face with the greatest separation, as Box2D's strict `>`.
-    const int count1 = poly1.count;
-    int bestIndex = 0;
-    Real maxSeparation = -kMaxReal;
-    for (int i = 0; i < count1; ++i)
+    /// The greatest separation over the first `count` faces; writes the first face reaching it
+    /// (Box2D's strict `>`).
+    Real MaxSeparation(int count, int& edgeIndex) const
     {
-        if (minSeparation[i] > maxSeparation)
+        int bestIndex = 0;
+        Real maxSeparation = -kMaxReal;
+        for (int i = 0; i < count; ++i)
         {
-            maxSeparation = minSeparation[i];
-            bestIndex = i;
+            if (minSeparation[i] > maxSeparation)
+            {
+                maxSeparation = minSeparation[i];
+                bestIndex = i;
+            }
         }
+        edgeIndex = bestIndex;
+        return maxSeparation;
     }
+};
 
-    edgeIndex = bestIndex;
-    return maxSeparation;
+/// The greatest separation of poly2 from poly1 along poly1's face normals; writes the face.
+template <int kLanes>
+Real FindMaxSeparationLanes(int& edgeIndex, const Polygon& poly1, const Transform& xf1,
+                            const Polygon& poly2, const Transform& xf2)
+{
+    FaceLanes<kLanes> faces(poly1, MulT(xf2, xf1));
+    for (int j = 0; j < poly2.count; ++j)
+    {
+        faces.Visit(poly2.vertices[j]);
+    }
+    return faces.MaxSeparation(poly1.count, edgeIndex);
 }
 
 /// FindMaxSeparationLanes with as few lanes as poly1 needs: boxes and other small polygons use
@@ -87,6 +101,28 @@ Real FindMaxSeparation(int& edgeIndex, const Polygon& poly1, const Transform& xf
         return FindMaxSeparationLanes<4>(edgeIndex, poly1, xf1, poly2, xf2);
     }
     return FindMaxSeparationLanes<kMaxPolygonVertices>(edgeIndex, poly1, xf1, poly2, xf2);
+}
+
+/// Both searches of CollidePolygons at once, for polygons of at most four vertices (boxes,
+/// triangles): A's faces against B's vertices and B's faces against A's, with one vertex loop
+/// of fixed length four. A triangle's missing fourth vertex is its last vertex again: a repeated
+/// vertex gives the same separation bits, which the strict `<` ignores, so each minimum is the
+/// one Box2D's loop over the real vertices finds.
+void FindMaxSeparationsOfSmallPolygons(int& edgeA, Real& separationA, int& edgeB, Real& separationB,
+                                       const Polygon& polygonA, const Transform& xfA,
+                                       const Polygon& polygonB, const Transform& xfB)
+{
+    FaceLanes<4> facesA(polygonA, MulT(xfB, xfA));
+    FaceLanes<4> facesB(polygonB, MulT(xfA, xfB));
+    const int lastA = polygonA.count - 1;
+    const int lastB = polygonB.count - 1;
+    for (int j = 0; j < 4; ++j)
+    {
+        facesA.Visit(polygonB.vertices[j < lastB ? j : lastB]);
+        facesB.Visit(polygonA.vertices[j < lastA ? j : lastA]);
+    }
+    separationA = facesA.MaxSeparation(polygonA.count, edgeA);
+    separationB = facesB.MaxSeparation(polygonB.count, edgeB);
 }
 
 /// The face of poly2 most anti-parallel to face `edge1` of poly1, in world coordinates.
@@ -135,17 +171,32 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
     const Real totalRadius = polygonA.radius + polygonB.radius;
 
     int edgeA = 0;
-    const Real separationA = FindMaxSeparation(edgeA, polygonA, xfA, polygonB, xfB);
-    if (separationA > totalRadius)
-    {
-        return;
-    }
-
     int edgeB = 0;
-    const Real separationB = FindMaxSeparation(edgeB, polygonB, xfB, polygonA, xfA);
-    if (separationB > totalRadius)
+    Real separationA;
+    Real separationB;
+    if (polygonA.count <= 4 && polygonB.count <= 4)
     {
-        return;
+        // Box2D stops after A's search if A's face already separates the pair; computing B's
+        // as well changes no result, and one fused search is cheaper than two.
+        FindMaxSeparationsOfSmallPolygons(edgeA, separationA, edgeB, separationB, polygonA, xfA,
+                                          polygonB, xfB);
+        if (separationA > totalRadius || separationB > totalRadius)
+        {
+            return;
+        }
+    }
+    else
+    {
+        separationA = FindMaxSeparation(edgeA, polygonA, xfA, polygonB, xfB);
+        if (separationA > totalRadius)
+        {
+            return;
+        }
+        separationB = FindMaxSeparation(edgeB, polygonB, xfB, polygonA, xfA);
+        if (separationB > totalRadius)
+        {
+            return;
+        }
     }
 
     // Reference polygon 1 and incident polygon 2. A's face is preferred unless B's is clearly
