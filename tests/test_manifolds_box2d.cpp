@@ -122,7 +122,8 @@ TEST_CASE("CollidePolygons and WorldManifold agree bit for bit with Box2D 2.4.1"
         }
     }
     // The draw must reach every branch compared above: touching pairs with either reference
-    // face, pairs taking the fused small-polygon search, and triangles (the padded case).
+    // face, pairs of small polygons (the fixed-length vertex loop), and triangles (the padded
+    // case).
     CHECK(touching > 2000);
     CHECK(flipped > 500);
     CHECK(smallPairs > 2000);

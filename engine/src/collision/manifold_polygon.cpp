@@ -84,15 +84,29 @@ Real FindMaxSeparationLanes(int& edgeIndex, const Polygon& poly1, const Transfor
                             const Polygon& poly2, const Transform& xf2)
 {
     FaceLanes<kLanes> faces(poly1, MulT(xf2, xf1));
-    for (int j = 0; j < poly2.count; ++j)
+    const int count2 = poly2.count;
+    if (count2 <= 4)
     {
-        faces.Visit(poly2.vertices[j]);
+        // A loop of fixed length four, which the compiler unrolls. A triangle's missing fourth
+        // vertex is its last vertex again: a repeated vertex gives the same separation bits,
+        // which the strict `<` ignores, so each minimum is the one Box2D's loop finds.
+        const int last = count2 - 1;
+        for (int j = 0; j < 4; ++j)
+        {
+            faces.Visit(poly2.vertices[j < last ? j : last]);
+        }
+    }
+    else
+    {
+        for (int j = 0; j < count2; ++j)
+        {
+            faces.Visit(poly2.vertices[j]);
+        }
     }
     return faces.MaxSeparation(poly1.count, edgeIndex);
 }
 
-/// FindMaxSeparationLanes with as few lanes as poly1 needs: boxes and other small polygons use
-/// four, the rest eight.
+/// FindMaxSeparationLanes with as few lanes as poly1 needs: four up to four faces, else eight.
 Real FindMaxSeparation(int& edgeIndex, const Polygon& poly1, const Transform& xf1,
                        const Polygon& poly2, const Transform& xf2)
 {
@@ -101,28 +115,6 @@ Real FindMaxSeparation(int& edgeIndex, const Polygon& poly1, const Transform& xf
         return FindMaxSeparationLanes<4>(edgeIndex, poly1, xf1, poly2, xf2);
     }
     return FindMaxSeparationLanes<kMaxPolygonVertices>(edgeIndex, poly1, xf1, poly2, xf2);
-}
-
-/// Both searches of CollidePolygons at once, for polygons of at most four vertices (boxes,
-/// triangles): A's faces against B's vertices and B's faces against A's, with one vertex loop
-/// of fixed length four. A triangle's missing fourth vertex is its last vertex again: a repeated
-/// vertex gives the same separation bits, which the strict `<` ignores, so each minimum is the
-/// one Box2D's loop over the real vertices finds.
-void FindMaxSeparationsOfSmallPolygons(int& edgeA, Real& separationA, int& edgeB, Real& separationB,
-                                       const Polygon& polygonA, const Transform& xfA,
-                                       const Polygon& polygonB, const Transform& xfB)
-{
-    FaceLanes<4> facesA(polygonA, MulT(xfB, xfA));
-    FaceLanes<4> facesB(polygonB, MulT(xfA, xfB));
-    const int lastA = polygonA.count - 1;
-    const int lastB = polygonB.count - 1;
-    for (int j = 0; j < 4; ++j)
-    {
-        facesA.Visit(polygonB.vertices[j < lastB ? j : lastB]);
-        facesB.Visit(polygonA.vertices[j < lastA ? j : lastA]);
-    }
-    separationA = facesA.MaxSeparation(polygonA.count, edgeA);
-    separationB = facesB.MaxSeparation(polygonB.count, edgeB);
 }
 
 /// The face of poly2 most anti-parallel to face `edge1` of poly1, in world coordinates.
@@ -170,33 +162,20 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
     manifold.pointCount = 0;
     const Real totalRadius = polygonA.radius + polygonB.radius;
 
+    // Box2D's order: B's faces are only searched when A's do not separate the pair (in a
+    // crowded scene most pairs the broad phase finds stop here).
     int edgeA = 0;
-    int edgeB = 0;
-    Real separationA;
-    Real separationB;
-    if (polygonA.count <= 4 && polygonB.count <= 4)
+    const Real separationA = FindMaxSeparation(edgeA, polygonA, xfA, polygonB, xfB);
+    if (separationA > totalRadius)
     {
-        // Box2D stops after A's search if A's face already separates the pair; computing B's
-        // as well changes no result, and one fused search is cheaper than two.
-        FindMaxSeparationsOfSmallPolygons(edgeA, separationA, edgeB, separationB, polygonA, xfA,
-                                          polygonB, xfB);
-        if (separationA > totalRadius || separationB > totalRadius)
-        {
-            return;
-        }
+        return;
     }
-    else
+
+    int edgeB = 0;
+    const Real separationB = FindMaxSeparation(edgeB, polygonB, xfB, polygonA, xfA);
+    if (separationB > totalRadius)
     {
-        separationA = FindMaxSeparation(edgeA, polygonA, xfA, polygonB, xfB);
-        if (separationA > totalRadius)
-        {
-            return;
-        }
-        separationB = FindMaxSeparation(edgeB, polygonB, xfB, polygonA, xfA);
-        if (separationB > totalRadius)
-        {
-            return;
-        }
+        return;
     }
 
     // Reference polygon 1 and incident polygon 2. A's face is preferred unless B's is clearly
