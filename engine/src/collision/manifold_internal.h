@@ -19,8 +19,42 @@ struct ClipVertex
 /// Clips the segment input[0]-input[1] to the half-plane dot(normal, p) <= offset
 /// (Sutherland-Hodgman), as b2ClipSegmentToLine. A point created by the clip gets the feature
 /// (vertex `vertexIndexA`, face input[0].id.indexB). Returns how many points were written
-/// to output (0..2).
-int ClipSegmentToLine(ClipVertex output[2], const ClipVertex input[2], Vec2 normal, Real offset,
-                      int vertexIndexA);
+/// to output (0..2). Inline because it runs twice for every polygon contact, where a call would
+/// pass the points through memory.
+inline int ClipSegmentToLine(ClipVertex output[2], const ClipVertex input[2], Vec2 normal,
+                             Real offset, int vertexIndexA)
+{
+    int count = 0;
+
+    // Signed distances of the two end points to the clipping line.
+    const Real distance0 = Dot(normal, input[0].v) - offset;
+    const Real distance1 = Dot(normal, input[1].v) - offset;
+
+    // Keep the end points on the inner side (points exactly on the line are kept).
+    if (distance0 <= 0)
+    {
+        output[count++] = input[0];
+    }
+    if (distance1 <= 0)
+    {
+        output[count++] = input[1];
+    }
+
+    // The end points straddle the line: add the crossing point.
+    if (distance0 * distance1 < 0)
+    {
+        const Real interp = distance0 / (distance0 - distance1);
+        output[count].v = input[0].v + interp * (input[1].v - input[0].v);
+
+        // The new point is where a vertex of the reference shape meets the incident face.
+        output[count].id.indexA = static_cast<std::uint8_t>(vertexIndexA);
+        output[count].id.indexB = input[0].id.indexB;
+        output[count].id.typeA = ContactFeature::Vertex;
+        output[count].id.typeB = ContactFeature::Face;
+        ++count;
+    }
+
+    return count;
+}
 
 } // namespace meff::detail

@@ -13,42 +13,108 @@ namespace
 /// which may round differently) so that the flip decision agrees bit for bit.
 constexpr Real kReferenceFaceTolerance = Real(0.1) * detail::kCollisionLinearSlop;
 
-/// The greatest separation of poly2 from poly1 along poly1's face normals; writes the face.
-Real FindMaxSeparation(int& edgeIndex, const Polygon& poly1, const Transform& xf1,
-                       const Polygon& poly2, const Transform& xf2)
+/// Faces of one polygon placed in another polygon's frame, laid out for b2FindMaxSeparation's
+/// search: one face per lane of small fixed-size arrays (structure of arrays), so that the
+/// compiler can evaluate several faces in one SIMD instruction.
+///
+/// Box2D's arithmetic is kept bit for bit: every lane performs exactly the scalar operations of
+/// b2FindMaxSeparation for its face, in the same order (no reassociation: -ffp-contract=off and
+/// no fast-math), and each face's running minimum visits the other polygon's vertices in order
+/// with the same strict `<`. Lanes past the polygon's count hold its zero padding; they are
+/// computed but never read back.
+template <int kLanes>
+struct FaceLanes
 {
-    const int count1 = poly1.count;
-    const int count2 = poly2.count;
-    const Transform xf = MulT(xf2, xf1);
+    static_assert(kLanes <= kMaxPolygonVertices);
 
-    int bestIndex = 0;
-    Real maxSeparation = -kMaxReal;
-    for (int i = 0; i < count1; ++i)
+    Real nx[kLanes];
+    Real ny[kLanes];
+    Real vx[kLanes];
+    Real vy[kLanes];
+    Real minSeparation[kLanes];
+
+    /// Face i's normal n = xf.q·normal and first vertex v1 = xf·vertex, written out as
+    /// Mul(Rot, Vec2) and Mul(Transform, Vec2) do.
+    FaceLanes(const Polygon& poly, const Transform& xf)
     {
-        // Face i of poly1 in poly2's frame.
-        const Vec2 n = Mul(xf.q, poly1.normals[i]);
-        const Vec2 v1 = Mul(xf, poly1.vertices[i]);
-
-        // The deepest vertex of poly2 along that normal.
-        Real si = kMaxReal;
-        for (int j = 0; j < count2; ++j)
+        for (int i = 0; i < kLanes; ++i)
         {
-            const Real sij = Dot(n, poly2.vertices[j] - v1);
-            if (sij < si)
-            {
-                si = sij;
-            }
-        }
-
-        if (si > maxSeparation)
-        {
-            maxSeparation = si;
-            bestIndex = i;
+            const Vec2 normal = poly.normals[i];
+            const Vec2 vertex = poly.vertices[i];
+            nx[i] = xf.q.c * normal.x - xf.q.s * normal.y;
+            ny[i] = xf.q.s * normal.x + xf.q.c * normal.y;
+            vx[i] = (xf.q.c * vertex.x - xf.q.s * vertex.y) + xf.p.x;
+            vy[i] = (xf.q.s * vertex.x + xf.q.c * vertex.y) + xf.p.y;
+            minSeparation[i] = kMaxReal;
         }
     }
 
-    edgeIndex = bestIndex;
-    return maxSeparation;
+    /// Lowers each face's separation to vertex w of the other polygon if deeper: Dot(n, w − v1).
+    void Visit(Vec2 w)
+    {
+        for (int i = 0; i < kLanes; ++i)
+        {
+            const Real sij = nx[i] * (w.x - vx[i]) + ny[i] * (w.y - vy[i]);
+            minSeparation[i] = sij < minSeparation[i] ? sij : minSeparation[i];
+        }
+    }
+
+    /// The greatest separation over the first `count` faces; writes the first face reaching it
+    /// (Box2D's strict `>`).
+    Real MaxSeparation(int count, int& edgeIndex) const
+    {
+        int bestIndex = 0;
+        Real maxSeparation = -kMaxReal;
+        for (int i = 0; i < count; ++i)
+        {
+            if (minSeparation[i] > maxSeparation)
+            {
+                maxSeparation = minSeparation[i];
+                bestIndex = i;
+            }
+        }
+        edgeIndex = bestIndex;
+        return maxSeparation;
+    }
+};
+
+/// The greatest separation of poly2 from poly1 along poly1's face normals; writes the face.
+template <int kLanes>
+Real FindMaxSeparationLanes(int& edgeIndex, const Polygon& poly1, const Transform& xf1,
+                            const Polygon& poly2, const Transform& xf2)
+{
+    FaceLanes<kLanes> faces(poly1, MulT(xf2, xf1));
+    const int count2 = poly2.count;
+    if (count2 <= 4)
+    {
+        // A loop of fixed length four, which the compiler unrolls. A triangle's missing fourth
+        // vertex is its last vertex again: a repeated vertex gives the same separation bits,
+        // which the strict `<` ignores, so each minimum is the one Box2D's loop finds.
+        const int last = count2 - 1;
+        for (int j = 0; j < 4; ++j)
+        {
+            faces.Visit(poly2.vertices[j < last ? j : last]);
+        }
+    }
+    else
+    {
+        for (int j = 0; j < count2; ++j)
+        {
+            faces.Visit(poly2.vertices[j]);
+        }
+    }
+    return faces.MaxSeparation(poly1.count, edgeIndex);
+}
+
+/// FindMaxSeparationLanes with as few lanes as poly1 needs: four up to four faces, else eight.
+Real FindMaxSeparation(int& edgeIndex, const Polygon& poly1, const Transform& xf1,
+                       const Polygon& poly2, const Transform& xf2)
+{
+    if (poly1.count <= 4)
+    {
+        return FindMaxSeparationLanes<4>(edgeIndex, poly1, xf1, poly2, xf2);
+    }
+    return FindMaxSeparationLanes<kMaxPolygonVertices>(edgeIndex, poly1, xf1, poly2, xf2);
 }
 
 /// The face of poly2 most anti-parallel to face `edge1` of poly1, in world coordinates.
@@ -96,6 +162,8 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
     manifold.pointCount = 0;
     const Real totalRadius = polygonA.radius + polygonB.radius;
 
+    // Box2D's order: B's faces are only searched when A's do not separate the pair (in a
+    // crowded scene most pairs the broad phase finds stop here).
     int edgeA = 0;
     const Real separationA = FindMaxSeparation(edgeA, polygonA, xfA, polygonB, xfB);
     if (separationA > totalRadius)
@@ -112,41 +180,23 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
 
     // Reference polygon 1 and incident polygon 2. A's face is preferred unless B's is clearly
     // better, so that the reference face does not flicker between the two.
-    const Polygon* poly1;
-    const Polygon* poly2;
-    Transform xf1, xf2;
-    int edge1;
-    bool flip;
-    if (separationB > separationA + kReferenceFaceTolerance)
-    {
-        poly1 = &polygonB;
-        poly2 = &polygonA;
-        xf1 = xfB;
-        xf2 = xfA;
-        edge1 = edgeB;
-        manifold.type = Manifold::Type::FaceB;
-        flip = true;
-    }
-    else
-    {
-        poly1 = &polygonA;
-        poly2 = &polygonB;
-        xf1 = xfA;
-        xf2 = xfB;
-        edge1 = edgeA;
-        manifold.type = Manifold::Type::FaceA;
-        flip = false;
-    }
+    const bool flip = separationB > separationA + kReferenceFaceTolerance;
+    const Polygon& poly1 = flip ? polygonB : polygonA;
+    const Polygon& poly2 = flip ? polygonA : polygonB;
+    const Transform& xf1 = flip ? xfB : xfA;
+    const Transform& xf2 = flip ? xfA : xfB;
+    const int edge1 = flip ? edgeB : edgeA;
+    manifold.type = flip ? Manifold::Type::FaceB : Manifold::Type::FaceA;
 
     detail::ClipVertex incidentEdge[2];
-    FindIncidentEdge(incidentEdge, *poly1, xf1, edge1, *poly2, xf2);
+    FindIncidentEdge(incidentEdge, poly1, xf1, edge1, poly2, xf2);
 
-    const int count1 = poly1->count;
+    const int count1 = poly1.count;
     const int iv1 = edge1;
     const int iv2 = edge1 + 1 < count1 ? edge1 + 1 : 0;
 
-    Vec2 v11 = poly1->vertices[iv1];
-    Vec2 v12 = poly1->vertices[iv2];
+    Vec2 v11 = poly1.vertices[iv1];
+    Vec2 v12 = poly1.vertices[iv2];
 
     Vec2 localTangent = v12 - v11;
     localTangent.Normalize();

@@ -1,6 +1,6 @@
-// Evaluating a manifold in world space, and the segment clipping shared by the manifold
-// routines. Follows b2WorldManifold::Initialize and b2ClipSegmentToLine of Box2D 2.4.1 with
-// the same floating-point operation order.
+// Evaluating a manifold in world space. Follows b2WorldManifold::Initialize of Box2D 2.4.1 with
+// the same floating-point operation order. (The segment clipping shared by the manifold routines,
+// b2ClipSegmentToLine, is inline in manifold_internal.h.)
 #include "collision/manifold_internal.h"
 
 namespace meff
@@ -74,46 +74,5 @@ void WorldManifold::Initialize(const Manifold& manifold, const Transform& xfA, R
     }
     }
 }
-
-namespace detail
-{
-
-int ClipSegmentToLine(ClipVertex output[2], const ClipVertex input[2], Vec2 normal, Real offset,
-                      int vertexIndexA)
-{
-    int count = 0;
-
-    // Signed distances of the two end points to the clipping line.
-    const Real distance0 = Dot(normal, input[0].v) - offset;
-    const Real distance1 = Dot(normal, input[1].v) - offset;
-
-    // Keep the end points on the inner side (points exactly on the line are kept).
-    if (distance0 <= 0)
-    {
-        output[count++] = input[0];
-    }
-    if (distance1 <= 0)
-    {
-        output[count++] = input[1];
-    }
-
-    // The end points straddle the line: add the crossing point.
-    if (distance0 * distance1 < 0)
-    {
-        const Real interp = distance0 / (distance0 - distance1);
-        output[count].v = input[0].v + interp * (input[1].v - input[0].v);
-
-        // The new point is where a vertex of the reference shape meets the incident face.
-        output[count].id.indexA = static_cast<std::uint8_t>(vertexIndexA);
-        output[count].id.indexB = input[0].id.indexB;
-        output[count].id.typeA = ContactFeature::Vertex;
-        output[count].id.typeB = ContactFeature::Face;
-        ++count;
-    }
-
-    return count;
-}
-
-} // namespace detail
 
 } // namespace meff
