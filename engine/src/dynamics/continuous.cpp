@@ -271,7 +271,7 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
     subStep.invDt = Real(1) / subStep.dt;
     subStep.dtRatio = 1;
     subStep.solver.positionIterations = kToiPositionIterations;
-    subStep.solver.warmStarting = false; // the discrete step already applied warm starting
+    subStep.solver.warmStarting = false;  // the discrete step already applied warm starting
     subStep.solver.graphColoring = false; // a handful of contacts: Box2D's order
 
     const std::size_t count = island.bodies.size();
