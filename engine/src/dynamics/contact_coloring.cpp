@@ -30,7 +30,8 @@ void ColorContacts(std::span<const ContactVelocityConstraint> constraints, Conta
     out.overflow.clear();
 
     int colorCount = 0;
-    std::vector<std::int32_t> sizes(kMaxContactColors + 1, 0);
+    // Counts per colour, shifted by one so that a prefix sum turns them into colour starts.
+    out.colorStarts.assign(kMaxContactColors + 1, 0);
     for (std::size_t i = 0; i < constraints.size(); ++i)
     {
         const ContactVelocityConstraint& vc = constraints[i];
@@ -54,23 +55,23 @@ void ColorContacts(std::span<const ContactVelocityConstraint> constraints, Conta
             out.bodyColors[vc.indexB] |= bit;
         }
         out.colorOf[i] = static_cast<std::int8_t>(color);
-        ++sizes[color + 1];
+        ++out.colorStarts[color + 1];
         colorCount = std::max(colorCount, color + 1);
     }
 
     // Counting sort by colour, stable: a colour's contacts keep their island order.
-    out.colorStarts.assign(sizes.begin(), sizes.begin() + colorCount + 1);
+    out.colorStarts.resize(colorCount + 1);
     for (int c = 0; c < colorCount; ++c)
     {
         out.colorStarts[c + 1] += out.colorStarts[c];
     }
     out.order.resize(constraints.size() - out.overflow.size());
-    std::vector<std::int32_t> next(out.colorStarts.begin(), out.colorStarts.end() - 1);
+    out.next.assign(out.colorStarts.begin(), out.colorStarts.end() - 1);
     for (std::size_t i = 0; i < constraints.size(); ++i)
     {
         if (out.colorOf[i] >= 0)
         {
-            out.order[next[out.colorOf[i]]++] = static_cast<std::int32_t>(i);
+            out.order[out.next[out.colorOf[i]]++] = static_cast<std::int32_t>(i);
         }
     }
 }

@@ -25,6 +25,7 @@ struct ContactColoring
     std::vector<std::int32_t> overflow;    ///< constraint indices no colour had room for
     std::vector<std::uint64_t> bodyColors; ///< scratch: colours taken at each solver body
     std::vector<std::int8_t> colorOf;      ///< scratch: each constraint's colour, −1 overflow
+    std::vector<std::int32_t> next;        ///< scratch: next free slot of each colour in order
 
     int ColorCount() const { return static_cast<int>(colorStarts.size()) - 1; }
 };
