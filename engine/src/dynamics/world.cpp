@@ -25,29 +25,35 @@ std::string Describe(Vec2 v)
     return out.str();
 }
 
-void Require(bool condition, const std::string& what)
+/// Throws InvalidArgument when `condition` is false. The message is built only then
+/// (`message()` returns it): formatting it on every call cost more than the checks
+/// themselves when a scene creates ten thousand bodies.
+template <typename MakeMessage>
+void Require(bool condition, MakeMessage&& message)
 {
     if (!condition)
     {
-        throw InvalidArgument(what);
+        throw InvalidArgument(message());
     }
 }
 
 void RequireFinite(Real value, const char* where)
 {
     Require(meff::IsValid(value),
-            std::string(where) + ": must be finite, got " + std::to_string(value));
+            [&] { return std::string(where) + ": must be finite, got " + std::to_string(value); });
 }
 
 void RequireFinite(Vec2 value, const char* where)
 {
-    Require(value.IsValid(), std::string(where) + ": must be finite, got " + Describe(value));
+    Require(value.IsValid(),
+            [&] { return std::string(where) + ": must be finite, got " + Describe(value); });
 }
 
 void RequireNonNegative(Real value, const char* where)
 {
-    Require(meff::IsValid(value) && value >= 0,
-            std::string(where) + ": must be finite and >= 0, got " + std::to_string(value));
+    Require(
+        meff::IsValid(value) && value >= 0, [&]
+        { return std::string(where) + ": must be finite and >= 0, got " + std::to_string(value); });
 }
 
 /// Takes a slot from the free list or grows the pool; returns its index.
@@ -172,7 +178,11 @@ void ValidateShapeDef(const ShapeDef& def)
     RequireNonNegative(def.density, "ShapeDef::density");
     RequireNonNegative(def.friction, "ShapeDef::friction");
     Require(meff::IsValid(def.restitution) && def.restitution >= 0 && def.restitution <= 1,
-            "ShapeDef::restitution: must be in [0, 1], got " + std::to_string(def.restitution));
+            [&]
+            {
+                return std::string("ShapeDef::restitution: must be in [0, 1], got " +
+                                   std::to_string(def.restitution));
+            });
     RequireNonNegative(def.restitutionThreshold, "ShapeDef::restitutionThreshold");
 }
 
@@ -181,8 +191,11 @@ void ValidateShapeDef(const ShapeDef& def)
 Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
 {
     Require(meff::IsValid(lengthUnitsPerMeter) && lengthUnitsPerMeter > 0,
-            "TolerancesForLengthUnits: must be finite and > 0, got " +
-                std::to_string(lengthUnitsPerMeter));
+            [&]
+            {
+                return std::string("TolerancesForLengthUnits: must be finite and > 0, got " +
+                                   std::to_string(lengthUnitsPerMeter));
+            });
     Tolerances t;
     t.linearSlop *= lengthUnitsPerMeter;
     t.polygonSkin *= lengthUnitsPerMeter;
@@ -600,31 +613,50 @@ void RequireValidPolygon(const Polygon& polygon)
         // Not the weld tolerance: MakeBox accepts any positive size, so only a zero edge
         // (no direction, no normal) is refused here.
         Require(edge.LengthSquared() > kEpsilon * kEpsilon,
-                "Polygon: edge " + std::to_string(i) + " has zero length " +
-                    "(build polygons with MakePolygon or MakeBox)");
+                [&]
+                {
+                    return std::string("Polygon: edge " + std::to_string(i) + " has zero length " +
+                                       "(build polygons with MakePolygon or MakeBox)");
+                });
         const Vec2 normal = polygon.normals[i];
         Vec2 expected = Cross(edge, Real(1));
         expected.Normalize();
         Require(normal.IsValid() && Dot(normal, expected) > Real(0.999) &&
                     std::abs(normal.LengthSquared() - 1) < Real(1e-3),
-                "Polygon: normals[" + std::to_string(i) + "] is not the unit outward normal " +
-                    "of its edge, got " + Describe(normal) +
-                    " (build polygons with MakePolygon or MakeBox)");
+                [&]
+                {
+                    return std::string("Polygon: normals[" + std::to_string(i) +
+                                       "] is not the unit outward normal " + "of its edge, got " +
+                                       Describe(normal) +
+                                       " (build polygons with MakePolygon or MakeBox)");
+                });
         for (int j = 0; j < n; ++j)
         {
             if (j != i && j != (i + 1 < n ? i + 1 : 0))
             {
                 Require(Cross(edge, polygon.vertices[j] - a) > 0,
-                        "Polygon: not strictly convex and counter-clockwise at vertex " +
-                            std::to_string(j) + " (build polygons with MakePolygon or MakeBox)");
+                        [&]
+                        {
+                            return std::string(
+                                "Polygon: not strictly convex and counter-clockwise at vertex " +
+                                std::to_string(j) +
+                                " (build polygons with MakePolygon or MakeBox)");
+                        });
             }
         }
         twiceArea += Cross(a, b);
     }
     Require(twiceArea > 2 * kEpsilon,
-            "Polygon: area must be positive (build polygons with MakePolygon or MakeBox)");
+            [&]
+            {
+                return std::string(
+                    "Polygon: area must be positive (build polygons with MakePolygon or MakeBox)");
+            });
     Require(polygon.centroid.IsValid(),
-            "Polygon::centroid: must be finite, got " + Describe(polygon.centroid));
+            [&] {
+                return std::string("Polygon::centroid: must be finite, got " +
+                                   Describe(polygon.centroid));
+            });
 }
 
 } // namespace
@@ -633,7 +665,11 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circl
 {
     RequireFinite(circle.center, "Circle::center");
     Require(meff::IsValid(circle.radius) && circle.radius > 0,
-            "Circle::radius: must be finite and > 0, got " + std::to_string(circle.radius));
+            [&]
+            {
+                return std::string("Circle::radius: must be finite and > 0, got " +
+                                   std::to_string(circle.radius));
+            });
     Shape shape;
     shape.type = ShapeType::Circle;
     shape.circle = circle;
@@ -643,8 +679,12 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circl
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon)
 {
     Require(polygon.count >= 3 && polygon.count <= kMaxPolygonVertices,
-            "Polygon::count: must be in [3, 8] (build polygons with MakePolygon or MakeBox), got " +
-                std::to_string(polygon.count));
+            [&]
+            {
+                return std::string("Polygon::count: must be in [3, 8] (build polygons with "
+                                   "MakePolygon or MakeBox), got " +
+                                   std::to_string(polygon.count));
+            });
     for (int i = 0; i < polygon.count; ++i)
     {
         RequireFinite(polygon.vertices[i], "Polygon::vertices");
@@ -663,8 +703,12 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segm
     RequireFinite(segment.point2, "Segment::point2");
     Require(DistanceSquared(segment.point1, segment.point2) >
                 m_state->tolerances.linearSlop * m_state->tolerances.linearSlop,
-            "Segment: points must be further apart than the linear slop, got " +
-                Describe(segment.point1) + " and " + Describe(segment.point2));
+            [&]
+            {
+                return std::string(
+                    "Segment: points must be further apart than the linear slop, got " +
+                    Describe(segment.point1) + " and " + Describe(segment.point2));
+            });
     Shape shape;
     shape.type = ShapeType::Segment;
     shape.segment = segment;
@@ -714,19 +758,22 @@ ShapeType World::GetShapeType(ShapeId id) const
 const Circle& World::GetCircle(ShapeId id) const
 {
     const Shape& shape = Resolve(m_state->shapes, id, "shape");
-    Require(shape.type == ShapeType::Circle, "World::GetCircle: the shape is not a circle");
+    Require(shape.type == ShapeType::Circle,
+            [&] { return std::string("World::GetCircle: the shape is not a circle"); });
     return shape.circle;
 }
 const Polygon& World::GetPolygon(ShapeId id) const
 {
     const Shape& shape = Resolve(m_state->shapes, id, "shape");
-    Require(shape.type == ShapeType::Polygon, "World::GetPolygon: the shape is not a polygon");
+    Require(shape.type == ShapeType::Polygon,
+            [&] { return std::string("World::GetPolygon: the shape is not a polygon"); });
     return shape.polygon;
 }
 const Segment& World::GetSegment(ShapeId id) const
 {
     const Shape& shape = Resolve(m_state->shapes, id, "shape");
-    Require(shape.type == ShapeType::Segment, "World::GetSegment: the shape is not a segment");
+    Require(shape.type == ShapeType::Segment,
+            [&] { return std::string("World::GetSegment: the shape is not a segment"); });
     return shape.segment;
 }
 const ShapeDef& World::GetShapeDef(ShapeId id) const
@@ -779,7 +826,8 @@ void RequireTwoBodies(WorldState& world, BodyId a, BodyId b)
 {
     Resolve(world.bodies, a, "body");
     Resolve(world.bodies, b, "body");
-    Require(!(a == b), "joint: bodyA and bodyB must be different bodies");
+    Require(!(a == b),
+            [&] { return std::string("joint: bodyA and bodyB must be different bodies"); });
 }
 
 } // namespace
@@ -853,7 +901,8 @@ void World::SetMouseTarget(JointId id, Vec2 target)
 {
     Joint& joint = Resolve(m_state->joints, id, "joint").joint;
     auto* mouse = std::get_if<MouseJoint>(&joint.data);
-    Require(mouse != nullptr, "World::SetMouseTarget: the joint is not a mouse joint");
+    Require(mouse != nullptr,
+            [&] { return std::string("World::SetMouseTarget: the joint is not a mouse joint"); });
     RequireFinite(target, "World::SetMouseTarget: target");
     if (target != mouse->target)
     {
@@ -868,7 +917,8 @@ Vec2 World::GetMouseTarget(JointId id) const
 {
     const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
     const auto* mouse = std::get_if<MouseJoint>(&joint.data);
-    Require(mouse != nullptr, "World::GetMouseTarget: the joint is not a mouse joint");
+    Require(mouse != nullptr,
+            [&] { return std::string("World::GetMouseTarget: the joint is not a mouse joint"); });
     return mouse->target;
 }
 
@@ -876,7 +926,8 @@ void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffs
 {
     Joint& joint = Resolve(m_state->joints, id, "joint").joint;
     auto* motor = std::get_if<MotorJoint>(&joint.data);
-    Require(motor != nullptr, "World::SetMotorJointOffsets: the joint is not a motor joint");
+    Require(motor != nullptr, [&]
+            { return std::string("World::SetMotorJointOffsets: the joint is not a motor joint"); });
     RequireFinite(linearOffset, "World::SetMotorJointOffsets: linearOffset");
     RequireFinite(angularOffset, "World::SetMotorJointOffsets: angularOffset");
     if (linearOffset != motor->linearOffset || angularOffset != motor->angularOffset)
@@ -1146,11 +1197,17 @@ const SolverSettings& World::GetSolverSettings() const
 void World::SetSolverSettings(const SolverSettings& settings)
 {
     Require(settings.velocityIterations >= 1,
-            "SolverSettings::velocityIterations: must be >= 1, got " +
-                std::to_string(settings.velocityIterations));
+            [&]
+            {
+                return std::string("SolverSettings::velocityIterations: must be >= 1, got " +
+                                   std::to_string(settings.velocityIterations));
+            });
     Require(settings.positionIterations >= 0,
-            "SolverSettings::positionIterations: must be >= 0, got " +
-                std::to_string(settings.positionIterations));
+            [&]
+            {
+                return std::string("SolverSettings::positionIterations: must be >= 0, got " +
+                                   std::to_string(settings.positionIterations));
+            });
     m_state->solver = settings;
 }
 Vec2 World::GetGravity() const
