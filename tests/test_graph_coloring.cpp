@@ -23,7 +23,7 @@
 using namespace meff;
 using namespace meff::test;
 using namespace meff::analytic;
-using meff::detail::ContactColoring;
+using meff::detail::ConstraintColoring;
 using meff::detail::ContactVelocityConstraint;
 
 namespace
@@ -45,7 +45,7 @@ ContactVelocityConstraint MakeConstraint(std::int32_t a, std::int32_t b, bool aM
 /// Every constraint exactly once, in colours or the overflow; no colour writes a body twice;
 /// island order kept within a colour.
 void CheckColoring(const std::vector<ContactVelocityConstraint>& constraints,
-                   const ContactColoring& coloring)
+                   const ConstraintColoring& coloring)
 {
     std::multiset<std::int32_t> seen(coloring.order.begin(), coloring.order.end());
     seen.insert(coloring.overflow.begin(), coloring.overflow.end());
@@ -93,7 +93,7 @@ TEST_CASE("Graph colouring: no colour moves a body twice; static bodies are shar
         }
         constraints.push_back(MakeConstraint(a, b, a != 0, true));
     }
-    ContactColoring coloring;
+    ConstraintColoring coloring;
     detail::ColorContacts(constraints, coloring);
     CheckColoring(constraints, coloring);
     CHECK(coloring.overflow.empty());
@@ -118,13 +118,13 @@ TEST_CASE("Graph colouring: a body with more contacts than colours overflows the
     {
         constraints.push_back(MakeConstraint(0, i, true, true));
     }
-    ContactColoring coloring;
+    ConstraintColoring coloring;
     detail::ColorContacts(constraints, coloring);
     CheckColoring(constraints, coloring);
-    CHECK(coloring.ColorCount() == detail::kMaxContactColors);
-    CHECK(coloring.overflow.size() == 70 - detail::kMaxContactColors);
+    CHECK(coloring.ColorCount() == detail::kMaxColors);
+    CHECK(coloring.overflow.size() == 70 - detail::kMaxColors);
     // The overflow keeps island order: the last six contacts.
-    CHECK(coloring.overflow.front() == detail::kMaxContactColors);
+    CHECK(coloring.overflow.front() == detail::kMaxColors);
 }
 
 TEST_CASE("SIMD sine and cosine agree with the standard library", "[coloring]")

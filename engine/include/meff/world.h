@@ -72,12 +72,14 @@ struct SolverSettings
     /// more speed than arrived and e = 1 gains energy bounce after bounce. On: at the start of
     /// the step, so restitution never adds energy (results then differ from Box2D's).
     bool restitutionFromStepStart = false;
-    /// Solve contacts by colour (Box2D v3's graph colouring): an island's contacts are sorted
-    /// into colours that share no moving body, and each colour is solved four contacts at a
-    /// time in SIMD lanes — same rows, effective masses, iteration counts and block solver, but
+    /// Solve by colour (Box2D v3's graph colouring): an island's contacts, and apart from them
+    /// its revolute joints without limit or motor (with blockJoints on), are sorted into
+    /// colours that share no moving body, and each colour is solved four constraints at a time
+    /// in SIMD lanes — same rows, effective masses, iteration counts and block solvers, but
     /// another Gauss-Seidel order, so results agree with Box2D 2.4.1 only up to that order's
-    /// effect (settled-state checks), not bit for bit. Joints and continuous collision's
-    /// sub-steps keep the island order. Off (default): Box2D 2.4.1's order, bit-identical.
+    /// effect (settled-state checks), not bit for bit. Other joints, and continuous
+    /// collision's sub-steps, keep the island order. Off (default): Box2D 2.4.1's order,
+    /// bit-identical.
     bool graphColoring = false;
 };
 

@@ -1,5 +1,7 @@
 #include "dynamics/colored_contact_solver.h"
 
+#include "dynamics/lane_bodies.h"
+
 #include <algorithm>
 
 namespace meff::detail
@@ -7,45 +9,6 @@ namespace meff::detail
 
 namespace
 {
-
-/// One body state of four lanes: a velocity (v, w) or a position (c, a).
-struct BodyStateW
-{
-    Vec2W linear;  ///< v (m/s) or c (m)
-    RealW angular; ///< w (rad/s) or a (rad)
-};
-
-/// Reads the lanes' bodies from the island's velocities or positions.
-template <auto Linear, auto Angular, typename State>
-BodyStateW Gather(const State* states, const std::int32_t (&index)[kLanes])
-{
-    BodyStateW out{};
-    for (int l = 0; l < kLanes; ++l)
-    {
-        const State& state = states[index[l]];
-        out.linear.x[l] = (state.*Linear).x;
-        out.linear.y[l] = (state.*Linear).y;
-        out.angular[l] = state.*Angular;
-    }
-    return out;
-}
-
-/// Writes back the lanes that move their body (a colour's lanes never share one).
-template <auto Linear, auto Angular, typename State>
-void Scatter(State* states, const std::int32_t (&index)[kLanes],
-             const std::uint8_t (&write)[kLanes], const BodyStateW& in)
-{
-    for (int l = 0; l < kLanes; ++l)
-    {
-        if (write[l] != 0)
-        {
-            State state{};
-            state.*Linear = {in.linear.x[l], in.linear.y[l]};
-            state.*Angular = in.angular[l];
-            states[index[l]] = state;
-        }
-    }
-}
 
 /// Relative velocity of B's contact point with respect to A's, per lane.
 Vec2W RelativeVelocity(const BodyStateW& a, const BodyStateW& b, Vec2W rA, Vec2W rB)
@@ -57,20 +20,17 @@ Vec2W RelativeVelocity(const BodyStateW& a, const BodyStateW& b, Vec2W rA, Vec2W
 void ApplyImpulse(const ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b, Vec2W rA, Vec2W rB,
                   Vec2W P)
 {
-    a.linear = a.linear - g.invMassA * P;
-    a.angular = a.angular - g.invIA * Cross(rA, P);
-    b.linear = b.linear + g.invMassB * P;
-    b.angular = b.angular + g.invIB * Cross(rB, P);
+    ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, P);
 }
 
 void PackVelocityLane(ContactVelocityGroup& g, int l, const ContactVelocityConstraint& vc,
-                      std::int32_t source, bool blockSolver)
+                      std::int32_t source, bool blockSolver, std::int32_t discardIndex)
 {
     g.source[l] = source;
     g.indexA[l] = vc.indexA;
     g.indexB[l] = vc.indexB;
-    g.writeA[l] = MovesBodyA(vc) ? 1 : 0;
-    g.writeB[l] = MovesBodyB(vc) ? 1 : 0;
+    g.storeA[l] = MovesBodyA(vc) ? vc.indexA : discardIndex;
+    g.storeB[l] = MovesBodyB(vc) ? vc.indexB : discardIndex;
     g.invMassA[l] = vc.invMassA;
     g.invMassB[l] = vc.invMassB;
     g.invIA[l] = vc.invIA;
@@ -104,12 +64,13 @@ void PackVelocityLane(ContactVelocityGroup& g, int l, const ContactVelocityConst
     g.inv22[l] = vc.normalMass.ey.y;
 }
 
-void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConstraint& pc)
+void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConstraint& pc,
+                      std::int32_t discardIndex)
 {
     g.indexA[l] = pc.indexA;
     g.indexB[l] = pc.indexB;
-    g.writeA[l] = pc.invMassA > 0 || pc.invIA > 0 ? 1 : 0;
-    g.writeB[l] = pc.invMassB > 0 || pc.invIB > 0 ? 1 : 0;
+    g.storeA[l] = pc.invMassA > 0 || pc.invIA > 0 ? pc.indexA : discardIndex;
+    g.storeB[l] = pc.invMassB > 0 || pc.invIB > 0 ? pc.indexB : discardIndex;
     g.invMassA[l] = pc.invMassA;
     g.invMassB[l] = pc.invMassB;
     g.invIA[l] = pc.invIA;
@@ -212,8 +173,8 @@ void SolveNormalBlock(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
 
 void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
 {
-    BodyStateW a = Gather<&Velocity::v, &Velocity::w>(velocities, g.indexA);
-    BodyStateW b = Gather<&Velocity::v, &Velocity::w>(velocities, g.indexB);
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
     SolveFriction(g, a, b);
     if (!g.anyBlock)
     {
@@ -239,8 +200,8 @@ void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
             g.normalImpulse[j] = Select(g.block, g.normalImpulse[j], rows.normalImpulse[j]);
         }
     }
-    Scatter<&Velocity::v, &Velocity::w>(velocities, g.indexA, g.writeA, a);
-    Scatter<&Velocity::v, &Velocity::w>(velocities, g.indexB, g.writeB, b);
+    Scatter(velocities, g.storeA, a);
+    Scatter(velocities, g.storeB, b);
 }
 
 /// One body's transform per lane from its centre of mass, angle and local centre.
@@ -266,8 +227,8 @@ Vec2W Mul(const TransformW& xf, Vec2W v)
 RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, const Tolerances& tol,
                          Real baumgarte)
 {
-    BodyStateW a = Gather<&Position::c, &Position::a>(positions, g.indexA);
-    BodyStateW b = Gather<&Position::c, &Position::a>(positions, g.indexB);
+    BodyStateW a = Gather(positions, g.indexA);
+    BodyStateW b = Gather(positions, g.indexB);
     RealW minSeparation = Splat(0);
     for (int j = 0; j < 2; ++j)
     {
@@ -322,14 +283,10 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
         const RealW K = g.invMassA + g.invMassB + g.invIA * rnA * rnA + g.invIB * rnB * rnB;
         const MaskW solvable = g.hasPoint[j] & (K > 0);
         const RealW impulse = Select(solvable, -C / Select(solvable, K, Splat(1)), Splat(0));
-        const Vec2W P = impulse * normal;
-        a.linear = a.linear - g.invMassA * P;
-        a.angular = a.angular - g.invIA * Cross(rA, P);
-        b.linear = b.linear + g.invMassB * P;
-        b.angular = b.angular + g.invIB * Cross(rB, P);
+        ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, impulse * normal);
     }
-    Scatter<&Position::c, &Position::a>(positions, g.indexA, g.writeA, a);
-    Scatter<&Position::c, &Position::a>(positions, g.indexB, g.writeB, b);
+    Scatter(positions, g.storeA, a);
+    Scatter(positions, g.storeB, b);
     return minSeparation;
 }
 
@@ -337,7 +294,7 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
 
 void ColoredContactSolver::Prepare(std::span<const ContactVelocityConstraint> velocity,
                                    std::span<const ContactPositionConstraint> position,
-                                   bool blockSolver)
+                                   bool blockSolver, std::int32_t discardIndex)
 {
     m_blockSolver = blockSolver;
     ColorContacts(velocity, m_coloring);
@@ -349,20 +306,20 @@ void ColoredContactSolver::Prepare(std::span<const ContactVelocityConstraint> ve
         const std::int32_t end = m_coloring.colorStarts[color + 1];
         for (std::int32_t first = begin; first < end; first += kLanes)
         {
-            // Empty lanes read body 0 and write nothing; all their masses are zero.
+            // Empty lanes read body 0 and write the discard slot; all their masses are zero.
             ContactVelocityGroup& vg = m_velocityGroups.emplace_back();
             ContactPositionGroup& pg = m_positionGroups.emplace_back();
             for (int l = 0; l < kLanes; ++l)
             {
                 vg.source[l] = -1;
                 vg.indexA[l] = vg.indexB[l] = pg.indexA[l] = pg.indexB[l] = 0;
-                vg.writeA[l] = vg.writeB[l] = pg.writeA[l] = pg.writeB[l] = 0;
+                vg.storeA[l] = vg.storeB[l] = pg.storeA[l] = pg.storeB[l] = discardIndex;
             }
             for (int l = 0; l < kLanes && first + l < end; ++l)
             {
                 const std::int32_t i = m_coloring.order[first + l];
-                PackVelocityLane(vg, l, velocity[i], i, blockSolver);
-                PackPositionLane(pg, l, position[i]);
+                PackVelocityLane(vg, l, velocity[i], i, blockSolver, discardIndex);
+                PackPositionLane(pg, l, position[i], discardIndex);
             }
         }
     }

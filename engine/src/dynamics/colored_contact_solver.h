@@ -25,7 +25,7 @@ struct ContactVelocityGroup
 {
     std::int32_t source[kLanes];                 ///< constraint index, −1 for an empty lane
     std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices (0 in empty lanes)
-    std::uint8_t writeA[kLanes], writeB[kLanes]; ///< 1 where the lane moves that body
+    std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (Scatter)
     RealW invMassA, invMassB, invIA, invIB, friction;
     Vec2W normal;
     Vec2W rA[2], rB[2];
@@ -41,7 +41,7 @@ struct ContactVelocityGroup
 struct ContactPositionGroup
 {
     std::int32_t indexA[kLanes], indexB[kLanes];
-    std::uint8_t writeA[kLanes], writeB[kLanes];
+    std::int32_t storeA[kLanes], storeB[kLanes];
     RealW invMassA, invMassB, invIA, invIB;
     Vec2W localCenterA, localCenterB, localNormal, localPoint;
     Vec2W localPoints[2];
@@ -55,7 +55,8 @@ class ColoredContactSolver
   public:
     /// Colours the prepared constraints and packs them four to a group.
     void Prepare(std::span<const ContactVelocityConstraint> velocity,
-                 std::span<const ContactPositionConstraint> position, bool blockSolver);
+                 std::span<const ContactPositionConstraint> position, bool blockSolver,
+                 std::int32_t discardIndex);
     /// One velocity sweep: the colours in order, then the overflow in island order.
     void SolveVelocities(std::span<ContactVelocityConstraint> velocity, SolverData& data);
     /// Copies the lanes' accumulated impulses back into the constraints.
@@ -63,10 +64,10 @@ class ColoredContactSolver
     /// One position sweep; true when no point overlaps more than 3·slop.
     bool SolvePositions(std::span<const ContactPositionConstraint> position, SolverData& data);
 
-    const ContactColoring& Coloring() const { return m_coloring; }
+    const ConstraintColoring& Coloring() const { return m_coloring; }
 
   private:
-    ContactColoring m_coloring;
+    ConstraintColoring m_coloring;
     std::vector<ContactVelocityGroup> m_velocityGroups;
     std::vector<ContactPositionGroup> m_positionGroups;
     bool m_blockSolver = true;

@@ -171,7 +171,7 @@ void ContactSolver::PrepareColors(const SolverData& data)
     if (m_colored)
     {
         m_coloredSolver.Prepare({m_velocity.data(), m_count}, {m_position.data(), m_count},
-                                data.step.solver.blockSolver);
+                                data.step.solver.blockSolver, data.discardIndex);
     }
 }
 

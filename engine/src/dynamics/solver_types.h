@@ -8,15 +8,18 @@
 namespace meff::detail
 {
 
+// Position and Velocity are aligned to four Reals (16 bytes in float builds), one SIMD vector:
+// the solvers that work by colour load and store a body's state whole (lane_bodies.h).
+
 /// Centre of mass and angle of a body during the step.
-struct Position
+struct alignas(4 * sizeof(Real)) Position
 {
     Vec2 c;
     Real a = 0;
 };
 
 /// Linear velocity of the centre of mass and angular velocity during the step.
-struct Velocity
+struct alignas(4 * sizeof(Real)) Velocity
 {
     Vec2 v;
     Real w = 0;
@@ -38,6 +41,9 @@ struct SolverData
     StepContext step;
     Position* positions = nullptr;
     Velocity* velocities = nullptr;
+    /// A slot after the island's bodies in both arrays, written by SIMD lanes that must not
+    /// change their body and never read (lane_bodies.h); −1 where no lanes run.
+    std::int32_t discardIndex = -1;
 };
 
 } // namespace meff::detail

@@ -95,26 +95,25 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step)
     IntegrateVelocities(world, island, step);
     data.positions = island.positions.data();
     data.velocities = island.velocities.data();
+    data.discardIndex = static_cast<std::int32_t>(island.bodies.size());
 
     world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, world.shapes, data);
     if (step.solver.warmStarting)
     {
         world.contactSolver.WarmStart(data);
     }
-    PrepareJoints(world, island, data);
+    world.jointSolver.Prepare(island.joints, world.joints, world.bodies, data);
 
     for (int i = 0; i < step.solver.velocityIterations; ++i)
     {
-        for (const std::int32_t j : island.joints)
-        {
-            SolveJointVelocityConstraints(world.joints[j].joint, data);
-        }
+        world.jointSolver.SolveVelocities(data);
         world.contactSolver.SolveVelocities(data);
     }
     world.contactSolver.StoreImpulses(world.contacts);
+    world.jointSolver.StoreImpulses();
 
     IntegratePositions(island, step);
-    const bool positionSolved = CorrectPositions(world, island, data);
+    const bool positionSolved = CorrectPositions(world, data);
     FinishBodies(world, island);
     ReportContacts(world);
     ReportHitEvents(world, step);
@@ -127,8 +126,9 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step)
 void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step)
 {
     const std::size_t count = island.bodies.size();
-    island.positions.resize(count);
-    island.velocities.resize(count);
+    // One slot more than the island's bodies: SolverData::discardIndex.
+    island.positions.resize(count + 1);
+    island.velocities.resize(count + 1);
     const Real h = step.dt;
     for (std::size_t i = 0; i < count; ++i)
     {
@@ -148,20 +148,6 @@ void IntegrateVelocities(WorldState& world, Island& island, const StepContext& s
         }
         island.positions[i] = {body.sweep.c, body.sweep.a};
         island.velocities[i] = {v, w};
-    }
-}
-
-void PrepareJoints(WorldState& world, Island& island, SolverData& data)
-{
-    for (const std::int32_t j : island.joints)
-    {
-        Joint& joint = world.joints[j].joint;
-        const auto info = [&](std::int32_t bodyIndex)
-        {
-            const Body& body = world.bodies[bodyIndex];
-            return JointBody{body.islandIndex, body.sweep.localCenter, body.invMass, body.invI};
-        };
-        InitJointVelocityConstraints(joint, info(joint.bodyA), info(joint.bodyB), data);
     }
 }
 
@@ -197,17 +183,12 @@ void IntegratePositions(Island& island, const StepContext& step)
     }
 }
 
-bool CorrectPositions(WorldState& world, Island& island, SolverData& data)
+bool CorrectPositions(WorldState& world, SolverData& data)
 {
     for (int i = 0; i < data.step.solver.positionIterations; ++i)
     {
         const bool contactsOkay = world.contactSolver.SolvePositions(data);
-        bool jointsOkay = true;
-        for (const std::int32_t j : island.joints)
-        {
-            const bool jointOkay = SolveJointPositionConstraints(world.joints[j].joint, data);
-            jointsOkay = jointsOkay && jointOkay;
-        }
+        const bool jointsOkay = world.jointSolver.SolvePositions(data);
         if (contactsOkay && jointsOkay)
         {
             return true; // every constraint within tolerance: later sweeps would only add drift

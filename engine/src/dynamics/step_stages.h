@@ -16,10 +16,9 @@ StepContext BeginStep(WorldState& world, Real dt);
 bool CanSeedIsland(const Body& body);
 void SolveIsland(WorldState& world, Island& island, const StepContext& step);
 void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step);
-void PrepareJoints(WorldState& world, Island& island, SolverData& data);
 void IntegratePositions(Island& island, const StepContext& step);
 /// Returns true when the position pass converged (Box2D's positionSolved).
-bool CorrectPositions(WorldState& world, Island& island, SolverData& data);
+bool CorrectPositions(WorldState& world, SolverData& data);
 void FinishBodies(WorldState& world, Island& island);
 void ReportContacts(WorldState& world);
 void SynchronizeShapes(WorldState& world);

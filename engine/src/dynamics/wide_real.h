@@ -2,7 +2,7 @@
 // stream (SIMD). Written with GCC's vector extensions (also understood by Clang): SSE2 on
 // x86-64, NEON on ARM, scalar code elsewhere — no intrinsics, no extra dependency. Every lane
 // does exactly the operations the scalar solver does, in the same order; only which
-// constraints run together changes (see contact_coloring.h).
+// constraints run together changes (see graph_coloring.h).
 #pragma once
 
 #include "meff/math.h"
@@ -108,13 +108,6 @@ inline Vec2W Mul(RotW q, Vec2W v)
     return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
 }
 
-/// Sine and cosine of four angles at once, each within about an ulp of std::sin/std::cos.
-/// The angle is reduced by the nearest multiple k of π/2, r = a − k·π/2 with |r| ≤ π/4, π/2 split
-/// into three floats (Cody and Waite) whose leading two have so few bits that k·C1 and k·C2 are
-/// exact for |k| < 4096; sin r and cos r are their Taylor series to r⁹ and r¹⁰, whose first
-/// omitted terms, (π/4)¹¹/11! and (π/4)¹²/12!, are below 2e-9, under float's half ulp. Lanes
-/// beyond 6000 rad (k too large for exact products) or non-finite, and double builds, use the
-/// standard library.
 /// SinCosW's exact fallback, lane by lane through the standard library.
 [[gnu::noinline, gnu::cold]] inline RotW SinCosLanes(RealW angle)
 {
@@ -127,6 +120,13 @@ inline Vec2W Mul(RotW q, Vec2W v)
     return q;
 }
 
+/// Sine and cosine of four angles at once, each within about an ulp of std::sin/std::cos.
+/// The angle is reduced by the nearest multiple k of π/2, r = a − k·π/2 with |r| ≤ π/4, π/2 split
+/// into three floats (Cody and Waite) whose leading two have so few bits that k·C1 and k·C2 are
+/// exact for |k| < 4096; sin r and cos r are their Taylor series to r⁹ and r¹⁰, whose first
+/// omitted terms, (π/4)¹¹/11! and (π/4)¹²/12!, are below 2e-9, under float's half ulp. Lanes
+/// beyond 6000 rad (k too large for exact products) or non-finite, and double builds, use the
+/// standard library.
 [[gnu::always_inline]] inline RotW SinCosW(RealW angle)
 {
     constexpr Real kReducible = Real(6000);

@@ -7,6 +7,7 @@
 #include "dynamics/contact.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/island.h"
+#include "dynamics/joint_solver.h"
 #include "dynamics/shape.h"
 #include "joints/joint.h"
 #include "meff/world.h"
@@ -67,6 +68,7 @@ struct WorldState
     Island island;
     Island toiIsland; ///< the mini-island of one time-of-impact event
     ContactSolver contactSolver;
+    JointSolver jointSolver;
 
     std::vector<ContactPointReport> contactReports;
     std::vector<ContactEvent> beginEvents;

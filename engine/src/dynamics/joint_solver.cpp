@@ -1,0 +1,99 @@
+#include "dynamics/joint_solver.h"
+
+#include "dynamics/body.h"
+#include "dynamics/world_state.h"
+#include "joints/joint.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// A revolute joint whose only rows are the point block: what the SIMD lanes solve.
+RevoluteJoint* LaneRevolute(Joint& joint, const SolverSettings& solver)
+{
+    auto* revolute = std::get_if<RevoluteJoint>(&joint.data);
+    if (revolute == nullptr || revolute->enableLimit || revolute->enableMotor ||
+        !solver.blockJoints)
+    {
+        return nullptr;
+    }
+    return revolute;
+}
+
+} // namespace
+
+void JointSolver::Prepare(std::span<const std::int32_t> jointIndices, std::span<JointSlot> joints,
+                          std::span<const Body> bodies, SolverData& data)
+{
+    m_colored = data.step.solver.graphColoring;
+    m_sequential.clear();
+    m_candidates.clear();
+    m_candidateRevolutes.clear();
+    const auto info = [&](std::int32_t bodyIndex)
+    {
+        const Body& body = bodies[bodyIndex];
+        return JointBody{body.islandIndex, body.sweep.localCenter, body.invMass, body.invI};
+    };
+    for (const std::int32_t j : jointIndices)
+    {
+        Joint& joint = joints[j].joint;
+        InitJointVelocityConstraints(joint, info(joint.bodyA), info(joint.bodyB), data);
+        RevoluteJoint* revolute = m_colored ? LaneRevolute(joint, data.step.solver) : nullptr;
+        if (revolute != nullptr)
+        {
+            m_candidates.push_back(&joint);
+            m_candidateRevolutes.push_back(revolute);
+        }
+        else
+        {
+            m_sequential.push_back(&joint);
+        }
+    }
+    if (m_colored)
+    {
+        m_coloredSolver.Prepare(m_candidateRevolutes, data.discardIndex);
+        for (const std::int32_t i : m_coloredSolver.Overflow())
+        {
+            m_sequential.push_back(m_candidates[i]);
+        }
+    }
+}
+
+void JointSolver::SolveVelocities(SolverData& data)
+{
+    if (m_colored)
+    {
+        m_coloredSolver.SolveVelocities(data.velocities);
+    }
+    for (Joint* joint : m_sequential)
+    {
+        SolveJointVelocityConstraints(*joint, data);
+    }
+}
+
+void JointSolver::StoreImpulses() const
+{
+    if (m_colored)
+    {
+        m_coloredSolver.StoreImpulses();
+    }
+}
+
+bool JointSolver::SolvePositions(SolverData& data)
+{
+    bool okay = true;
+    if (m_colored)
+    {
+        okay = m_coloredSolver.SolvePositions(data.positions, data.step.tolerances);
+    }
+    for (Joint* joint : m_sequential)
+    {
+        const bool jointOkay = SolveJointPositionConstraints(*joint, data);
+        okay = okay && jointOkay;
+    }
+    return okay;
+}
+
+} // namespace meff::detail

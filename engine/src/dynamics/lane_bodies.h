@@ -1,0 +1,92 @@
+// The lanes' view of their bodies: four bodies' velocities or positions gathered from the
+// island's arrays into SIMD lanes, updated there, and scattered back. Shared by the contact and
+// joint solvers that work by colour (graph_coloring.h).
+#pragma once
+
+#include "dynamics/solver_types.h"
+#include "dynamics/wide_real.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+namespace meff::detail
+{
+
+/// One body state of four lanes: a velocity (v, w) or a position (c, a).
+struct BodyStateW
+{
+    Vec2W linear;  ///< v (m/s) or c (m)
+    RealW angular; ///< w (rad/s) or a (rad)
+};
+
+/// The four Reals of a Position (c.x, c.y, a, padding) or Velocity (v.x, v.y, w, padding):
+/// solver_types.h aligns both to one RealW so that a body's state is one vector load.
+template <typename State>
+constexpr bool kStateIsOneVector = sizeof(State) == sizeof(RealW) &&
+                                   alignof(State) == sizeof(RealW);
+static_assert(kStateIsOneVector<Position> && kStateIsOneVector<Velocity>);
+static_assert(offsetof(Position, a) == 2 * sizeof(Real) &&
+              offsetof(Velocity, w) == 2 * sizeof(Real));
+
+/// Reads the lanes' bodies from the island's positions or velocities: four vector loads and a
+/// 4×4 transpose (rows are bodies, columns become x, y and angle).
+template <typename State>
+[[gnu::always_inline]] inline BodyStateW Gather(const State* states,
+                                                const std::int32_t (&index)[kLanes])
+{
+    static_assert(kLanes == 4, "the transpose is written for four lanes");
+    RealW r0, r1, r2, r3;
+    std::memcpy(&r0, &states[index[0]], sizeof(RealW));
+    std::memcpy(&r1, &states[index[1]], sizeof(RealW));
+    std::memcpy(&r2, &states[index[2]], sizeof(RealW));
+    std::memcpy(&r3, &states[index[3]], sizeof(RealW));
+    const RealW xy01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+    const RealW xy23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    const RealW a01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+    const RealW a23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    return {{__builtin_shufflevector(xy01, xy23, 0, 1, 4, 5),
+             __builtin_shufflevector(xy01, xy23, 2, 3, 6, 7)},
+            __builtin_shufflevector(a01, a23, 0, 1, 4, 5)};
+}
+
+/// Writes the lanes' bodies back: the transpose of Gather and four vector stores. `store[l]`
+/// is the lane's body, or SolverData::discardIndex where the lane must not change its body (a
+/// static or kinematic body, which lanes of one colour may share, or an empty lane).
+template <typename State>
+[[gnu::always_inline]] inline void Scatter(State* states, const std::int32_t (&store)[kLanes],
+                                           const BodyStateW& in)
+{
+    const RealW zero{};
+    const RealW xy01 = __builtin_shufflevector(in.linear.x, in.linear.y, 0, 4, 1, 5);
+    const RealW xy23 = __builtin_shufflevector(in.linear.x, in.linear.y, 2, 6, 3, 7);
+    const RealW a01 = __builtin_shufflevector(in.angular, zero, 0, 4, 1, 5);
+    const RealW a23 = __builtin_shufflevector(in.angular, zero, 2, 6, 3, 7);
+    const RealW r0 = __builtin_shufflevector(xy01, a01, 0, 1, 4, 5);
+    const RealW r1 = __builtin_shufflevector(xy01, a01, 2, 3, 6, 7);
+    const RealW r2 = __builtin_shufflevector(xy23, a23, 0, 1, 4, 5);
+    const RealW r3 = __builtin_shufflevector(xy23, a23, 2, 3, 6, 7);
+    std::memcpy(static_cast<void*>(&states[store[0]]), &r0, sizeof(RealW));
+    std::memcpy(static_cast<void*>(&states[store[1]]), &r1, sizeof(RealW));
+    std::memcpy(static_cast<void*>(&states[store[2]]), &r2, sizeof(RealW));
+    std::memcpy(static_cast<void*>(&states[store[3]]), &r3, sizeof(RealW));
+}
+
+/// The two bodies' inverse masses (1/kg) and inverse inertias (1/(kg·m²)) of four lanes.
+struct LaneMasses
+{
+    RealW invMassA, invIA, invMassB, invIB;
+};
+
+/// Applies impulse P at lever arms rA, rB: −P to A, +P to B (velocities), or the same
+/// pseudo-impulse to positions.
+inline void ApplyImpulseW(const LaneMasses& m, BodyStateW& a, BodyStateW& b, Vec2W rA, Vec2W rB,
+                          Vec2W P)
+{
+    a.linear = a.linear - m.invMassA * P;
+    a.angular = a.angular - m.invIA * Cross(rA, P);
+    b.linear = b.linear + m.invMassB * P;
+    b.angular = b.angular + m.invIB * Cross(rB, P);
+}
+
+} // namespace meff::detail
