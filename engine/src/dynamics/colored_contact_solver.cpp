@@ -69,8 +69,8 @@ void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConst
 {
     g.indexA[l] = pc.indexA;
     g.indexB[l] = pc.indexB;
-    g.storeA[l] = pc.invMassA > 0 || pc.invIA > 0 ? pc.indexA : discardIndex;
-    g.storeB[l] = pc.invMassB > 0 || pc.invIB > 0 ? pc.indexB : discardIndex;
+    g.storeA[l] = SolverMoves(pc.invMassA, pc.invIA) ? pc.indexA : discardIndex;
+    g.storeB[l] = SolverMoves(pc.invMassB, pc.invIB) ? pc.indexB : discardIndex;
     g.invMassA[l] = pc.invMassA;
     g.invMassB[l] = pc.invMassB;
     g.invIA[l] = pc.invIA;

@@ -12,34 +12,17 @@ namespace meff::detail
 namespace
 {
 
-bool Moves(Real invMass, Real invI)
-{
-    return invMass > 0 || invI > 0;
-}
-
-void PackLane(RevoluteJointGroup& g, int l, const RevoluteJoint& joint, std::int32_t discardIndex)
+/// Copies what the lanes need of one joint whose bodies are stored (StoreJointBodies).
+void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t discardIndex)
 {
     g.indexA[l] = joint.indexA;
     g.indexB[l] = joint.indexB;
-    g.storeA[l] = Moves(joint.invMassA, joint.invIA) ? joint.indexA : discardIndex;
-    g.storeB[l] = Moves(joint.invMassB, joint.invIB) ? joint.indexB : discardIndex;
+    g.storeA[l] = SolverMoves(joint.invMassA, joint.invIA) ? joint.indexA : discardIndex;
+    g.storeB[l] = SolverMoves(joint.invMassB, joint.invIB) ? joint.indexB : discardIndex;
     g.invMassA[l] = joint.invMassA;
     g.invMassB[l] = joint.invMassB;
     g.invIA[l] = joint.invIA;
     g.invIB[l] = joint.invIB;
-    g.rA.x[l] = joint.rA.x;
-    g.rA.y[l] = joint.rA.y;
-    g.rB.x[l] = joint.rB.x;
-    g.rB.y[l] = joint.rB.y;
-    const Mat22& K = joint.K;
-    g.k11[l] = K.ex.x;
-    g.k12[l] = K.ey.x;
-    g.k21[l] = K.ex.y;
-    g.k22[l] = K.ey.y;
-    // K is fixed over the velocity iterations, so its determinant is inverted once here
-    // instead of in every Mat22::Solve; the same float operations give the same value.
-    const Real det = K.ex.x * K.ey.y - K.ey.x * K.ex.y;
-    g.invDetK[l] = det != 0 ? Real(1) / det : Real(0);
     g.impulse.x[l] = joint.impulse.x;
     g.impulse.y[l] = joint.impulse.y;
     const Vec2 anchorA = joint.localAnchorA - joint.localCenterA;
@@ -48,6 +31,46 @@ void PackLane(RevoluteJointGroup& g, int l, const RevoluteJoint& joint, std::int
     g.anchorA.y[l] = anchorA.y;
     g.anchorB.x[l] = anchorB.x;
     g.anchorB.y[l] = anchorB.y;
+    // No motor and no limit: their impulses are zero (as InitVelocityConstraints leaves them),
+    // so that the joint's reaction torque is zero too.
+    joint.motorImpulse = 0;
+    joint.lowerImpulse = 0;
+    joint.upperImpulse = 0;
+}
+
+/// RevoluteJoint's InitVelocityConstraints for four joints: lever arms at the step's start,
+/// the point rows' K = J·M⁻¹·Jᵀ and its inverse determinant (K is fixed over the velocity
+/// iterations, so it is inverted once here, not in every Mat22::Solve), then the warm start.
+void PrepareGroup(RevoluteJointGroup& g, const SolverData& data)
+{
+    const RealW aA = Gather(data.positions, g.indexA).angular;
+    const RealW aB = Gather(data.positions, g.indexB).angular;
+    g.rA = Mul(SinCosW(aA), g.anchorA);
+    g.rB = Mul(SinCosW(aB), g.anchorB);
+    const Vec2W rA = g.rA, rB = g.rB;
+    const RealW mA = g.invMassA, mB = g.invMassB, iA = g.invIA, iB = g.invIB;
+    g.k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
+    g.k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
+    g.k21 = g.k12;
+    g.k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
+    const RealW det = g.k11 * g.k22 - g.k12 * g.k21;
+    const MaskW invertible = det != 0;
+    g.invDetK = Select(invertible, Splat(1) / Select(invertible, det, Splat(1)), Splat(0));
+
+    if (data.step.solver.warmStarting)
+    {
+        // Impulses are force·dt: rescale last step's to this step's dt.
+        g.impulse = Splat(data.step.dtRatio) * g.impulse;
+        BodyStateW a = Gather(data.velocities, g.indexA);
+        BodyStateW b = Gather(data.velocities, g.indexB);
+        ApplyImpulseW({mA, iA, mB, iB}, a, b, rA, rB, g.impulse);
+        Scatter(data.velocities, g.storeA, a);
+        Scatter(data.velocities, g.storeB, b);
+    }
+    else
+    {
+        g.impulse = Vec2W{};
+    }
 }
 
 /// x = K⁻¹·b for the lanes' 2×2 K, as Mat22::Solve (0 where det K = 0).
@@ -96,22 +119,14 @@ RealW SolvePositionGroup(const RevoluteJointGroup& g, Position* positions)
 
 } // namespace
 
-void ColoredJointSolver::Prepare(std::span<RevoluteJoint* const> joints, std::int32_t discardIndex)
+void ColoredJointSolver::Prepare(std::span<RevoluteJoint* const> joints,
+                                 std::span<const ConstraintBodies> bodies, const SolverData& data)
 {
-    std::int32_t bodyCount = 0;
-    for (const RevoluteJoint* joint : joints)
-    {
-        bodyCount = std::max({bodyCount, joint->indexA + 1, joint->indexB + 1});
-    }
+    // The island's bodies are the solver indices below the discard slot.
+    const std::int32_t discardIndex = data.discardIndex;
     ColorConstraints(
-        joints.size(), static_cast<std::size_t>(bodyCount),
-        [&](std::size_t i)
-        {
-            const RevoluteJoint& joint = *joints[i];
-            return ConstraintBodies{joint.indexA, joint.indexB, Moves(joint.invMassA, joint.invIA),
-                                    Moves(joint.invMassB, joint.invIB)};
-        },
-        m_coloring);
+        joints.size(), static_cast<std::size_t>(discardIndex),
+        [&](std::size_t i) { return bodies[i]; }, m_coloring);
     m_groups.clear();
     m_sources.clear();
     for (int color = 0; color < m_coloring.ColorCount(); ++color)
@@ -134,6 +149,7 @@ void ColoredJointSolver::Prepare(std::span<RevoluteJoint* const> joints, std::in
                     PackLane(g, l, *joint, discardIndex);
                 }
             }
+            PrepareGroup(g, data);
         }
     }
 }

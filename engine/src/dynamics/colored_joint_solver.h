@@ -35,11 +35,14 @@ struct RevoluteJointGroup
 class ColoredJointSolver
 {
   public:
-    /// Colours the prepared joints (their velocity constraints initialised, warm start applied)
-    /// and packs them four to a group.
-    void Prepare(std::span<RevoluteJoint* const> joints, std::int32_t discardIndex);
+    /// Colours the joints (their bodies stored by StoreJointBodies and summarised in `bodies`,
+    /// one per joint: the colouring then reads a compact array instead of the joints), packs
+    /// them four to a group and prepares the groups: lever arms, K and the warm start
+    /// (RevoluteJoint's InitVelocityConstraints, four at a time).
+    void Prepare(std::span<RevoluteJoint* const> joints, std::span<const ConstraintBodies> bodies,
+                 const SolverData& data);
     /// Positions in Prepare's `joints` of the joints no colour had room for, in their order:
-    /// the caller solves them one by one.
+    /// the caller prepares and solves them one by one.
     std::span<const std::int32_t> Overflow() const { return m_coloring.overflow; }
     void SolveVelocities(Velocity* velocities);
     /// Copies the lanes' accumulated impulses back into the joints.

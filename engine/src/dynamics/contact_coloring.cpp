@@ -9,12 +9,12 @@ namespace meff::detail
 
 bool MovesBodyA(const ContactVelocityConstraint& vc)
 {
-    return vc.invMassA > 0 || vc.invIA > 0;
+    return SolverMoves(vc.invMassA, vc.invIA);
 }
 
 bool MovesBodyB(const ContactVelocityConstraint& vc)
 {
-    return vc.invMassB > 0 || vc.invIB > 0;
+    return SolverMoves(vc.invMassB, vc.invIB);
 }
 
 void ColorContacts(std::span<const ContactVelocityConstraint> constraints, ConstraintColoring& out)

@@ -84,6 +84,15 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     {
         return;
     }
+    // Three refusals with no side effects, so their order is free (Box2D 2.4.1 walks the
+    // contact list, then the joint list, then the filter): the filter, already in hand, goes
+    // first, since pairs of shapes that never collide (a net's or a ragdoll's) are found again
+    // every step their boxes move, and the lists' walks miss the cache.
+    if (!FiltersAllow(first.def.filter, second.def.filter) ||
+        !BodiesShouldCollide(world, bodyB, bodyA))
+    {
+        return;
+    }
     // Does a contact between these two shapes exist already?
     for (std::int32_t key = world.bodies[bodyB].contactList; key != kNullIndex;)
     {
@@ -95,11 +104,6 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
             return;
         }
         key = edge.next;
-    }
-    if (!BodiesShouldCollide(world, bodyB, bodyA) ||
-        !FiltersAllow(first.def.filter, second.def.filter))
-    {
-        return;
     }
     bool swap = false;
     if (!ContactOrder(first.type, second.type, swap))

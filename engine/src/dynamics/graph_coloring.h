@@ -7,6 +7,8 @@
 // in separate passes.
 #pragma once
 
+#include "meff/math.h"
+
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -31,6 +33,13 @@ struct ConstraintColoring
 
     int ColorCount() const { return static_cast<int>(colorStarts.size()) - 1; }
 };
+
+/// True when the solver can change a body with this inverse mass (1/kg) and inverse inertia
+/// (1/(kg·m²)): static and kinematic bodies have both zero.
+inline bool SolverMoves(Real invMass, Real invI)
+{
+    return invMass > 0 || invI > 0;
+}
 
 /// What the colouring needs to know of one constraint.
 struct ConstraintBodies

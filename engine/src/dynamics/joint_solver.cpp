@@ -31,6 +31,7 @@ void JointSolver::Prepare(std::span<const std::int32_t> jointIndices, std::span<
     m_sequential.clear();
     m_candidates.clear();
     m_candidateRevolutes.clear();
+    m_candidateBodies.clear();
     const auto info = [&](std::int32_t bodyIndex)
     {
         const Body& body = bodies[bodyIndex];
@@ -39,24 +40,32 @@ void JointSolver::Prepare(std::span<const std::int32_t> jointIndices, std::span<
     for (const std::int32_t j : jointIndices)
     {
         Joint& joint = joints[j].joint;
-        InitJointVelocityConstraints(joint, info(joint.bodyA), info(joint.bodyB), data);
         RevoluteJoint* revolute = m_colored ? LaneRevolute(joint, data.step.solver) : nullptr;
         if (revolute != nullptr)
         {
+            // The lanes prepare the rest, four joints at a time.
+            const JointBody a = info(joint.bodyA), b = info(joint.bodyB);
+            StoreJointBodies(*revolute, a, b);
             m_candidates.push_back(&joint);
             m_candidateRevolutes.push_back(revolute);
+            m_candidateBodies.push_back({a.solverIndex, b.solverIndex,
+                                         SolverMoves(a.invMass, a.invI),
+                                         SolverMoves(b.invMass, b.invI)});
         }
         else
         {
+            InitJointVelocityConstraints(joint, info(joint.bodyA), info(joint.bodyB), data);
             m_sequential.push_back(&joint);
         }
     }
     if (m_colored)
     {
-        m_coloredSolver.Prepare(m_candidateRevolutes, data.discardIndex);
+        m_coloredSolver.Prepare(m_candidateRevolutes, m_candidateBodies, data);
         for (const std::int32_t i : m_coloredSolver.Overflow())
         {
-            m_sequential.push_back(m_candidates[i]);
+            Joint& joint = *m_candidates[i];
+            InitJointVelocityConstraints(joint, info(joint.bodyA), info(joint.bodyB), data);
+            m_sequential.push_back(&joint);
         }
     }
 }

@@ -37,6 +37,7 @@ class JointSolver
     /// With colouring: the joints the lanes can take, as joints and as revolute joints.
     std::vector<Joint*> m_candidates;
     std::vector<RevoluteJoint*> m_candidateRevolutes;
+    std::vector<ConstraintBodies> m_candidateBodies;
     bool m_colored = false;
     ColoredJointSolver m_coloredSolver;
 };
