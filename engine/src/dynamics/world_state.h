@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 namespace meff::detail
@@ -61,6 +62,8 @@ struct WorldState
     std::vector<std::int32_t> freeContacts;
     std::int32_t contactList = kNullIndex; ///< newest first, as b2ContactManager::m_contactList
     int contactCount = 0;
+    /// ShapePairKey of every contact's two shapes (contact_manager.cpp): does a pair have one?
+    std::unordered_set<std::uint64_t> contactPairs;
 
     BroadPhase broadPhase;
     bool newShapes = false; ///< find new contacts before the next narrow phase
