@@ -34,7 +34,7 @@ inline int EdgeSide(std::int32_t key)
     return key & 1;
 }
 
-struct alignas(64) Contact
+struct Contact
 {
     enum Flags : std::uint32_t
     {
@@ -49,8 +49,8 @@ struct alignas(64) Contact
         HitEvents = 1u << 6, ///< a shape asked for hit events
     };
 
-    // What the list walks read (the narrow phase's, the islands') comes first, in one cache line
-    // (the struct is aligned to 64 bytes): a walk then misses the cache once per contact.
+    // What the list walks read (the narrow phase's, the islands') comes first, together, so
+    // that a walk touches one or two cache lines of each contact, not three.
     bool alive = false;
     std::uint32_t flags = 0;
     std::int32_t shapeA = -1, shapeB = -1;
@@ -72,7 +72,7 @@ struct alignas(64) Contact
     bool IsSolid() const { return (flags & (Touching | Disabled | Sensor)) == Touching; }
 };
 static_assert(offsetof(Contact, edges) + sizeof(Contact::edges) <= 64,
-              "the walked fields share the first cache line");
+              "the walked fields fit in one cache line's length");
 
 /// Box2D 2.4.1's mixing rules.
 inline Real MixFriction(Real a, Real b)
