@@ -27,14 +27,7 @@ void PackVelocityLane(ContactVelocityGroup& g, int l, const ContactVelocityConst
                       std::int32_t source, bool blockSolver, std::int32_t discardIndex)
 {
     g.source[l] = source;
-    g.indexA[l] = vc.indexA;
-    g.indexB[l] = vc.indexB;
-    g.storeA[l] = MovesBodyA(vc) ? vc.indexA : discardIndex;
-    g.storeB[l] = MovesBodyB(vc) ? vc.indexB : discardIndex;
-    g.invMassA[l] = vc.invMassA;
-    g.invMassB[l] = vc.invMassB;
-    g.invIA[l] = vc.invIA;
-    g.invIB[l] = vc.invIB;
+    PackLaneBodies(g, l, vc, discardIndex);
     g.friction[l] = vc.friction;
     g.normal.x[l] = vc.normal.x;
     g.normal.y[l] = vc.normal.y;
@@ -67,14 +60,7 @@ void PackVelocityLane(ContactVelocityGroup& g, int l, const ContactVelocityConst
 void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConstraint& pc,
                       std::int32_t discardIndex)
 {
-    g.indexA[l] = pc.indexA;
-    g.indexB[l] = pc.indexB;
-    g.storeA[l] = SolverMoves(pc.invMassA, pc.invIA) ? pc.indexA : discardIndex;
-    g.storeB[l] = SolverMoves(pc.invMassB, pc.invIB) ? pc.indexB : discardIndex;
-    g.invMassA[l] = pc.invMassA;
-    g.invMassB[l] = pc.invMassB;
-    g.invIA[l] = pc.invIA;
-    g.invIB[l] = pc.invIB;
+    PackLaneBodies(g, l, pc, discardIndex);
     g.localCenterA.x[l] = pc.localCenterA.x;
     g.localCenterA.y[l] = pc.localCenterA.y;
     g.localCenterB.x[l] = pc.localCenterB.x;

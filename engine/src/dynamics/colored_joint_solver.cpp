@@ -15,14 +15,7 @@ namespace
 /// Copies what the lanes need of one joint whose bodies are stored (StoreJointBodies).
 void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t discardIndex)
 {
-    g.indexA[l] = joint.indexA;
-    g.indexB[l] = joint.indexB;
-    g.storeA[l] = SolverMoves(joint.invMassA, joint.invIA) ? joint.indexA : discardIndex;
-    g.storeB[l] = SolverMoves(joint.invMassB, joint.invIB) ? joint.indexB : discardIndex;
-    g.invMassA[l] = joint.invMassA;
-    g.invMassB[l] = joint.invMassB;
-    g.invIA[l] = joint.invIA;
-    g.invIB[l] = joint.invIB;
+    PackLaneBodies(g, l, joint, discardIndex);
     g.impulse.x[l] = joint.impulse.x;
     g.impulse.y[l] = joint.impulse.y;
     const Vec2 anchorA = joint.localAnchorA - joint.localCenterA;

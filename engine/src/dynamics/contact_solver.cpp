@@ -167,7 +167,8 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
 
 void ContactSolver::PrepareColors(const SolverData& data)
 {
-    m_colored = data.step.solver.graphColoring;
+    // An island without contacts (a body in free fall) skips the colouring's fixed cost.
+    m_colored = data.step.solver.graphColoring && m_count > 0;
     if (m_colored)
     {
         m_coloredSolver.Prepare({m_velocity.data(), m_count}, {m_position.data(), m_count},

@@ -58,6 +58,8 @@ void JointSolver::Prepare(std::span<const std::int32_t> jointIndices, std::span<
             m_sequential.push_back(&joint);
         }
     }
+    // An island without lane joints (most islands of a contact scene) skips the colouring.
+    m_colored = m_colored && !m_candidates.empty();
     if (m_colored)
     {
         m_coloredSolver.Prepare(m_candidateRevolutes, m_candidateBodies, data);

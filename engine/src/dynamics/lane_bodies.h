@@ -3,6 +3,7 @@
 // joint solvers that work by colour (graph_coloring.h).
 #pragma once
 
+#include "dynamics/graph_coloring.h"
 #include "dynamics/solver_types.h"
 #include "dynamics/wide_real.h"
 
@@ -70,6 +71,22 @@ template <typename State>
     std::memcpy(static_cast<void*>(&states[store[1]]), &r1, sizeof(RealW));
     std::memcpy(static_cast<void*>(&states[store[2]]), &r2, sizeof(RealW));
     std::memcpy(static_cast<void*>(&states[store[3]]), &r3, sizeof(RealW));
+}
+
+/// Fills lane l's bodies from a prepared constraint: the solver indices to read, where to write
+/// (the body, or the discard slot where the lane must not move it), and the inverse masses
+/// (1/kg) and inertias (1/(kg·m²)). Group and constraint name these members alike.
+template <typename Group, typename Constraint>
+void PackLaneBodies(Group& g, int l, const Constraint& c, std::int32_t discardIndex)
+{
+    g.indexA[l] = c.indexA;
+    g.indexB[l] = c.indexB;
+    g.storeA[l] = SolverMoves(c.invMassA, c.invIA) ? c.indexA : discardIndex;
+    g.storeB[l] = SolverMoves(c.invMassB, c.invIB) ? c.indexB : discardIndex;
+    g.invMassA[l] = c.invMassA;
+    g.invMassB[l] = c.invMassB;
+    g.invIA[l] = c.invIA;
+    g.invIB[l] = c.invIB;
 }
 
 /// The two bodies' inverse masses (1/kg) and inverse inertias (1/(kg·m²)) of four lanes.
