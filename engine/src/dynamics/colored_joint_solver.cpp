@@ -31,6 +31,14 @@ void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t d
     joint.upperImpulse = 0;
 }
 
+/// 1/det K for the lanes' 2×2 K, 0 where K is singular (as Mat22::Solve).
+RealW InverseDeterminant(RealW k11, RealW k12, RealW k21, RealW k22)
+{
+    const RealW det = k11 * k22 - k12 * k21;
+    const MaskW invertible = det != 0;
+    return Select(invertible, Splat(1) / Select(invertible, det, Splat(1)), Splat(0));
+}
+
 /// RevoluteJoint's InitVelocityConstraints for four joints: lever arms at the step's start,
 /// the point rows' K = J·M⁻¹·Jᵀ and its inverse determinant (K is fixed over the velocity
 /// iterations, so it is inverted once here, not in every Mat22::Solve), then the warm start.
@@ -46,9 +54,7 @@ void PrepareGroup(RevoluteJointGroup& g, const SolverData& data)
     g.k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
     g.k21 = g.k12;
     g.k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
-    const RealW det = g.k11 * g.k22 - g.k12 * g.k21;
-    const MaskW invertible = det != 0;
-    g.invDetK = Select(invertible, Splat(1) / Select(invertible, det, Splat(1)), Splat(0));
+    g.invDetK = InverseDeterminant(g.k11, g.k12, g.k21, g.k22);
 
     if (data.step.solver.warmStarting)
     {
@@ -100,10 +106,7 @@ RealW SolvePositionGroup(const RevoluteJointGroup& g, Position* positions)
     const RealW k11 = mA + mB + iA * rA.y * rA.y + iB * rB.y * rB.y;
     const RealW k12 = -iA * rA.x * rA.y - iB * rB.x * rB.y;
     const RealW k22 = mA + mB + iA * rA.x * rA.x + iB * rB.x * rB.x;
-    const RealW det = k11 * k22 - k12 * k12;
-    const MaskW invertible = det != 0;
-    const RealW invDet = Select(invertible, Splat(1) / Select(invertible, det, Splat(1)), Splat(0));
-    const Vec2W x = SolveK(k11, k12, k12, k22, invDet, C);
+    const Vec2W x = SolveK(k11, k12, k12, k22, InverseDeterminant(k11, k12, k12, k22), C);
     ApplyImpulseW({mA, iA, mB, iB}, a, b, rA, rB, Vec2W{-x.x, -x.y});
     Scatter(positions, g.storeA, a);
     Scatter(positions, g.storeB, b);
