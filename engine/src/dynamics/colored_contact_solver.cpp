@@ -11,14 +11,15 @@ namespace
 {
 
 /// Relative velocity of B's contact point with respect to A's, per lane.
-Vec2W RelativeVelocity(const BodyStateW& a, const BodyStateW& b, Vec2W rA, Vec2W rB)
+[[gnu::always_inline]] inline Vec2W RelativeVelocity(const BodyStateW& a, const BodyStateW& b,
+                                                     Vec2W rA, Vec2W rB)
 {
     return b.linear + Cross(b.angular, rB) - a.linear - Cross(a.angular, rA);
 }
 
 /// Applies impulse P at lever arms rA, rB (−P to A, +P to B).
-void ApplyImpulse(const ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b, Vec2W rA, Vec2W rB,
-                  Vec2W P)
+[[gnu::always_inline]] inline void ApplyImpulse(const ContactVelocityGroup& g, BodyStateW& a,
+                                                BodyStateW& b, Vec2W rA, Vec2W rB, Vec2W P)
 {
     ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, P);
 }
@@ -82,7 +83,8 @@ void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConst
 }
 
 /// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn).
-void SolveFriction(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
+[[gnu::always_inline]] inline void SolveFriction(ContactVelocityGroup& g, BodyStateW& a,
+                                                 BodyStateW& b)
 {
     const Vec2W tangent{g.normal.y, -g.normal.x};
     for (int j = 0; j < 2; ++j)
@@ -98,7 +100,8 @@ void SolveFriction(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
 }
 
 /// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0.
-void SolveNormalRows(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
+[[gnu::always_inline]] inline void SolveNormalRows(ContactVelocityGroup& g, BodyStateW& a,
+                                                   BodyStateW& b)
 {
     for (int j = 0; j < 2; ++j)
     {
@@ -197,13 +200,14 @@ struct TransformW
     Vec2W p;
 };
 
-TransformW TransformFromCenter(const BodyStateW& body, Vec2W localCenter)
+[[gnu::always_inline]] inline TransformW TransformFromCenter(const BodyStateW& body,
+                                                             Vec2W localCenter)
 {
     const RotW q = SinCosW(body.angular);
     return {q, body.linear - Mul(q, localCenter)};
 }
 
-Vec2W Mul(const TransformW& xf, Vec2W v)
+[[gnu::always_inline]] inline Vec2W Mul(const TransformW& xf, Vec2W v)
 {
     return Mul(xf.q, v) + xf.p;
 }

@@ -32,7 +32,7 @@ void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t d
 }
 
 /// 1/det K for the lanes' 2×2 K, 0 where K is singular (as Mat22::Solve).
-RealW InverseDeterminant(RealW k11, RealW k12, RealW k21, RealW k22)
+[[gnu::always_inline]] inline RealW InverseDeterminant(RealW k11, RealW k12, RealW k21, RealW k22)
 {
     const RealW det = k11 * k22 - k12 * k21;
     const MaskW invertible = det != 0;
@@ -73,7 +73,8 @@ void PrepareGroup(RevoluteJointGroup& g, const SolverData& data)
 }
 
 /// x = K⁻¹·b for the lanes' 2×2 K, as Mat22::Solve (0 where det K = 0).
-Vec2W SolveK(RealW k11, RealW k12, RealW k21, RealW k22, RealW invDet, Vec2W b)
+[[gnu::always_inline]] inline Vec2W SolveK(RealW k11, RealW k12, RealW k21, RealW k22, RealW invDet,
+                                           Vec2W b)
 {
     return {invDet * (k22 * b.x - k12 * b.y), invDet * (k11 * b.y - k21 * b.x)};
 }

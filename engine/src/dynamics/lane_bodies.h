@@ -97,8 +97,8 @@ struct LaneMasses
 
 /// Applies impulse P at lever arms rA, rB: −P to A, +P to B (velocities), or the same
 /// pseudo-impulse to positions.
-inline void ApplyImpulseW(const LaneMasses& m, BodyStateW& a, BodyStateW& b, Vec2W rA, Vec2W rB,
-                          Vec2W P)
+[[gnu::always_inline]] inline void ApplyImpulseW(const LaneMasses& m, BodyStateW& a, BodyStateW& b,
+                                                 Vec2W rA, Vec2W rB, Vec2W P)
 {
     a.linear = a.linear - m.invMassA * P;
     a.angular = a.angular - m.invIA * Cross(rA, P);
