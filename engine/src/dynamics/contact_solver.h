@@ -54,6 +54,7 @@ class ContactSolver
     /// sweeps then run colour by colour in m_coloredSolver.
     bool m_colored = false;
     ColoredContactSolver m_coloredSolver;
+    std::vector<Rot> m_rotations; ///< by colour: each island body's rotation, for Prepare
 };
 
 } // namespace meff::detail
