@@ -75,7 +75,8 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
     const bool blockSolver = data.step.solver.blockSolver;
     // By colour, each body's rotation is computed once, four bodies at a time; Box2D's order
     // computes it for each contact with std::sin and std::cos, as Box2D does, bit for bit.
-    const bool rotationsOnce = data.step.solver.graphColoring && data.discardIndex > 0;
+    const bool rotationsOnce =
+        data.step.solver.graphColoring && data.discardIndex > 0 && m_count > 0;
     if (rotationsOnce)
     {
         ComputeRotations(data.positions, static_cast<std::size_t>(data.discardIndex), m_rotations);
