@@ -324,6 +324,14 @@ void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities
     const Real mA = vc.invMassA, mB = vc.invMassB, iA = vc.invIA, iB = vc.invIB;
     const Vec2 normal = vc.normal;
     const Vec2 tangent = Cross(normal, Real(1));
+    // Impulse P at the point: −P to A, +P to B.
+    const auto applyAtPoint = [&](const ContactVelocityPoint& vp, Vec2 P)
+    {
+        vA -= mA * P;
+        wA -= iA * Cross(vp.rA, P);
+        vB += mB * P;
+        wB += iB * Cross(vp.rB, P);
+    };
 
     // Friction rows first: non-penetration, solved last, matters more.
     // A scene with friction 0 pays nothing for them.
@@ -338,11 +346,7 @@ void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities
             const Real newImpulse = Clamp(vp.tangentImpulse + lambda, -maxFriction, maxFriction);
             lambda = newImpulse - vp.tangentImpulse;
             vp.tangentImpulse = newImpulse;
-            const Vec2 P = lambda * tangent;
-            vA -= mA * P;
-            wA -= iA * Cross(vp.rA, P);
-            vB += mB * P;
-            wB += iB * Cross(vp.rB, P);
+            applyAtPoint(vp, lambda * tangent);
         }
     }
 
@@ -356,11 +360,7 @@ void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities
             const Real newImpulse = Max(vp.normalImpulse + lambda, Real(0));
             lambda = newImpulse - vp.normalImpulse;
             vp.normalImpulse = newImpulse;
-            const Vec2 P = lambda * normal;
-            vA -= mA * P;
-            wA -= iA * Cross(vp.rA, P);
-            vB += mB * P;
-            wB += iB * Cross(vp.rB, P);
+            applyAtPoint(vp, lambda * normal);
         }
     }
     else
