@@ -10,76 +10,11 @@ namespace meff::detail
 namespace
 {
 
-/// Relative velocity of B's contact point with respect to A's, per lane.
-[[gnu::always_inline]] inline Vec2W RelativeVelocity(const BodyStateW& a, const BodyStateW& b,
-                                                     Vec2W rA, Vec2W rB)
-{
-    return b.linear + Cross(b.angular, rB) - a.linear - Cross(a.angular, rA);
-}
-
 /// Applies impulse P at lever arms rA, rB (−P to A, +P to B).
 [[gnu::always_inline]] inline void ApplyImpulse(const ContactVelocityGroup& g, BodyStateW& a,
                                                 BodyStateW& b, Vec2W rA, Vec2W rB, Vec2W P)
 {
     ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, P);
-}
-
-void PackVelocityLane(ContactVelocityGroup& g, int l, const ContactVelocityConstraint& vc,
-                      std::int32_t source, bool blockSolver, std::int32_t discardIndex)
-{
-    g.source[l] = source;
-    PackLaneBodies(g, l, vc, discardIndex);
-    g.friction[l] = vc.friction;
-    g.normal.x[l] = vc.normal.x;
-    g.normal.y[l] = vc.normal.y;
-    for (int j = 0; j < vc.pointCount; ++j)
-    {
-        const ContactVelocityPoint& vp = vc.points[j];
-        g.rA[j].x[l] = vp.rA.x;
-        g.rA[j].y[l] = vp.rA.y;
-        g.rB[j].x[l] = vp.rB.x;
-        g.rB[j].y[l] = vp.rB.y;
-        g.normalMass[j][l] = vp.normalMass;
-        g.tangentMass[j][l] = vp.tangentMass;
-        g.velocityBias[j][l] = vp.velocityBias;
-        g.normalImpulse[j][l] = vp.normalImpulse;
-        g.tangentImpulse[j][l] = vp.tangentImpulse;
-    }
-    const bool block = vc.pointCount == 2 && blockSolver;
-    g.block[l] = block ? -1 : 0;
-    g.anyBlock = g.anyBlock || block;
-    g.anyScalar = g.anyScalar || !block;
-    g.k11[l] = vc.K.ex.x;
-    g.k12[l] = vc.K.ey.x;
-    g.k22[l] = vc.K.ey.y;
-    g.inv11[l] = vc.normalMass.ex.x;
-    g.inv12[l] = vc.normalMass.ey.x;
-    g.inv21[l] = vc.normalMass.ex.y;
-    g.inv22[l] = vc.normalMass.ey.y;
-}
-
-void PackPositionLane(ContactPositionGroup& g, int l, const ContactPositionConstraint& pc,
-                      std::int32_t discardIndex)
-{
-    PackLaneBodies(g, l, pc, discardIndex);
-    g.localCenterA.x[l] = pc.localCenterA.x;
-    g.localCenterA.y[l] = pc.localCenterA.y;
-    g.localCenterB.x[l] = pc.localCenterB.x;
-    g.localCenterB.y[l] = pc.localCenterB.y;
-    g.localNormal.x[l] = pc.localNormal.x;
-    g.localNormal.y[l] = pc.localNormal.y;
-    g.localPoint.x[l] = pc.localPoint.x;
-    g.localPoint.y[l] = pc.localPoint.y;
-    for (int j = 0; j < pc.pointCount; ++j)
-    {
-        g.localPoints[j].x[l] = pc.localPoints[j].x;
-        g.localPoints[j].y[l] = pc.localPoints[j].y;
-        g.hasPoint[j][l] = -1;
-    }
-    g.radiusA[l] = pc.radiusA;
-    g.radiusB[l] = pc.radiusB;
-    g.circles[l] = pc.type == Manifold::Type::Circles ? -1 : 0;
-    g.faceB[l] = pc.type == Manifold::Type::FaceB ? -1 : 0;
 }
 
 /// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn).
@@ -193,25 +128,6 @@ void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
     Scatter(velocities, g.storeB, b);
 }
 
-/// One body's transform per lane from its centre of mass, angle and local centre.
-struct TransformW
-{
-    RotW q;
-    Vec2W p;
-};
-
-[[gnu::always_inline]] inline TransformW TransformFromCenter(const BodyStateW& body,
-                                                             Vec2W localCenter)
-{
-    const RotW q = SinCosW(body.angular);
-    return {q, body.linear - Mul(q, localCenter)};
-}
-
-[[gnu::always_inline]] inline Vec2W Mul(const TransformW& xf, Vec2W v)
-{
-    return Mul(xf.q, v) + xf.p;
-}
-
 /// One sweep over a group's points (as SolvePositionConstraint); returns each lane's smallest
 /// separation.
 RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, const Tolerances& tol,
@@ -229,12 +145,8 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
         const TransformW xfA = TransformFromCenter(a, g.localCenterA);
         const TransformW xfB = TransformFromCenter(b, g.localCenterB);
         // FaceA and circles: A holds the reference face (or centre); FaceB: B does.
-        const TransformW reference{
-            {Select(g.faceB, xfB.q.s, xfA.q.s), Select(g.faceB, xfB.q.c, xfA.q.c)},
-            Select(g.faceB, xfB.p, xfA.p)};
-        const TransformW incident{
-            {Select(g.faceB, xfA.q.s, xfB.q.s), Select(g.faceB, xfA.q.c, xfB.q.c)},
-            Select(g.faceB, xfA.p, xfB.p)};
+        const TransformW reference = Select(g.faceB, xfB, xfA);
+        const TransformW incident = Select(g.faceB, xfA, xfB);
         const Vec2W planePoint = Mul(reference, g.localPoint);
         const Vec2W clipPoint = Mul(incident, g.localPoints[j]);
         const Vec2W d = clipPoint - planePoint;
@@ -281,39 +193,6 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
 }
 
 } // namespace
-
-void ColoredContactSolver::Prepare(std::span<const ContactVelocityConstraint> velocity,
-                                   std::span<const ContactPositionConstraint> position,
-                                   bool blockSolver, std::int32_t discardIndex)
-{
-    m_blockSolver = blockSolver;
-    ColorContacts(velocity, m_coloring);
-    m_velocityGroups.clear();
-    m_positionGroups.clear();
-    for (int color = 0; color < m_coloring.ColorCount(); ++color)
-    {
-        const std::int32_t begin = m_coloring.colorStarts[color];
-        const std::int32_t end = m_coloring.colorStarts[color + 1];
-        for (std::int32_t first = begin; first < end; first += kLanes)
-        {
-            // Empty lanes read body 0 and write the discard slot; all their masses are zero.
-            ContactVelocityGroup& vg = m_velocityGroups.emplace_back();
-            ContactPositionGroup& pg = m_positionGroups.emplace_back();
-            for (int l = 0; l < kLanes; ++l)
-            {
-                vg.source[l] = -1;
-                vg.indexA[l] = vg.indexB[l] = pg.indexA[l] = pg.indexB[l] = 0;
-                vg.storeA[l] = vg.storeB[l] = pg.storeA[l] = pg.storeB[l] = discardIndex;
-            }
-            for (int l = 0; l < kLanes && first + l < end; ++l)
-            {
-                const std::int32_t i = m_coloring.order[first + l];
-                PackVelocityLane(vg, l, velocity[i], i, blockSolver, discardIndex);
-                PackPositionLane(pg, l, position[i], discardIndex);
-            }
-        }
-    }
-}
 
 void ColoredContactSolver::SolveVelocities(std::span<ContactVelocityConstraint> velocity,
                                            SolverData& data)

@@ -53,10 +53,15 @@ struct ContactPositionGroup
 class ColoredContactSolver
 {
   public:
-    /// Colours the prepared constraints and packs them four to a group.
-    void Prepare(std::span<const ContactVelocityConstraint> velocity,
-                 std::span<const ContactPositionConstraint> position, bool blockSolver,
-                 std::int32_t discardIndex);
+    /// Colours the island's contacts and prepares the coloured ones four at a time, in lanes
+    /// (colored_contact_prepare.cpp): the same world manifold, lever arms, effective masses,
+    /// restitution bias and block K as ContactSolver's scalar preparation, which the overflow
+    /// gets instead. Of a coloured contact's `velocity[k]` only the contact index, the solved
+    /// point count and each point's normal velocity are written; its rows live in the lanes.
+    void Prepare(const IslandContacts& island, std::span<ContactVelocityConstraint> velocity,
+                 const SolverData& data);
+    /// Applies the lanes' warm-start impulses (the overflow's are ContactSolver's).
+    void WarmStart(SolverData& data);
     /// One velocity sweep: the colours in order, then the overflow in island order.
     void SolveVelocities(std::span<ContactVelocityConstraint> velocity, SolverData& data);
     /// Copies the lanes' accumulated impulses back into the constraints.

@@ -31,14 +31,6 @@ void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t d
     joint.upperImpulse = 0;
 }
 
-/// 1/det K for the lanes' 2×2 K, 0 where K is singular (as Mat22::Solve).
-[[gnu::always_inline]] inline RealW InverseDeterminant(RealW k11, RealW k12, RealW k21, RealW k22)
-{
-    const RealW det = k11 * k22 - k12 * k21;
-    const MaskW invertible = det != 0;
-    return Select(invertible, Splat(1) / Select(invertible, det, Splat(1)), Splat(0));
-}
-
 /// RevoluteJoint's InitVelocityConstraints for four joints: lever arms at the step's start,
 /// the point rows' K = J·M⁻¹·Jᵀ and its inverse determinant (K is fixed over the velocity
 /// iterations, so it is inverted once here, not in every Mat22::Solve), then the warm start.

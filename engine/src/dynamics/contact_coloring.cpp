@@ -1,35 +1,23 @@
 #include "dynamics/contact_coloring.h"
 
-#include "dynamics/contact_constraint.h"
-
-#include <algorithm>
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
 
 namespace meff::detail
 {
 
-bool MovesBodyA(const ContactVelocityConstraint& vc)
+void ColorContacts(const IslandContacts& island, std::size_t bodyCount, ConstraintColoring& out)
 {
-    return SolverMoves(vc.invMassA, vc.invIA);
-}
-
-bool MovesBodyB(const ContactVelocityConstraint& vc)
-{
-    return SolverMoves(vc.invMassB, vc.invIB);
-}
-
-void ColorContacts(std::span<const ContactVelocityConstraint> constraints, ConstraintColoring& out)
-{
-    std::int32_t bodyCount = 0;
-    for (const ContactVelocityConstraint& vc : constraints)
-    {
-        bodyCount = std::max({bodyCount, vc.indexA + 1, vc.indexB + 1});
-    }
     ColorConstraints(
-        constraints.size(), static_cast<std::size_t>(bodyCount),
+        island.contactIndices.size(), bodyCount,
         [&](std::size_t i)
         {
-            const ContactVelocityConstraint& vc = constraints[i];
-            return ConstraintBodies{vc.indexA, vc.indexB, MovesBodyA(vc), MovesBodyB(vc)};
+            const Contact& contact = island.contacts[island.contactIndices[i]];
+            const Body& bodyA = island.bodies[contact.bodyA];
+            const Body& bodyB = island.bodies[contact.bodyB];
+            return ConstraintBodies{bodyA.islandIndex, bodyB.islandIndex,
+                                    SolverMoves(bodyA.invMass, bodyA.invI),
+                                    SolverMoves(bodyB.invMass, bodyB.invI)};
         },
         out);
 }

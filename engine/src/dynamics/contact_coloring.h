@@ -1,20 +1,16 @@
-// The graph colouring (graph_coloring.h) of an island's prepared contact constraints.
+// The graph colouring (graph_coloring.h) of an island's contacts.
 #pragma once
 
+#include "dynamics/contact_constraint.h"
 #include "dynamics/graph_coloring.h"
 
-#include <span>
+#include <cstddef>
 
 namespace meff::detail
 {
 
-struct ContactVelocityConstraint;
-
-/// True when the solver may change the body's velocity through this contact.
-bool MovesBodyA(const ContactVelocityConstraint& vc);
-bool MovesBodyB(const ContactVelocityConstraint& vc);
-
-/// Colours the contacts in island order (ColorConstraints).
-void ColorContacts(std::span<const ContactVelocityConstraint> constraints, ConstraintColoring& out);
+/// Colours the island's contacts in island order (ColorConstraints); `bodyCount` is the
+/// island's body count. The colouring's indices are positions in island.contactIndices.
+void ColorContacts(const IslandContacts& island, std::size_t bodyCount, ConstraintColoring& out);
 
 } // namespace meff::detail

@@ -9,9 +9,24 @@
 #include "meff/collision.h"
 
 #include <cstdint>
+#include <span>
 
 namespace meff::detail
 {
+
+struct Body;
+struct Contact;
+struct Shape;
+
+/// What contact preparation reads: one island's contacts (world contact indices, in island
+/// order) and the world's contacts, bodies (with their islandIndex set) and shapes.
+struct IslandContacts
+{
+    std::span<const std::int32_t> contactIndices;
+    std::span<const Contact> contacts;
+    std::span<const Body> bodies;
+    std::span<const Shape> shapes;
+};
 
 struct ContactVelocityPoint
 {
@@ -45,6 +60,11 @@ struct ContactPositionConstraint
     Real radiusA = 0, radiusB = 0;
     int pointCount = 0;
 };
+
+/// Box2D's largest accepted condition number of a two-point manifold's 2×2 block before the
+/// solver falls back to its first point: beyond it the two rows are nearly parallel and K⁻¹
+/// amplifies round-off.
+inline constexpr Real kMaxConditionNumber = 1000;
 
 /// Inverse masses and inertias one position constraint uses.
 struct PositionMasses

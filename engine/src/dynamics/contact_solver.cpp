@@ -3,7 +3,6 @@
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
 #include "dynamics/shape.h"
-#include "dynamics/wide_real.h"
 
 namespace meff::detail
 {
@@ -34,35 +33,33 @@ Transform TransformFromCenter(Vec2 c, Rot q, Vec2 localCenter)
     return xf;
 }
 
-/// The rotations of the first `count` solver bodies, four at a time (SinCosW, within 2 ulp of
-/// std::sin and std::cos).
-void ComputeRotations(const Position* positions, std::size_t count, std::vector<Rot>& out)
+/// Applies one contact's accumulated impulses of last step (scaled in Prepare).
+void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velocities)
 {
-    out.resize(count);
-    for (std::size_t first = 0; first < count; first += kLanes)
+    Velocity& a = velocities[vc.indexA];
+    Velocity& b = velocities[vc.indexB];
+    Vec2 vA = a.v, vB = b.v;
+    Real wA = a.w, wB = b.w;
+    const Vec2 tangent = Cross(vc.normal, Real(1));
+    for (int j = 0; j < vc.pointCount; ++j)
     {
-        RealW angles{};
-        for (std::size_t l = 0; l < kLanes && first + l < count; ++l)
-        {
-            angles[l] = positions[first + l].a;
-        }
-        const RotW q = SinCosW(angles);
-        for (std::size_t l = 0; l < kLanes && first + l < count; ++l)
-        {
-            out[first + l].s = q.s[l];
-            out[first + l].c = q.c[l];
-        }
+        const ContactVelocityPoint& vp = vc.points[j];
+        const Vec2 P = vp.normalImpulse * vc.normal + vp.tangentImpulse * tangent;
+        wA -= vc.invIA * Cross(vp.rA, P);
+        vA -= vc.invMassA * P;
+        wB += vc.invIB * Cross(vp.rB, P);
+        vB += vc.invMassB * P;
     }
+    a.v = vA;
+    a.w = wA;
+    b.v = vB;
+    b.w = wB;
 }
-
-/// Box2D's largest accepted condition number of the 2×2 block before it falls back to one
-/// point: beyond it the two rows are nearly parallel and K⁻¹ amplifies round-off.
-constexpr Real kMaxConditionNumber = 1000;
 
 } // namespace
 
 void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
-                            std::span<Contact> contacts, std::span<const Body> bodies,
+                            std::span<const Contact> contacts, std::span<const Body> bodies,
                             std::span<const Shape> shapes, SolverData& data)
 {
     m_count = contactIndices.size();
@@ -71,166 +68,155 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
         m_velocity.resize(m_count);
         m_position.resize(m_count);
     }
-    const bool warmStarting = data.step.solver.warmStarting;
-    const bool blockSolver = data.step.solver.blockSolver;
-    // By colour, each body's rotation is computed once, four bodies at a time; Box2D's order
-    // computes it for each contact with std::sin and std::cos, as Box2D does, bit for bit.
-    const bool rotationsOnce =
-        data.step.solver.graphColoring && data.discardIndex > 0 && m_count > 0;
-    if (rotationsOnce)
-    {
-        ComputeRotations(data.positions, static_cast<std::size_t>(data.discardIndex), m_rotations);
-    }
-    const auto rotation = [&](std::int32_t index)
-    { return rotationsOnce ? m_rotations[index] : Rot(data.positions[index].a); };
-
-    for (std::size_t i = 0; i < m_count; ++i)
-    {
-        const Contact& contact = contacts[contactIndices[i]];
-        const Body& bodyA = bodies[contact.bodyA];
-        const Body& bodyB = bodies[contact.bodyB];
-        const Manifold& manifold = contact.manifold;
-
-        ContactVelocityConstraint& vc = m_velocity[i];
-        vc.friction = contact.friction;
-        vc.restitution = contact.restitution;
-        vc.threshold = contact.restitutionThreshold;
-        vc.indexA = bodyA.islandIndex;
-        vc.indexB = bodyB.islandIndex;
-        vc.invMassA = bodyA.invMass;
-        vc.invMassB = bodyB.invMass;
-        vc.invIA = bodyA.invI;
-        vc.invIB = bodyB.invI;
-        vc.contactIndex = contactIndices[i];
-        vc.pointCount = manifold.pointCount;
-        vc.K = Mat22{{0, 0}, {0, 0}};
-        vc.normalMass = Mat22{{0, 0}, {0, 0}};
-
-        ContactPositionConstraint& pc = m_position[i];
-        pc.indexA = bodyA.islandIndex;
-        pc.indexB = bodyB.islandIndex;
-        pc.invMassA = bodyA.invMass;
-        pc.invMassB = bodyB.invMass;
-        pc.invIA = bodyA.invI;
-        pc.invIB = bodyB.invI;
-        pc.localCenterA = bodyA.sweep.localCenter;
-        pc.localCenterB = bodyB.sweep.localCenter;
-        pc.localNormal = manifold.localNormal;
-        pc.localPoint = manifold.localPoint;
-        pc.type = manifold.type;
-        pc.radiusA = shapes[contact.shapeA].Radius();
-        pc.radiusB = shapes[contact.shapeB].Radius();
-        pc.pointCount = manifold.pointCount;
-
-        for (int j = 0; j < manifold.pointCount; ++j)
-        {
-            const ManifoldPoint& mp = manifold.points[j];
-            ContactVelocityPoint& vp = vc.points[j];
-            // Impulses are scaled by dt/dt0 so that a changed step size keeps the same force.
-            vp.normalImpulse = warmStarting ? data.step.dtRatio * mp.normalImpulse : Real(0);
-            vp.tangentImpulse = warmStarting ? data.step.dtRatio * mp.tangentImpulse : Real(0);
-            pc.localPoints[j] = mp.localPoint;
-        }
-
-        // Position-dependent part: lever arms, effective masses, restitution bias.
-        const Real mA = vc.invMassA, mB = vc.invMassB, iA = vc.invIA, iB = vc.invIB;
-        const Vec2 cA = data.positions[vc.indexA].c;
-        const Vec2 cB = data.positions[vc.indexB].c;
-        const Transform xfA = TransformFromCenter(cA, rotation(vc.indexA), pc.localCenterA);
-        const Transform xfB = TransformFromCenter(cB, rotation(vc.indexB), pc.localCenterB);
-        WorldManifold worldManifold;
-        worldManifold.Initialize(manifold, xfA, pc.radiusA, xfB, pc.radiusB);
-        vc.normal = worldManifold.normal;
-        const Vec2 tangent = Cross(vc.normal, Real(1));
-        // The approach velocity for restitution: this step's (gravity already added, as Box2D)
-        // or the bodies' velocities at the start of the step (see restitutionFromStepStart).
-        const bool fromStepStart = data.step.solver.restitutionFromStepStart;
-        const Velocity velA = fromStepStart ? Velocity{bodyA.linearVelocity, bodyA.angularVelocity}
-                                            : data.velocities[vc.indexA];
-        const Velocity velB = fromStepStart ? Velocity{bodyB.linearVelocity, bodyB.angularVelocity}
-                                            : data.velocities[vc.indexB];
-
-        for (int j = 0; j < vc.pointCount; ++j)
-        {
-            ContactVelocityPoint& vp = vc.points[j];
-            vp.rA = worldManifold.points[j] - cA;
-            vp.rB = worldManifold.points[j] - cB;
-            const Real kNormal = InverseEffectiveMass(mA, mB, iA, iB, vp.rA, vp.rB, vc.normal);
-            vp.normalMass = kNormal > 0 ? Real(1) / kNormal : Real(0);
-            const Real kTangent = InverseEffectiveMass(mA, mB, iA, iB, vp.rA, vp.rB, tangent);
-            vp.tangentMass = kTangent > 0 ? Real(1) / kTangent : Real(0);
-
-            // Restitution (seed: P = (1+e)(u2−u1)·m_red): driving the normal row to the target
-            // velocity −e·vn instead of 0 makes the impulse (1+e)·m_red·|vn|.
-            vp.velocityBias = 0;
-            const Real vRel = Dot(vc.normal, RelativeVelocity(velA.v, velA.w, velB.v, velB.w, vp));
-            vp.normalVelocity = vRel;
-            if (vRel < -vc.threshold)
-            {
-                vp.velocityBias = -vc.restitution * vRel;
-            }
-        }
-
-        if (vc.pointCount == 2 && blockSolver)
-        {
-            const ContactVelocityPoint& p1 = vc.points[0];
-            const ContactVelocityPoint& p2 = vc.points[1];
-            const Real rn1A = Cross(p1.rA, vc.normal), rn1B = Cross(p1.rB, vc.normal);
-            const Real rn2A = Cross(p2.rA, vc.normal), rn2B = Cross(p2.rB, vc.normal);
-            const Real k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-            const Real k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-            const Real k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-            if (k11 * k11 < kMaxConditionNumber * (k11 * k22 - k12 * k12))
-            {
-                vc.K.ex = {k11, k12};
-                vc.K.ey = {k12, k22};
-                vc.normalMass = vc.K.GetInverse();
-            }
-            else
-            {
-                // Redundant rows: solve only the first point (as Box2D; the second keeps its
-                // stored impulse and is not reported this step).
-                vc.pointCount = 1;
-            }
-        }
-    }
-    PrepareColors(data);
-}
-
-void ContactSolver::PrepareColors(const SolverData& data)
-{
+    const IslandContacts island{contactIndices, contacts, bodies, shapes};
     // An island without contacts (a body in free fall) skips the colouring's fixed cost.
     m_colored = data.step.solver.graphColoring && m_count > 0;
-    if (m_colored)
+    if (!m_colored)
     {
-        m_coloredSolver.Prepare({m_velocity.data(), m_count}, {m_position.data(), m_count},
-                                data.step.solver.blockSolver, data.discardIndex);
+        for (std::size_t k = 0; k < m_count; ++k)
+        {
+            PrepareConstraint(island, k, data);
+        }
+        return;
+    }
+    m_coloredSolver.Prepare(island, {m_velocity.data(), m_count}, data);
+    for (const std::int32_t k : m_coloredSolver.Coloring().overflow)
+    {
+        PrepareConstraint(island, static_cast<std::size_t>(k), data);
+    }
+}
+
+void ContactSolver::PrepareConstraint(const IslandContacts& island, std::size_t k,
+                                      const SolverData& data)
+{
+    const bool warmStarting = data.step.solver.warmStarting;
+    const bool blockSolver = data.step.solver.blockSolver;
+    const std::int32_t contactIndex = island.contactIndices[k];
+    const Contact& contact = island.contacts[contactIndex];
+    const Body& bodyA = island.bodies[contact.bodyA];
+    const Body& bodyB = island.bodies[contact.bodyB];
+    const Manifold& manifold = contact.manifold;
+
+    ContactVelocityConstraint& vc = m_velocity[k];
+    vc.friction = contact.friction;
+    vc.restitution = contact.restitution;
+    vc.threshold = contact.restitutionThreshold;
+    vc.indexA = bodyA.islandIndex;
+    vc.indexB = bodyB.islandIndex;
+    vc.invMassA = bodyA.invMass;
+    vc.invMassB = bodyB.invMass;
+    vc.invIA = bodyA.invI;
+    vc.invIB = bodyB.invI;
+    vc.contactIndex = contactIndex;
+    vc.pointCount = manifold.pointCount;
+    vc.K = Mat22{{0, 0}, {0, 0}};
+    vc.normalMass = Mat22{{0, 0}, {0, 0}};
+
+    ContactPositionConstraint& pc = m_position[k];
+    pc.indexA = bodyA.islandIndex;
+    pc.indexB = bodyB.islandIndex;
+    pc.invMassA = bodyA.invMass;
+    pc.invMassB = bodyB.invMass;
+    pc.invIA = bodyA.invI;
+    pc.invIB = bodyB.invI;
+    pc.localCenterA = bodyA.sweep.localCenter;
+    pc.localCenterB = bodyB.sweep.localCenter;
+    pc.localNormal = manifold.localNormal;
+    pc.localPoint = manifold.localPoint;
+    pc.type = manifold.type;
+    pc.radiusA = island.shapes[contact.shapeA].Radius();
+    pc.radiusB = island.shapes[contact.shapeB].Radius();
+    pc.pointCount = manifold.pointCount;
+
+    for (int j = 0; j < manifold.pointCount; ++j)
+    {
+        const ManifoldPoint& mp = manifold.points[j];
+        ContactVelocityPoint& vp = vc.points[j];
+        // Impulses are scaled by dt/dt0 so that a changed step size keeps the same force.
+        vp.normalImpulse = warmStarting ? data.step.dtRatio * mp.normalImpulse : Real(0);
+        vp.tangentImpulse = warmStarting ? data.step.dtRatio * mp.tangentImpulse : Real(0);
+        pc.localPoints[j] = mp.localPoint;
+    }
+
+    // Position-dependent part: lever arms, effective masses, restitution bias.
+    const Real mA = vc.invMassA, mB = vc.invMassB, iA = vc.invIA, iB = vc.invIB;
+    const Vec2 cA = data.positions[vc.indexA].c;
+    const Vec2 cB = data.positions[vc.indexB].c;
+    const Transform xfA =
+        TransformFromCenter(cA, Rot(data.positions[vc.indexA].a), pc.localCenterA);
+    const Transform xfB =
+        TransformFromCenter(cB, Rot(data.positions[vc.indexB].a), pc.localCenterB);
+    WorldManifold worldManifold;
+    worldManifold.Initialize(manifold, xfA, pc.radiusA, xfB, pc.radiusB);
+    vc.normal = worldManifold.normal;
+    const Vec2 tangent = Cross(vc.normal, Real(1));
+    // The approach velocity for restitution: this step's (gravity already added, as Box2D)
+    // or the bodies' velocities at the start of the step (see restitutionFromStepStart).
+    const bool fromStepStart = data.step.solver.restitutionFromStepStart;
+    const Velocity velA = fromStepStart ? Velocity{bodyA.linearVelocity, bodyA.angularVelocity}
+                                        : data.velocities[vc.indexA];
+    const Velocity velB = fromStepStart ? Velocity{bodyB.linearVelocity, bodyB.angularVelocity}
+                                        : data.velocities[vc.indexB];
+
+    for (int j = 0; j < vc.pointCount; ++j)
+    {
+        ContactVelocityPoint& vp = vc.points[j];
+        vp.rA = worldManifold.points[j] - cA;
+        vp.rB = worldManifold.points[j] - cB;
+        const Real kNormal = InverseEffectiveMass(mA, mB, iA, iB, vp.rA, vp.rB, vc.normal);
+        vp.normalMass = kNormal > 0 ? Real(1) / kNormal : Real(0);
+        const Real kTangent = InverseEffectiveMass(mA, mB, iA, iB, vp.rA, vp.rB, tangent);
+        vp.tangentMass = kTangent > 0 ? Real(1) / kTangent : Real(0);
+
+        // Restitution (seed: P = (1+e)(u2−u1)·m_red): driving the normal row to the target
+        // velocity −e·vn instead of 0 makes the impulse (1+e)·m_red·|vn|.
+        vp.velocityBias = 0;
+        const Real vRel = Dot(vc.normal, RelativeVelocity(velA.v, velA.w, velB.v, velB.w, vp));
+        vp.normalVelocity = vRel;
+        if (vRel < -vc.threshold)
+        {
+            vp.velocityBias = -vc.restitution * vRel;
+        }
+    }
+
+    if (vc.pointCount == 2 && blockSolver)
+    {
+        const ContactVelocityPoint& p1 = vc.points[0];
+        const ContactVelocityPoint& p2 = vc.points[1];
+        const Real rn1A = Cross(p1.rA, vc.normal), rn1B = Cross(p1.rB, vc.normal);
+        const Real rn2A = Cross(p2.rA, vc.normal), rn2B = Cross(p2.rB, vc.normal);
+        const Real k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+        const Real k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+        const Real k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+        if (k11 * k11 < kMaxConditionNumber * (k11 * k22 - k12 * k12))
+        {
+            vc.K.ex = {k11, k12};
+            vc.K.ey = {k12, k22};
+            vc.normalMass = vc.K.GetInverse();
+        }
+        else
+        {
+            // Redundant rows: solve only the first point (as Box2D; the second keeps its
+            // stored impulse and is not reported this step).
+            vc.pointCount = 1;
+        }
     }
 }
 
 void ContactSolver::WarmStart(SolverData& data)
 {
-    for (std::size_t i = 0; i < m_count; ++i)
+    if (!m_colored)
     {
-        const ContactVelocityConstraint& vc = m_velocity[i];
-        Velocity& a = data.velocities[vc.indexA];
-        Velocity& b = data.velocities[vc.indexB];
-        Vec2 vA = a.v, vB = b.v;
-        Real wA = a.w, wB = b.w;
-        const Vec2 tangent = Cross(vc.normal, Real(1));
-        for (int j = 0; j < vc.pointCount; ++j)
+        for (std::size_t k = 0; k < m_count; ++k)
         {
-            const ContactVelocityPoint& vp = vc.points[j];
-            const Vec2 P = vp.normalImpulse * vc.normal + vp.tangentImpulse * tangent;
-            wA -= vc.invIA * Cross(vp.rA, P);
-            vA -= vc.invMassA * P;
-            wB += vc.invIB * Cross(vp.rB, P);
-            vB += vc.invMassB * P;
+            WarmStartConstraint(m_velocity[k], data.velocities);
         }
-        a.v = vA;
-        a.w = wA;
-        b.v = vB;
-        b.w = wB;
+        return;
+    }
+    m_coloredSolver.WarmStart(data);
+    for (const std::int32_t k : m_coloredSolver.Coloring().overflow)
+    {
+        WarmStartConstraint(m_velocity[k], data.velocities);
     }
 }
 

@@ -25,7 +25,7 @@ class ContactSolver
 {
   public:
     /// Builds the constraints of one island's contacts. Bodies' islandIndex must be set.
-    void Prepare(std::span<const std::int32_t> contactIndices, std::span<Contact> contacts,
+    void Prepare(std::span<const std::int32_t> contactIndices, std::span<const Contact> contacts,
                  std::span<const Body> bodies, std::span<const Shape> shapes, SolverData& data);
     void WarmStart(SolverData& data);
     void SolveVelocities(SolverData& data);
@@ -44,8 +44,9 @@ class ContactSolver
     }
 
   private:
-    /// With SolverSettings::graphColoring: colours the prepared constraints for the sweeps.
-    void PrepareColors(const SolverData& data);
+    /// Box2D's b2ContactSolver constructor and InitializeVelocityConstraints for the island's
+    /// contact k: the constraints m_velocity[k] and m_position[k].
+    void PrepareConstraint(const IslandContacts& island, std::size_t k, const SolverData& data);
 
     std::vector<ContactVelocityConstraint> m_velocity; ///< reused from step to step
     std::vector<ContactPositionConstraint> m_position;
@@ -54,7 +55,6 @@ class ContactSolver
     /// sweeps then run colour by colour in m_coloredSolver.
     bool m_colored = false;
     ColoredContactSolver m_coloredSolver;
-    std::vector<Rot> m_rotations; ///< by colour: each island body's rotation, for Prepare
 };
 
 } // namespace meff::detail

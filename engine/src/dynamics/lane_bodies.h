@@ -106,4 +106,47 @@ struct LaneMasses
     b.angular = b.angular + m.invIB * Cross(rB, P);
 }
 
+/// Velocity of B's point rB relative to A's point rA: vB + ωB×rB − vA − ωA×rA, per lane.
+[[gnu::always_inline]] inline Vec2W RelativeVelocity(const BodyStateW& a, const BodyStateW& b,
+                                                     Vec2W rA, Vec2W rB)
+{
+    return b.linear + Cross(b.angular, rB) - a.linear - Cross(a.angular, rA);
+}
+
+/// One body's transform per lane.
+struct TransformW
+{
+    RotW q;
+    Vec2W p;
+};
+
+/// The body transform from a position state (centre of mass, angle) and the local centre:
+/// p = c − q·localCenter.
+[[gnu::always_inline]] inline TransformW TransformFromCenter(const BodyStateW& position,
+                                                             Vec2W localCenter)
+{
+    const RotW q = SinCosW(position.angular);
+    return {q, position.linear - Mul(q, localCenter)};
+}
+
+[[gnu::always_inline]] inline Vec2W Mul(const TransformW& xf, Vec2W v)
+{
+    return Mul(xf.q, v) + xf.p;
+}
+
+inline TransformW Select(MaskW m, const TransformW& ifTrue, const TransformW& ifFalse)
+{
+    return {{Select(m, ifTrue.q.s, ifFalse.q.s), Select(m, ifTrue.q.c, ifFalse.q.c)},
+            Select(m, ifTrue.p, ifFalse.p)};
+}
+
+/// 1/det of the lanes' 2×2 matrix [k11 k12; k21 k22], 0 where it is singular (as
+/// Mat22::GetInverse and Mat22::Solve).
+[[gnu::always_inline]] inline RealW InverseDeterminant(RealW k11, RealW k12, RealW k21, RealW k22)
+{
+    const RealW det = k11 * k22 - k12 * k21;
+    const MaskW invertible = det != 0;
+    return Select(invertible, Splat(1) / Select(invertible, det, Splat(1)), Splat(0));
+}
+
 } // namespace meff::detail

@@ -1,0 +1,303 @@
+// Contact preparation by colour: each colour's contacts, four at a time, go from the world's
+// contacts straight into SIMD lanes. The lanes do what ContactSolver's scalar preparation (and
+// Box2D 2.4.1's b2ContactSolver::InitializeVelocityConstraints) does for one contact, with the
+// same floating-point operations in the same order: the world manifold at the step's start
+// (b2WorldManifold::Initialize), lever arms, the scalar effective masses of the seed
+//   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB,
+// the restitution bias −e·vn, and the block solver's K with its condition test. The contacts no
+// colour could take (the overflow) are prepared by ContactSolver, one by one.
+#include "dynamics/colored_contact_solver.h"
+
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
+#include "dynamics/lane_bodies.h"
+#include "dynamics/shape.h"
+
+#include <cmath>
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// What the lanes read of their contacts besides what the groups keep.
+struct LaneInputs
+{
+    RealW restitution, threshold;                  ///< e; restitution threshold (m/s)
+    BodyStateW startVelocityA{}, startVelocityB{}; ///< with restitutionFromStepStart
+    MaskW valid{};                                 ///< lanes holding a contact
+};
+
+/// Lane l's contact: the bodies, masses and manifold, into both groups.
+void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& in, int l,
+                std::int32_t source, const Contact& contact, const IslandContacts& island,
+                Real impulseScale, std::int32_t discardIndex)
+{
+    const Body& bodyA = island.bodies[contact.bodyA];
+    const Body& bodyB = island.bodies[contact.bodyB];
+    const Manifold& manifold = contact.manifold;
+
+    vg.source[l] = source;
+    vg.indexA[l] = pg.indexA[l] = bodyA.islandIndex;
+    vg.indexB[l] = pg.indexB[l] = bodyB.islandIndex;
+    const bool movesA = SolverMoves(bodyA.invMass, bodyA.invI);
+    const bool movesB = SolverMoves(bodyB.invMass, bodyB.invI);
+    vg.storeA[l] = pg.storeA[l] = movesA ? bodyA.islandIndex : discardIndex;
+    vg.storeB[l] = pg.storeB[l] = movesB ? bodyB.islandIndex : discardIndex;
+    vg.invMassA[l] = pg.invMassA[l] = bodyA.invMass;
+    vg.invMassB[l] = pg.invMassB[l] = bodyB.invMass;
+    vg.invIA[l] = pg.invIA[l] = bodyA.invI;
+    vg.invIB[l] = pg.invIB[l] = bodyB.invI;
+    vg.friction[l] = contact.friction;
+    in.restitution[l] = contact.restitution;
+    in.threshold[l] = contact.restitutionThreshold;
+    in.valid[l] = -1;
+    in.startVelocityA.linear.x[l] = bodyA.linearVelocity.x;
+    in.startVelocityA.linear.y[l] = bodyA.linearVelocity.y;
+    in.startVelocityA.angular[l] = bodyA.angularVelocity;
+    in.startVelocityB.linear.x[l] = bodyB.linearVelocity.x;
+    in.startVelocityB.linear.y[l] = bodyB.linearVelocity.y;
+    in.startVelocityB.angular[l] = bodyB.angularVelocity;
+
+    pg.localCenterA.x[l] = bodyA.sweep.localCenter.x;
+    pg.localCenterA.y[l] = bodyA.sweep.localCenter.y;
+    pg.localCenterB.x[l] = bodyB.sweep.localCenter.x;
+    pg.localCenterB.y[l] = bodyB.sweep.localCenter.y;
+    pg.localNormal.x[l] = manifold.localNormal.x;
+    pg.localNormal.y[l] = manifold.localNormal.y;
+    pg.localPoint.x[l] = manifold.localPoint.x;
+    pg.localPoint.y[l] = manifold.localPoint.y;
+    pg.radiusA[l] = island.shapes[contact.shapeA].Radius();
+    pg.radiusB[l] = island.shapes[contact.shapeB].Radius();
+    pg.circles[l] = manifold.type == Manifold::Type::Circles ? -1 : 0;
+    pg.faceB[l] = manifold.type == Manifold::Type::FaceB ? -1 : 0;
+    for (int j = 0; j < manifold.pointCount; ++j)
+    {
+        const ManifoldPoint& mp = manifold.points[j];
+        pg.localPoints[j].x[l] = mp.localPoint.x;
+        pg.localPoints[j].y[l] = mp.localPoint.y;
+        pg.hasPoint[j][l] = -1;
+        // Impulses are scaled by dt/dt0 so that a changed step size keeps the same force.
+        vg.normalImpulse[j][l] = impulseScale * mp.normalImpulse;
+        vg.tangentImpulse[j][l] = impulseScale * mp.tangentImpulse;
+    }
+}
+
+/// 1/k of a row, 0 for a row no body can move along.
+[[gnu::always_inline]] inline RealW RowMass(RealW k)
+{
+    const MaskW positive = k > 0;
+    return Select(positive, Splat(1) / Select(positive, k, Splat(1)), Splat(0));
+}
+
+/// The scalar effective mass's inverse along n (seed: 1/m_eff = Σ 1/m + (r×n)²/I).
+[[gnu::always_inline]] inline RealW InverseEffectiveMass(const ContactVelocityGroup& g, Vec2W rA,
+                                                         Vec2W rB, Vec2W n)
+{
+    const RealW rnA = Cross(rA, n), rnB = Cross(rB, n);
+    return g.invMassA + g.invMassB + g.invIA * rnA * rnA + g.invIB * rnB * rnB;
+}
+
+/// The manifold's points and normal in world space at the step's start, per lane, as
+/// WorldManifold::Initialize: FaceA and circles take A as the reference (face or centre), FaceB
+/// takes B and turns the normal round at the end.
+struct WorldPointsW
+{
+    Vec2W normal;    ///< from A to B
+    Vec2W points[2]; ///< midway between the two surfaces (m)
+};
+
+WorldPointsW WorldPoints(const ContactPositionGroup& g, const BodyStateW& positionA,
+                         const BodyStateW& positionB)
+{
+    const TransformW xfA = TransformFromCenter(positionA, g.localCenterA);
+    const TransformW xfB = TransformFromCenter(positionB, g.localCenterB);
+    const TransformW reference = Select(g.faceB, xfB, xfA);
+    const TransformW incident = Select(g.faceB, xfA, xfB);
+    const RealW radiusReference = Select(g.faceB, g.radiusB, g.radiusA);
+    const RealW radiusIncident = Select(g.faceB, g.radiusA, g.radiusB);
+    const Vec2W planePoint = Mul(reference, g.localPoint);
+    const Vec2W clipPoints[2] = {Mul(incident, g.localPoints[0]), Mul(incident, g.localPoints[1])};
+
+    Vec2W normal = Mul(reference.q, g.localNormal);
+    if (AnyLane(g.circles))
+    {
+        // Circles: the normal joins the centres (+x when they coincide), normalized as
+        // Vec2::Normalize does.
+        const Vec2W d = clipPoints[0] - planePoint;
+        const RealW distanceSquared = d.x * d.x + d.y * d.y;
+        RealW length{};
+        for (int l = 0; l < kLanes; ++l)
+        {
+            length[l] = std::sqrt(distanceSquared[l]);
+        }
+        const MaskW normalizable = length >= kEpsilon;
+        const RealW invLength = Splat(1) / Select(normalizable, length, Splat(1));
+        const Vec2W centreNormal = Select(normalizable, invLength * d, d);
+        const MaskW apart = distanceSquared > Splat(kEpsilon * kEpsilon);
+        const Vec2W circleNormal = Select(apart, centreNormal, Vec2W{Splat(1), Splat(0)});
+        normal = Select(g.circles, circleNormal, normal);
+    }
+
+    WorldPointsW out{};
+    for (int j = 0; j < 2; ++j)
+    {
+        const Vec2W clip = clipPoints[j];
+        // The reference surface: the face through the clip point's projection, or the
+        // reference circle's rim.
+        const Vec2W onFace = clip + (radiusReference - Dot(clip - planePoint, normal)) * normal;
+        const Vec2W onRim = planePoint + radiusReference * normal;
+        const Vec2W surfaceReference = Select(g.circles, onRim, onFace);
+        const Vec2W surfaceIncident = clip - radiusIncident * normal;
+        out.points[j] = Splat(Real(0.5)) * (surfaceReference + surfaceIncident);
+    }
+    out.normal = Select(g.faceB, Vec2W{-normal.x, -normal.y}, normal);
+    return out;
+}
+
+/// What the rest of the step reads of a coloured contact besides its impulses.
+struct PreparedLanes
+{
+    MaskW solvesTwo;         ///< lanes whose both points are solved
+    RealW normalVelocity[2]; ///< vn before impulses (m/s), as ContactVelocityPoint
+};
+
+/// The velocity rows of one group from its gathered contacts (ContactSolver::Prepare's
+/// position-dependent part, four contacts at once).
+PreparedLanes PrepareRows(ContactVelocityGroup& vg, const ContactPositionGroup& pg,
+                          const LaneInputs& in, const SolverData& data)
+{
+    const BodyStateW positionA = Gather(data.positions, vg.indexA);
+    const BodyStateW positionB = Gather(data.positions, vg.indexB);
+    const WorldPointsW world = WorldPoints(pg, positionA, positionB);
+    vg.normal = world.normal;
+    const Vec2W tangent{world.normal.y, -world.normal.x};
+    // The approach velocity for restitution: this step's (gravity already added, as Box2D) or
+    // the bodies' velocities at the start of the step (restitutionFromStepStart).
+    const bool fromStepStart = data.step.solver.restitutionFromStepStart;
+    const BodyStateW velocityA =
+        fromStepStart ? in.startVelocityA : Gather(data.velocities, vg.indexA);
+    const BodyStateW velocityB =
+        fromStepStart ? in.startVelocityB : Gather(data.velocities, vg.indexB);
+
+    PreparedLanes out{};
+    for (int j = 0; j < 2; ++j)
+    {
+        const MaskW has = pg.hasPoint[j];
+        const Vec2W rA = world.points[j] - positionA.linear;
+        const Vec2W rB = world.points[j] - positionB.linear;
+        vg.rA[j] = Select(has, rA, Vec2W{});
+        vg.rB[j] = Select(has, rB, Vec2W{});
+        vg.normalMass[j] =
+            Select(has, RowMass(InverseEffectiveMass(vg, rA, rB, world.normal)), Splat(0));
+        vg.tangentMass[j] =
+            Select(has, RowMass(InverseEffectiveMass(vg, rA, rB, tangent)), Splat(0));
+
+        // Restitution (seed: P = (1+e)(u2−u1)·m_red) as the target velocity −e·vn.
+        const RealW vn = Dot(world.normal, RelativeVelocity(velocityA, velocityB, rA, rB));
+        out.normalVelocity[j] = vn;
+        vg.velocityBias[j] = Select(has & (vn < -in.threshold), -in.restitution * vn, Splat(0));
+    }
+
+    // Two points, block solver on: K and K⁻¹, unless the rows are nearly parallel, in which
+    // case only the first point is solved (Box2D; the second keeps its stored impulse).
+    const RealW mA = vg.invMassA, mB = vg.invMassB, iA = vg.invIA, iB = vg.invIB;
+    const RealW rn1A = Cross(vg.rA[0], vg.normal), rn1B = Cross(vg.rB[0], vg.normal);
+    const RealW rn2A = Cross(vg.rA[1], vg.normal), rn2B = Cross(vg.rB[1], vg.normal);
+    vg.k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+    vg.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+    vg.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+    const MaskW twoPoints = pg.hasPoint[1];
+    const MaskW wellConditioned =
+        vg.k11 * vg.k11 < Splat(kMaxConditionNumber) * (vg.k11 * vg.k22 - vg.k12 * vg.k12);
+    const bool blockSolver = data.step.solver.blockSolver;
+    vg.block = blockSolver ? (twoPoints & wellConditioned) : MaskW{};
+    const MaskW dropSecond = blockSolver ? (twoPoints & ~wellConditioned) : MaskW{};
+    vg.normalMass[1] = Select(dropSecond, Splat(0), vg.normalMass[1]);
+    vg.tangentMass[1] = Select(dropSecond, Splat(0), vg.tangentMass[1]);
+    vg.normalImpulse[1] = Select(dropSecond, Splat(0), vg.normalImpulse[1]);
+    vg.tangentImpulse[1] = Select(dropSecond, Splat(0), vg.tangentImpulse[1]);
+    const RealW invDet = InverseDeterminant(vg.k11, vg.k12, vg.k12, vg.k22);
+    vg.inv11 = invDet * vg.k22;
+    vg.inv12 = -invDet * vg.k12;
+    vg.inv21 = -invDet * vg.k12;
+    vg.inv22 = invDet * vg.k11;
+    vg.anyBlock = AnyLane(vg.block);
+    vg.anyScalar = AnyLane(in.valid & ~vg.block);
+    out.solvesTwo = twoPoints & ~dropSecond;
+    return out;
+}
+
+/// What the rest of the step reads of a coloured contact (reports, hit events, StoreImpulses):
+/// its contact index, the points solved and their approach velocities.
+void WriteBack(const ContactVelocityGroup& vg, const PreparedLanes& prepared,
+               const IslandContacts& island, std::span<ContactVelocityConstraint> velocity)
+{
+    for (int l = 0; l < kLanes && vg.source[l] >= 0; ++l)
+    {
+        ContactVelocityConstraint& vc = velocity[vg.source[l]];
+        vc.contactIndex = island.contactIndices[vg.source[l]];
+        vc.pointCount = prepared.solvesTwo[l] != 0 ? 2 : 1;
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            vc.points[j].normalVelocity = prepared.normalVelocity[j][l];
+        }
+    }
+}
+
+} // namespace
+
+void ColoredContactSolver::Prepare(const IslandContacts& island,
+                                   std::span<ContactVelocityConstraint> velocity,
+                                   const SolverData& data)
+{
+    m_blockSolver = data.step.solver.blockSolver;
+    ColorContacts(island, static_cast<std::size_t>(data.discardIndex), m_coloring);
+    const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
+    m_velocityGroups.clear();
+    m_positionGroups.clear();
+    for (int color = 0; color < m_coloring.ColorCount(); ++color)
+    {
+        const std::int32_t begin = m_coloring.colorStarts[color];
+        const std::int32_t end = m_coloring.colorStarts[color + 1];
+        for (std::int32_t first = begin; first < end; first += kLanes)
+        {
+            // Empty lanes read body 0 and write the discard slot; all their masses are zero.
+            ContactVelocityGroup& vg = m_velocityGroups.emplace_back();
+            ContactPositionGroup& pg = m_positionGroups.emplace_back();
+            for (int l = 0; l < kLanes; ++l)
+            {
+                vg.source[l] = -1;
+                vg.storeA[l] = vg.storeB[l] = pg.storeA[l] = pg.storeB[l] = data.discardIndex;
+            }
+            LaneInputs in{};
+            for (int l = 0; l < kLanes && first + l < end; ++l)
+            {
+                const std::int32_t k = m_coloring.order[first + l];
+                GatherLane(vg, pg, in, l, k, island.contacts[island.contactIndices[k]], island,
+                           impulseScale, data.discardIndex);
+            }
+            WriteBack(vg, PrepareRows(vg, pg, in, data), island, velocity);
+        }
+    }
+}
+
+void ColoredContactSolver::WarmStart(SolverData& data)
+{
+    for (const ContactVelocityGroup& g : m_velocityGroups)
+    {
+        BodyStateW a = Gather(data.velocities, g.indexA);
+        BodyStateW b = Gather(data.velocities, g.indexB);
+        const Vec2W tangent{g.normal.y, -g.normal.x};
+        for (int j = 0; j < 2; ++j)
+        {
+            const Vec2W P = g.normalImpulse[j] * g.normal + g.tangentImpulse[j] * tangent;
+            ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA[j], g.rB[j], P);
+        }
+        Scatter(data.velocities, g.storeA, a);
+        Scatter(data.velocities, g.storeB, b);
+    }
+}
+
+} // namespace meff::detail
