@@ -153,6 +153,85 @@ TEST_CASE("contact reports name touching pairs with impulses that hold the weigh
     CHECK(total == Approx(2 * 10 * dt).epsilon(1e-4));
 }
 
+TEST_CASE("contact reports describe the step even when read after the world changed", "[world]")
+{
+    // The reports are built when first read (contact_reports.h). Moving or destroying what
+    // they describe before reading them must not change them: each world here is changed
+    // after its steps and before its first read, and must report exactly what an unchanged
+    // twin read at once reports.
+    struct Scene
+    {
+        World world;
+        BodyId box, ball;
+        ShapeId ballShape;
+    };
+    const auto build = []
+    {
+        Scene scene;
+        const BodyId ground = scene.world.CreateBody({});
+        scene.world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(10, 1, {0, -1}, 0));
+        scene.box = scene.world.CreateBody({.type = BodyType::Dynamic, .position = {-2, 1}});
+        scene.world.CreateShape(scene.box, ShapeDef{.density = 2}, MakeBox(Real(0.5), Real(0.5)));
+        scene.ball = scene.world.CreateBody({.type = BodyType::Dynamic, .position = {2, 1}});
+        scene.ballShape =
+            scene.world.CreateShape(scene.ball, ShapeDef{.density = 1}, Circle{{0, 0}, Real(0.5)});
+        for (int i = 0; i < 40; ++i)
+        {
+            scene.world.Step(Real(1) / 60);
+        }
+        return scene;
+    };
+    Scene reference = build();
+    const std::vector<ContactPointReport> expected(reference.world.GetContactReports().begin(),
+                                                   reference.world.GetContactReports().end());
+    REQUIRE(expected.size() == 3); // the box's two points and the ball's one
+
+    const auto same = [&](const World& world)
+    {
+        const auto reports = world.GetContactReports();
+        REQUIRE(reports.size() == expected.size());
+        for (std::size_t i = 0; i < reports.size(); ++i)
+        {
+            CHECK(reports[i].bodyA == expected[i].bodyA);
+            CHECK(reports[i].bodyB == expected[i].bodyB);
+            CHECK(reports[i].shapeB == expected[i].shapeB);
+            CHECK(reports[i].point == expected[i].point);
+            CHECK(reports[i].normal == expected[i].normal);
+            CHECK(reports[i].separation == expected[i].separation);
+            CHECK(reports[i].normalImpulse == expected[i].normalImpulse);
+            CHECK(reports[i].tangentImpulse == expected[i].tangentImpulse);
+        }
+    };
+    SECTION("a body moved")
+    {
+        Scene scene = build();
+        scene.world.SetTransform(scene.box, {5, 5}, Real(0.3));
+        same(scene.world);
+    }
+    SECTION("a shape destroyed, its slot reused")
+    {
+        Scene scene = build();
+        scene.world.DestroyShape(scene.ballShape);
+        scene.world.CreateShape(scene.ball, ShapeDef{}, Circle{{0, 0}, Real(2)});
+        same(scene.world);
+    }
+    SECTION("a body destroyed, its slot reused")
+    {
+        Scene scene = build();
+        scene.world.DestroyBody(scene.box);
+        const BodyId other =
+            scene.world.CreateBody({.type = BodyType::Dynamic, .position = {-7, 4}, .angle = 1});
+        scene.world.CreateShape(other, ShapeDef{}, MakeBox(1, 2));
+        same(scene.world);
+    }
+    SECTION("read twice")
+    {
+        Scene scene = build();
+        same(scene.world);
+        same(scene.world);
+    }
+}
+
 TEST_CASE("destroying a body ends its contacts and invalidates its ids", "[world]")
 {
     World world;

@@ -371,6 +371,9 @@ class World
 
     // Reports of the last step
     /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).
+    /// The step records only which contacts it solved; the points, normals and separations
+    /// are computed on the first call after a step (so a game that never asks pays almost
+    /// nothing), from the state the step left, even if bodies are moved or destroyed before.
     /// With continuous collision, the contacts of each time-of-impact sub-step are appended
     /// after the step's own, as Box2D calls PostSolve again for them, so a contact can appear
     /// more than once in one step.

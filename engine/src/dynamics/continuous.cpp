@@ -16,6 +16,7 @@
 #include "dynamics/step_stages.h"
 
 #include "collision/distance.h"
+#include "dynamics/contact_reports.h"
 #include "dynamics/events.h"
 #include "dynamics/world_state.h"
 
@@ -313,7 +314,7 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
 
     IntegratePositions(island, subStep);
     FinishBodies(world, island);
-    ReportContacts(world);
+    RecordContactReports(world);
     ReportHitEvents(world, subStep);
 }
 
@@ -353,6 +354,9 @@ void SolveContinuous(WorldState& world, const StepContext& step)
         {
             break; // no impact left in this step
         }
+        // The event moves bodies and refreshes manifolds: the reports of what was solved so
+        // far are built first, at the transforms the solver left.
+        BuildContactReports(world);
         if (!AdvanceToImpact(world, minContact, minAlpha))
         {
             continue;

@@ -37,6 +37,7 @@ SensorEvent MakeSensorEvent(const WorldState& world, const Contact& contact)
 void ClearEvents(WorldState& world)
 {
     world.contactReports.clear();
+    world.solvedContacts.clear();
     world.beginEvents.clear();
     world.sensorBeginEvents.clear();
     world.hitEvents.clear();

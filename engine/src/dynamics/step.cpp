@@ -12,9 +12,11 @@
 //
 // Events: the narrow phase (collide, and continuous collision's contact updates) records
 // contact and sensor begin/end events and calls the pre-solve callback; the report stages
-// record contact points and hit events (events.cpp).
+// record the solved contacts, whose reports are built when read (contact_reports.h), and hit
+// events (events.cpp).
 #include "dynamics/step_stages.h"
 
+#include "dynamics/contact_reports.h"
 #include "dynamics/events.h"
 #include "dynamics/world_state.h"
 #include "meff/world.h"
@@ -115,7 +117,7 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step)
     IntegratePositions(island, step);
     const bool positionSolved = CorrectPositions(world, data);
     FinishBodies(world, island);
-    ReportContacts(world);
+    RecordContactReports(world);
     ReportHitEvents(world, step);
     if (world.allowSleep)
     {
@@ -262,36 +264,6 @@ void UpdateSleep(WorldState& world, const Island& island, const StepContext& ste
         for (const std::int32_t bodyIndex : island.bodies)
         {
             PutBodyToSleep(world.bodies[bodyIndex]);
-        }
-    }
-}
-
-void ReportContacts(WorldState& world)
-{
-    for (const ContactVelocityConstraint& vc : world.contactSolver.VelocityConstraints())
-    {
-        const Contact& contact = world.contacts[vc.contactIndex];
-        const Shape& shapeA = world.shapes[contact.shapeA];
-        const Shape& shapeB = world.shapes[contact.shapeB];
-        const Body& bodyA = world.bodies[contact.bodyA];
-        const Body& bodyB = world.bodies[contact.bodyB];
-        WorldManifold wm;
-        wm.Initialize(contact.manifold, bodyA.xf, shapeA.Radius(), bodyB.xf, shapeB.Radius());
-        for (int j = 0; j < vc.pointCount; ++j)
-        {
-            ContactPointReport report;
-            report.bodyA = {contact.bodyA, bodyA.generation};
-            report.bodyB = {contact.bodyB, bodyB.generation};
-            report.shapeA = {contact.shapeA, shapeA.generation};
-            report.shapeB = {contact.shapeB, shapeB.generation};
-            report.point = wm.points[j];
-            report.normal = wm.normal;
-            report.separation = wm.separations[j];
-            report.normalImpulse = vc.points[j].normalImpulse;
-            report.tangentImpulse = vc.points[j].tangentImpulse;
-            report.featureKey = contact.manifold.points[j].id.Key();
-            report.pointIndex = j;
-            world.contactReports.push_back(report);
         }
     }
 }

@@ -20,7 +20,6 @@ void IntegratePositions(Island& island, const StepContext& step);
 /// Returns true when the position pass converged (Box2D's positionSolved).
 bool CorrectPositions(WorldState& world, SolverData& data);
 void FinishBodies(WorldState& world, Island& island);
-void ReportContacts(WorldState& world);
 void SynchronizeShapes(WorldState& world);
 /// Moves the broad-phase boxes of one body's shapes to cover its sweep from (c0, a0) to now.
 void SynchronizeBodyShapes(WorldState& world, Body& body);

@@ -292,6 +292,7 @@ void World::DestroyBody(BodyId id)
 {
     WorldState& world = *m_state;
     Body& body = Resolve(world.bodies, id, "body");
+    BuildContactReports(world); // the last step's reports still name this body
     // Bodies resting on this one must not sleep on in mid-air. Box2D 2.4.1 wakes only the
     // jointed bodies (through DestroyJoint); meff also wakes the touching ones.
     WakeTouchingBodies(world, id.index);
@@ -398,6 +399,7 @@ void World::SetTransform(BodyId id, Vec2 position, Real angle)
     Body& body = Resolve(world.bodies, id, "body");
     RequireFinite(position, "World::SetTransform: position");
     RequireFinite(angle, "World::SetTransform: angle");
+    BuildContactReports(world); // the last step's reports are where the step left the body
     body.xf.Set(position, angle);
     body.sweep.c = Mul(body.xf, body.sweep.localCenter);
     body.sweep.a = angle;
@@ -720,6 +722,7 @@ void World::DestroyShape(ShapeId id)
 {
     WorldState& world = *m_state;
     Shape& shape = Resolve(world.shapes, id, "shape");
+    BuildContactReports(world); // the last step's reports still name this shape
     Body& body = world.bodies[shape.body];
     WakeTouchingBodies(world, shape.body, id.index); // departs from Box2D 2.4.1, see world.h
     for (std::int32_t key = body.contactList; key != kNullIndex;)
@@ -1259,6 +1262,9 @@ void World::SetPreSolveCallback(PreSolveCallback callback)
 
 std::span<const ContactPointReport> World::GetContactReports() const
 {
+    // Built on the first read after a step (contact_reports.h): the world's visible state does
+    // not change, so this stays a const call, but like every World call it is not thread-safe.
+    BuildContactReports(*m_state);
     return m_state->contactReports;
 }
 std::span<const ContactEvent> World::GetContactBeginEvents() const

@@ -150,6 +150,10 @@ void DrawSlideAxis(DebugDraw& draw, const Joint& joint, const Transform& xfA, Ve
 void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
 {
     const WorldState& world = *m_state;
+    if (flags.contacts || flags.contactImpulses)
+    {
+        BuildContactReports(*m_state); // as GetContactReports: built when first needed
+    }
     const DrawPalette& colors = flags.colors;
 
     // Creation order, so that later bodies are drawn over earlier ones, as the scene lists them.

@@ -5,6 +5,7 @@
 #include "collision/broad_phase.h"
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
+#include "dynamics/contact_reports.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/island.h"
 #include "dynamics/joint_solver.h"
@@ -73,7 +74,8 @@ struct WorldState
     ContactSolver contactSolver;
     JointSolver jointSolver;
 
-    std::vector<ContactPointReport> contactReports;
+    std::vector<ContactPointReport> contactReports; ///< built when read (contact_reports.h)
+    std::vector<SolvedContact> solvedContacts;      ///< recorded, not yet in contactReports
     std::vector<ContactEvent> beginEvents;
     std::vector<ContactEvent> endEvents;
     std::vector<SensorEvent> sensorBeginEvents;

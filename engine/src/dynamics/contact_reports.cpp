@@ -1,0 +1,54 @@
+#include "dynamics/contact_reports.h"
+
+#include "dynamics/world_state.h"
+
+namespace meff::detail
+{
+
+void RecordContactReports(WorldState& world)
+{
+    for (const ContactVelocityConstraint& vc : world.contactSolver.VelocityConstraints())
+    {
+        SolvedContact& solved = world.solvedContacts.emplace_back();
+        solved.contactIndex = vc.contactIndex;
+        solved.pointCount = vc.pointCount;
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            solved.normalImpulse[j] = vc.points[j].normalImpulse;
+            solved.tangentImpulse[j] = vc.points[j].tangentImpulse;
+        }
+    }
+}
+
+void BuildContactReports(WorldState& world)
+{
+    for (const SolvedContact& solved : world.solvedContacts)
+    {
+        const Contact& contact = world.contacts[solved.contactIndex];
+        const Shape& shapeA = world.shapes[contact.shapeA];
+        const Shape& shapeB = world.shapes[contact.shapeB];
+        const Body& bodyA = world.bodies[contact.bodyA];
+        const Body& bodyB = world.bodies[contact.bodyB];
+        WorldManifold wm;
+        wm.Initialize(contact.manifold, bodyA.xf, shapeA.Radius(), bodyB.xf, shapeB.Radius());
+        for (int j = 0; j < solved.pointCount; ++j)
+        {
+            ContactPointReport report;
+            report.bodyA = {contact.bodyA, bodyA.generation};
+            report.bodyB = {contact.bodyB, bodyB.generation};
+            report.shapeA = {contact.shapeA, shapeA.generation};
+            report.shapeB = {contact.shapeB, shapeB.generation};
+            report.point = wm.points[j];
+            report.normal = wm.normal;
+            report.separation = wm.separations[j];
+            report.normalImpulse = solved.normalImpulse[j];
+            report.tangentImpulse = solved.tangentImpulse[j];
+            report.featureKey = contact.manifold.points[j].id.Key();
+            report.pointIndex = j;
+            world.contactReports.push_back(report);
+        }
+    }
+    world.solvedContacts.clear();
+}
+
+} // namespace meff::detail

@@ -1,0 +1,36 @@
+// The contact reports (World::GetContactReports, Box2D 2.4.1's PostSolve data), built when
+// they are read. A step only records which contacts it solved and their impulses; the world
+// points, normals and separations — a world manifold per contact — are computed on the first
+// read, or before anything that would change what they describe (a body moved or destroyed, a
+// shape destroyed, a time-of-impact event moving bodies within the step). A game that never
+// reads them pays a few bytes per contact per step, as Box2D without a contact listener pays
+// nothing.
+#pragma once
+
+#include "meff/math.h"
+
+#include <cstdint>
+
+namespace meff::detail
+{
+
+struct WorldState;
+
+/// One contact the solver has just solved, as the reports need it later.
+struct SolvedContact
+{
+    std::int32_t contactIndex = 0;
+    std::int32_t pointCount = 0; ///< the points solved (the block solver may drop the second)
+    Real normalImpulse[2]{};     ///< accumulated over the velocity iterations (N·s)
+    Real tangentImpulse[2]{};
+};
+
+/// The report stage of an island or a time-of-impact sub-step: records the contacts the
+/// contact solver has just solved.
+void RecordContactReports(WorldState& world);
+
+/// Turns the recorded contacts into ContactPointReports at the bodies' current transforms
+/// (those the step left them at, as long as every change to them calls this first).
+void BuildContactReports(WorldState& world);
+
+} // namespace meff::detail
