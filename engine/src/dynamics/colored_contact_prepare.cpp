@@ -27,6 +27,7 @@ struct LaneInputs
     RealW restitution, threshold;                  ///< e; restitution threshold (m/s)
     BodyStateW startVelocityA{}, startVelocityB{}; ///< with restitutionFromStepStart
     MaskW valid{};                                 ///< lanes holding a contact
+    bool hitEvents = false;                        ///< a lane's contact has hit events
 };
 
 /// Lane l's contact: the bodies, masses and manifold, into both groups.
@@ -53,6 +54,7 @@ void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& 
     in.restitution[l] = contact.restitution;
     in.threshold[l] = contact.restitutionThreshold;
     in.valid[l] = -1;
+    in.hitEvents = in.hitEvents || (contact.flags & Contact::HitEvents) != 0;
     in.startVelocityA.linear.x[l] = bodyA.linearVelocity.x;
     in.startVelocityA.linear.y[l] = bodyA.linearVelocity.y;
     in.startVelocityA.angular[l] = bodyA.angularVelocity;
@@ -229,29 +231,29 @@ PreparedLanes PrepareRows(ContactVelocityGroup& vg, const ContactPositionGroup& 
     return out;
 }
 
-/// What the rest of the step reads of a coloured contact (reports, hit events, StoreImpulses):
-/// its contact index, the points solved and their approach velocities.
+/// What the rest of the step reads of a coloured contact besides its impulses (which
+/// CollectResults adds): its contact index, the points solved and their approach velocities.
 void WriteBack(const ContactVelocityGroup& vg, const PreparedLanes& prepared,
-               const IslandContacts& island, std::span<ContactVelocityConstraint> velocity)
+               const IslandContacts& island, std::span<SolvedContact> solved)
 {
     for (int l = 0; l < kLanes && vg.source[l] >= 0; ++l)
     {
-        ContactVelocityConstraint& vc = velocity[vg.source[l]];
-        vc.contactIndex = island.contactIndices[vg.source[l]];
-        vc.pointCount = prepared.solvesTwo[l] != 0 ? 2 : 1;
-        for (int j = 0; j < vc.pointCount; ++j)
+        SolvedContact& s = solved[vg.source[l]];
+        s.contactIndex = island.contactIndices[vg.source[l]];
+        s.pointCount = prepared.solvesTwo[l] != 0 ? 2 : 1;
+        for (int j = 0; j < s.pointCount; ++j)
         {
-            vc.points[j].normalVelocity = prepared.normalVelocity[j][l];
+            s.normalVelocity[j] = prepared.normalVelocity[j][l];
         }
     }
 }
 
 } // namespace
 
-void ColoredContactSolver::Prepare(const IslandContacts& island,
-                                   std::span<ContactVelocityConstraint> velocity,
+bool ColoredContactSolver::Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
                                    const SolverData& data)
 {
+    bool hitEvents = false;
     m_blockSolver = data.step.solver.blockSolver;
     ColorContacts(island, static_cast<std::size_t>(data.discardIndex), m_coloring);
     const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
@@ -278,9 +280,11 @@ void ColoredContactSolver::Prepare(const IslandContacts& island,
                 GatherLane(vg, pg, in, l, k, island.contacts[island.contactIndices[k]], island,
                            impulseScale, data.discardIndex);
             }
-            WriteBack(vg, PrepareRows(vg, pg, in, data), island, velocity);
+            WriteBack(vg, PrepareRows(vg, pg, in, data), island, solved);
+            hitEvents = hitEvents || in.hitEvents;
         }
     }
+    return hitEvents;
 }
 
 void ColoredContactSolver::WarmStart(SolverData& data)

@@ -207,21 +207,17 @@ void ColoredContactSolver::SolveVelocities(std::span<ContactVelocityConstraint> 
     }
 }
 
-void ColoredContactSolver::StoreImpulses(std::span<ContactVelocityConstraint> velocity) const
+void ColoredContactSolver::CollectResults(std::span<SolvedContact> solved) const
 {
     for (const ContactVelocityGroup& group : m_velocityGroups)
     {
-        for (int l = 0; l < kLanes; ++l)
+        for (int l = 0; l < kLanes && group.source[l] >= 0; ++l)
         {
-            if (group.source[l] < 0)
+            SolvedContact& s = solved[group.source[l]];
+            for (int j = 0; j < s.pointCount; ++j)
             {
-                continue;
-            }
-            ContactVelocityConstraint& vc = velocity[group.source[l]];
-            for (int j = 0; j < vc.pointCount; ++j)
-            {
-                vc.points[j].normalImpulse = group.normalImpulse[j][l];
-                vc.points[j].tangentImpulse = group.tangentImpulse[j][l];
+                s.normalImpulse[j] = group.normalImpulse[j][l];
+                s.tangentImpulse[j] = group.tangentImpulse[j][l];
             }
         }
     }

@@ -56,16 +56,17 @@ class ColoredContactSolver
     /// Colours the island's contacts and prepares the coloured ones four at a time, in lanes
     /// (colored_contact_prepare.cpp): the same world manifold, lever arms, effective masses,
     /// restitution bias and block K as ContactSolver's scalar preparation, which the overflow
-    /// gets instead. Of a coloured contact's `velocity[k]` only the contact index, the solved
-    /// point count and each point's normal velocity are written; its rows live in the lanes.
-    void Prepare(const IslandContacts& island, std::span<ContactVelocityConstraint> velocity,
+    /// gets instead. A coloured contact's rows live in the lanes; its `solved[k]` gets the
+    /// contact index, the solved point count and each point's normal velocity. Returns whether
+    /// any coloured contact has hit events.
+    bool Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
                  const SolverData& data);
     /// Applies the lanes' warm-start impulses (the overflow's are ContactSolver's).
     void WarmStart(SolverData& data);
     /// One velocity sweep: the colours in order, then the overflow in island order.
     void SolveVelocities(std::span<ContactVelocityConstraint> velocity, SolverData& data);
-    /// Copies the lanes' accumulated impulses back into the constraints.
-    void StoreImpulses(std::span<ContactVelocityConstraint> velocity) const;
+    /// Copies the lanes' accumulated impulses into their contacts' `solved[k]`.
+    void CollectResults(std::span<SolvedContact> solved) const;
     /// One position sweep; true when no point overlaps more than 3·slop.
     bool SolvePositions(std::span<const ContactPositionConstraint> position, SolverData& data);
 

@@ -61,6 +61,17 @@ struct ContactPositionConstraint
     int pointCount = 0;
 };
 
+/// What the rest of the step reads of a contact the solver has just solved: the impulses it
+/// stores for the next step's warm start, the contact reports and the hit events.
+struct SolvedContact
+{
+    std::int32_t contactIndex = 0;
+    std::int32_t pointCount = 0; ///< the points solved (the block solver may drop the second)
+    Real normalImpulse[2]{};     ///< accumulated over the velocity iterations (N·s)
+    Real tangentImpulse[2]{};
+    Real normalVelocity[2]{}; ///< vn before impulses, as restitution measures it (m/s)
+};
+
 /// Box2D's largest accepted condition number of a two-point manifold's 2×2 block before the
 /// solver falls back to its first point: beyond it the two rows are nearly parallel and K⁻¹
 /// amplifies round-off.

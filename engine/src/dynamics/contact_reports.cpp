@@ -7,17 +7,8 @@ namespace meff::detail
 
 void RecordContactReports(WorldState& world)
 {
-    for (const ContactVelocityConstraint& vc : world.contactSolver.VelocityConstraints())
-    {
-        SolvedContact& solved = world.solvedContacts.emplace_back();
-        solved.contactIndex = vc.contactIndex;
-        solved.pointCount = vc.pointCount;
-        for (int j = 0; j < vc.pointCount; ++j)
-        {
-            solved.normalImpulse[j] = vc.points[j].normalImpulse;
-            solved.tangentImpulse[j] = vc.points[j].tangentImpulse;
-        }
-    }
+    const std::span<const SolvedContact> solved = world.contactSolver.SolvedContacts();
+    world.solvedContacts.insert(world.solvedContacts.end(), solved.begin(), solved.end());
 }
 
 void BuildContactReports(WorldState& world)

@@ -7,26 +7,13 @@
 // nothing.
 #pragma once
 
-#include "meff/math.h"
-
-#include <cstdint>
-
 namespace meff::detail
 {
 
 struct WorldState;
 
-/// One contact the solver has just solved, as the reports need it later.
-struct SolvedContact
-{
-    std::int32_t contactIndex = 0;
-    std::int32_t pointCount = 0; ///< the points solved (the block solver may drop the second)
-    Real normalImpulse[2]{};     ///< accumulated over the velocity iterations (N·s)
-    Real tangentImpulse[2]{};
-};
-
 /// The report stage of an island or a time-of-impact sub-step: records the contacts the
-/// contact solver has just solved.
+/// contact solver has just solved (after ContactSolver::CollectResults).
 void RecordContactReports(WorldState& world);
 
 /// Turns the recorded contacts into ContactPointReports at the bodies' current transforms

@@ -67,7 +67,9 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
     {
         m_velocity.resize(m_count);
         m_position.resize(m_count);
+        m_solved.resize(m_count);
     }
+    m_anyHitEvents = false;
     const IslandContacts island{contactIndices, contacts, bodies, shapes};
     // An island without contacts (a body in free fall) skips the colouring's fixed cost.
     m_colored = data.step.solver.graphColoring && m_count > 0;
@@ -79,7 +81,7 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
         }
         return;
     }
-    m_coloredSolver.Prepare(island, {m_velocity.data(), m_count}, data);
+    m_anyHitEvents = m_coloredSolver.Prepare(island, {m_solved.data(), m_count}, data);
     for (const std::int32_t k : m_coloredSolver.Coloring().overflow)
     {
         PrepareConstraint(island, static_cast<std::size_t>(k), data);
@@ -93,6 +95,7 @@ void ContactSolver::PrepareConstraint(const IslandContacts& island, std::size_t 
     const bool blockSolver = data.step.solver.blockSolver;
     const std::int32_t contactIndex = island.contactIndices[k];
     const Contact& contact = island.contacts[contactIndex];
+    m_anyHitEvents = m_anyHitEvents || (contact.flags & Contact::HitEvents) != 0;
     const Body& bodyA = island.bodies[contact.bodyA];
     const Body& bodyB = island.bodies[contact.bodyB];
     const Manifold& manifold = contact.manifold;
@@ -360,20 +363,46 @@ void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities
     b.w = wB;
 }
 
-void ContactSolver::StoreImpulses(std::span<Contact> contacts)
+void ContactSolver::CollectResults()
 {
-    if (m_colored)
+    const auto collect = [&](std::size_t k)
     {
-        m_coloredSolver.StoreImpulses({m_velocity.data(), m_count});
-    }
-    for (std::size_t i = 0; i < m_count; ++i)
-    {
-        const ContactVelocityConstraint& vc = m_velocity[i];
-        Manifold& manifold = contacts[vc.contactIndex].manifold;
+        const ContactVelocityConstraint& vc = m_velocity[k];
+        SolvedContact& solved = m_solved[k];
+        solved.contactIndex = vc.contactIndex;
+        solved.pointCount = vc.pointCount;
         for (int j = 0; j < vc.pointCount; ++j)
         {
-            manifold.points[j].normalImpulse = vc.points[j].normalImpulse;
-            manifold.points[j].tangentImpulse = vc.points[j].tangentImpulse;
+            solved.normalImpulse[j] = vc.points[j].normalImpulse;
+            solved.tangentImpulse[j] = vc.points[j].tangentImpulse;
+            solved.normalVelocity[j] = vc.points[j].normalVelocity;
+        }
+    };
+    if (!m_colored)
+    {
+        for (std::size_t k = 0; k < m_count; ++k)
+        {
+            collect(k);
+        }
+        return;
+    }
+    m_coloredSolver.CollectResults({m_solved.data(), m_count});
+    for (const std::int32_t k : m_coloredSolver.Coloring().overflow)
+    {
+        collect(static_cast<std::size_t>(k));
+    }
+}
+
+void ContactSolver::StoreImpulses(std::span<Contact> contacts)
+{
+    CollectResults();
+    for (const SolvedContact& solved : SolvedContacts())
+    {
+        Manifold& manifold = contacts[solved.contactIndex].manifold;
+        for (int j = 0; j < solved.pointCount; ++j)
+        {
+            manifold.points[j].normalImpulse = solved.normalImpulse[j];
+            manifold.points[j].tangentImpulse = solved.tangentImpulse[j];
         }
     }
 }

@@ -29,8 +29,12 @@ class ContactSolver
                  std::span<const Body> bodies, std::span<const Shape> shapes, SolverData& data);
     void WarmStart(SolverData& data);
     void SolveVelocities(SolverData& data);
-    /// Copies the accumulated impulses back into the manifolds for next step's warm start.
+    /// Collects the results (CollectResults) and copies the accumulated impulses back into
+    /// the manifolds for next step's warm start.
     void StoreImpulses(std::span<Contact> contacts);
+    /// Gathers what the rest of the step reads of the solved contacts into SolvedContacts():
+    /// their impulses, solved point counts and approach velocities, in island order.
+    void CollectResults();
     /// One non-linear Gauss-Seidel sweep; true when no point overlaps more than 3·slop.
     bool SolvePositions(SolverData& data);
     /// One sweep of a time-of-impact sub-step (Box2D's SolveTOIPositionConstraints): only the
@@ -38,10 +42,10 @@ class ContactSolver
     /// Tolerances::toiBaumgarte; true when no point overlaps more than 1.5·slop.
     bool SolveToiPositions(SolverData& data, std::int32_t toiIndexA, std::int32_t toiIndexB);
 
-    std::span<const ContactVelocityConstraint> VelocityConstraints() const
-    {
-        return {m_velocity.data(), m_count};
-    }
+    /// The island's contacts after CollectResults.
+    std::span<const SolvedContact> SolvedContacts() const { return {m_solved.data(), m_count}; }
+    /// Whether any of the island's contacts has a shape that asked for hit events.
+    bool AnyHitEvents() const { return m_anyHitEvents; }
 
   private:
     /// Box2D's b2ContactSolver constructor and InitializeVelocityConstraints for the island's
@@ -50,7 +54,9 @@ class ContactSolver
 
     std::vector<ContactVelocityConstraint> m_velocity; ///< reused from step to step
     std::vector<ContactPositionConstraint> m_position;
+    std::vector<SolvedContact> m_solved; ///< compact: the post-solve passes read only this
     std::size_t m_count = 0;
+    bool m_anyHitEvents = false;
     /// SolverSettings::graphColoring for the island prepared last: the velocity and position
     /// sweeps then run colour by colour in m_coloredSolver.
     bool m_colored = false;

@@ -314,6 +314,7 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
 
     IntegratePositions(island, subStep);
     FinishBodies(world, island);
+    world.contactSolver.CollectResults();
     RecordContactReports(world);
     ReportHitEvents(world, subStep);
 }

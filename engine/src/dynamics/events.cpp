@@ -109,9 +109,13 @@ void ReportHitEvents(WorldState& world, const StepContext& step)
     const Real threshold = step.tolerances.hitEventThreshold;
     // Marks the contacts that already have an event in this step (stepCount advances after it).
     const std::uint64_t stamp = world.stepCount + 1;
-    for (const ContactVelocityConstraint& vc : world.contactSolver.VelocityConstraints())
+    if (!world.contactSolver.AnyHitEvents())
     {
-        Contact& contact = world.contacts[vc.contactIndex];
+        return; // no contact of the island asked for them: no contact needs reading
+    }
+    for (const SolvedContact& solved : world.contactSolver.SolvedContacts())
+    {
+        Contact& contact = world.contacts[solved.contactIndex];
         if ((contact.flags & Contact::HitEvents) == 0)
         {
             continue;
@@ -122,11 +126,10 @@ void ReportHitEvents(WorldState& world, const StepContext& step)
         // fully relaxed counts there and not here.
         int fastest = -1;
         Real fastestSpeed = threshold;
-        for (int j = 0; j < vc.pointCount; ++j)
+        for (int j = 0; j < solved.pointCount; ++j)
         {
-            const ContactVelocityPoint& vp = vc.points[j];
-            const Real approachSpeed = -vp.normalVelocity;
-            if (approachSpeed > fastestSpeed && vp.normalImpulse > 0)
+            const Real approachSpeed = -solved.normalVelocity[j];
+            if (approachSpeed > fastestSpeed && solved.normalImpulse[j] > 0)
             {
                 fastest = j;
                 fastestSpeed = approachSpeed;
