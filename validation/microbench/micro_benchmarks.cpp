@@ -65,7 +65,6 @@ void BM_ContactRowUpdate(benchmark::State& state)
     const int n = static_cast<int>(state.range(0));
     const Polygon box = SkinnedBox(Real(0.5));
     std::vector<Body> bodies(n + 1);
-    std::vector<Shape> shapes(n + 1);
     std::vector<Contact> contacts(n);
     std::vector<std::int32_t> indices(n);
     std::vector<Position> positions(n + 1);
@@ -81,8 +80,6 @@ void BM_ContactRowUpdate(benchmark::State& state)
         b.xf = Transform({0, Real(i) * Real(0.995)}, Rot(0));
         b.sweep.c = b.xf.p;
         b.islandIndex = i;
-        shapes[i].type = ShapeType::Polygon;
-        shapes[i].polygon = box;
         positions[i] = {b.xf.p, 0};
         velocities[i] = {{0, Real(-0.1)}, 0};
     }
@@ -93,6 +90,8 @@ void BM_ContactRowUpdate(benchmark::State& state)
         c.shapeB = i + 1;
         c.bodyA = i;
         c.bodyB = i + 1;
+        c.radiusA = box.radius;
+        c.radiusB = box.radius;
         c.friction = Real(0.6);
         c.restitutionThreshold = 1;
         CollidePolygons(c.manifold, box, bodies[i].xf, box, bodies[i + 1].xf);
@@ -102,7 +101,7 @@ void BM_ContactRowUpdate(benchmark::State& state)
     data.positions = positions.data();
     data.velocities = velocities.data();
     ContactSolver solver;
-    solver.Prepare(indices, contacts, bodies, shapes, data);
+    solver.Prepare(indices, contacts, bodies, data);
     for (auto _ : state)
     {
         solver.SolveVelocities(data);

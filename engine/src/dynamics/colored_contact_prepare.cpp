@@ -11,7 +11,6 @@
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
 #include "dynamics/lane_bodies.h"
-#include "dynamics/shape.h"
 
 #include <cmath>
 
@@ -70,8 +69,8 @@ void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& 
     pg.localNormal.y[l] = manifold.localNormal.y;
     pg.localPoint.x[l] = manifold.localPoint.x;
     pg.localPoint.y[l] = manifold.localPoint.y;
-    pg.radiusA[l] = island.shapes[contact.shapeA].Radius();
-    pg.radiusB[l] = island.shapes[contact.shapeB].Radius();
+    pg.radiusA[l] = contact.radiusA;
+    pg.radiusB[l] = contact.radiusB;
     pg.circles[l] = manifold.type == Manifold::Type::Circles ? -1 : 0;
     pg.faceB[l] = manifold.type == Manifold::Type::FaceB ? -1 : 0;
     for (int j = 0; j < manifold.pointCount; ++j)

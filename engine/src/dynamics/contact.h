@@ -61,10 +61,13 @@ struct Contact
     Real friction = 0;             ///< sqrt(μA·μB)
     Real restitution = 0;          ///< max(eA, eB)
     Real restitutionThreshold = 0; ///< min of the two (m/s)
-    int toiCount = 0;              ///< time-of-impact events this step
-    Real toi = 1;                  ///< cached time of impact (fraction of the step)
-    std::uint64_t hitStep = 0;     ///< 1 + the step count when hitEvent was last written
-    std::int32_t hitEvent = -1;    ///< its index in WorldState::hitEvents during that step
+    /// The shapes' collision radii (Shape::Radius), copied at creation (a shape never changes
+    /// its own), so that the solver and the reports need not visit the shapes.
+    Real radiusA = 0, radiusB = 0;
+    int toiCount = 0;           ///< time-of-impact events this step
+    Real toi = 1;               ///< cached time of impact (fraction of the step)
+    std::uint64_t hitStep = 0;  ///< 1 + the step count when hitEvent was last written
+    std::int32_t hitEvent = -1; ///< its index in WorldState::hitEvents during that step
 
     bool IsTouching() const { return (flags & Touching) != 0; }
     bool IsSensor() const { return (flags & Sensor) != 0; }

@@ -16,16 +16,14 @@ namespace meff::detail
 
 struct Body;
 struct Contact;
-struct Shape;
 
 /// What contact preparation reads: one island's contacts (world contact indices, in island
-/// order) and the world's contacts, bodies (with their islandIndex set) and shapes.
+/// order) and the world's contacts and bodies (with their islandIndex set).
 struct IslandContacts
 {
     std::span<const std::int32_t> contactIndices;
     std::span<const Contact> contacts;
     std::span<const Body> bodies;
-    std::span<const Shape> shapes;
 };
 
 struct ContactVelocityPoint

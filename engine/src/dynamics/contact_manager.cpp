@@ -136,6 +136,8 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     contact.bodyB = world.shapes[sB].body;
     const ShapeDef& defA = world.shapes[sA].def;
     const ShapeDef& defB = world.shapes[sB].def;
+    contact.radiusA = world.shapes[sA].Radius();
+    contact.radiusB = world.shapes[sB].Radius();
     contact.friction = MixFriction(defA.friction, defB.friction);
     contact.restitution = MixRestitution(defA.restitution, defB.restitution);
     contact.restitutionThreshold =

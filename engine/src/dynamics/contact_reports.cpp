@@ -21,7 +21,7 @@ void BuildContactReports(WorldState& world)
         const Body& bodyA = world.bodies[contact.bodyA];
         const Body& bodyB = world.bodies[contact.bodyB];
         WorldManifold wm;
-        wm.Initialize(contact.manifold, bodyA.xf, shapeA.Radius(), bodyB.xf, shapeB.Radius());
+        wm.Initialize(contact.manifold, bodyA.xf, contact.radiusA, bodyB.xf, contact.radiusB);
         for (int j = 0; j < solved.pointCount; ++j)
         {
             ContactPointReport report;

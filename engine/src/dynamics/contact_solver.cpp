@@ -2,7 +2,6 @@
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
-#include "dynamics/shape.h"
 
 namespace meff::detail
 {
@@ -60,7 +59,7 @@ void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velociti
 
 void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
                             std::span<const Contact> contacts, std::span<const Body> bodies,
-                            std::span<const Shape> shapes, SolverData& data)
+                            SolverData& data)
 {
     m_count = contactIndices.size();
     if (m_velocity.size() < m_count)
@@ -70,7 +69,7 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
         m_solved.resize(m_count);
     }
     m_anyHitEvents = false;
-    const IslandContacts island{contactIndices, contacts, bodies, shapes};
+    const IslandContacts island{contactIndices, contacts, bodies};
     // An island without contacts (a body in free fall) skips the colouring's fixed cost.
     m_colored = data.step.solver.graphColoring && m_count > 0;
     if (!m_colored)
@@ -127,8 +126,8 @@ void ContactSolver::PrepareConstraint(const IslandContacts& island, std::size_t 
     pc.localNormal = manifold.localNormal;
     pc.localPoint = manifold.localPoint;
     pc.type = manifold.type;
-    pc.radiusA = island.shapes[contact.shapeA].Radius();
-    pc.radiusB = island.shapes[contact.shapeB].Radius();
+    pc.radiusA = contact.radiusA;
+    pc.radiusB = contact.radiusB;
     pc.pointCount = manifold.pointCount;
 
     for (int j = 0; j < manifold.pointCount; ++j)

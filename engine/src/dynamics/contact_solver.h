@@ -19,14 +19,13 @@ namespace meff::detail
 
 struct Body;
 struct Contact;
-struct Shape;
 
 class ContactSolver
 {
   public:
     /// Builds the constraints of one island's contacts. Bodies' islandIndex must be set.
     void Prepare(std::span<const std::int32_t> contactIndices, std::span<const Contact> contacts,
-                 std::span<const Body> bodies, std::span<const Shape> shapes, SolverData& data);
+                 std::span<const Body> bodies, SolverData& data);
     void WarmStart(SolverData& data);
     void SolveVelocities(SolverData& data);
     /// Collects the results (CollectResults) and copies the accumulated impulses back into

@@ -287,7 +287,7 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
     SolverData data{subStep, island.positions.data(), island.velocities.data()};
 
     // Push the pair (solver indices 0 and 1) out of overlap; the neighbours do not move.
-    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, world.shapes, data);
+    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, data);
     for (int i = 0; i < subStep.solver.positionIterations; ++i)
     {
         if (world.contactSolver.SolveToiPositions(data, 0, 1))
@@ -306,7 +306,7 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
 
     // Velocity constraints at the corrected poses. Impulses start from zero and are not stored
     // back: impact impulses can be large and would spoil the next step's warm start.
-    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, world.shapes, data);
+    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, data);
     for (int i = 0; i < subStep.solver.velocityIterations; ++i)
     {
         world.contactSolver.SolveVelocities(data);

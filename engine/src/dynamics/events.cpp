@@ -85,8 +85,6 @@ void RunPreSolve(WorldState& world, std::int32_t contactIndex)
         return;
     }
     Contact& contact = world.contacts[contactIndex];
-    const Shape& shapeA = world.shapes[contact.shapeA];
-    const Shape& shapeB = world.shapes[contact.shapeB];
     const Body& bodyA = world.bodies[contact.bodyA];
     const Body& bodyB = world.bodies[contact.bodyB];
 
@@ -96,8 +94,8 @@ void RunPreSolve(WorldState& world, std::int32_t contactIndex)
     info.bodyA = {contact.bodyA, bodyA.generation};
     info.bodyB = {contact.bodyB, bodyB.generation};
     info.manifold = &contact.manifold;
-    info.worldManifold.Initialize(contact.manifold, bodyA.xf, shapeA.Radius(), bodyB.xf,
-                                  shapeB.Radius());
+    info.worldManifold.Initialize(contact.manifold, bodyA.xf, contact.radiusA, bodyB.xf,
+                                  contact.radiusB);
     if (!world.preSolve(info))
     {
         contact.flags |= Contact::Disabled;
@@ -145,11 +143,9 @@ void ReportHitEvents(WorldState& world, const StepContext& step)
             continue; // an earlier sub-step of this step saw this contact hit harder
         }
 
-        const Shape& shapeA = world.shapes[contact.shapeA];
-        const Shape& shapeB = world.shapes[contact.shapeB];
         WorldManifold wm;
-        wm.Initialize(contact.manifold, world.bodies[contact.bodyA].xf, shapeA.Radius(),
-                      world.bodies[contact.bodyB].xf, shapeB.Radius());
+        wm.Initialize(contact.manifold, world.bodies[contact.bodyA].xf, contact.radiusA,
+                      world.bodies[contact.bodyB].xf, contact.radiusB);
         const ContactHitEvent event{ShapeIdOf(world, contact.shapeA),
                                     ShapeIdOf(world, contact.shapeB), wm.points[fastest], wm.normal,
                                     fastestSpeed};

@@ -99,7 +99,7 @@ void SolveIsland(WorldState& world, Island& island, const StepContext& step)
     data.velocities = island.velocities.data();
     data.discardIndex = static_cast<std::int32_t>(island.bodies.size());
 
-    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, world.shapes, data);
+    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, data);
     if (step.solver.warmStarting)
     {
         world.contactSolver.WarmStart(data);
