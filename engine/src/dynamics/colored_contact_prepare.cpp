@@ -12,7 +12,6 @@
 #include "dynamics/contact.h"
 #include "dynamics/lane_bodies.h"
 
-#include <cmath>
 
 namespace meff::detail
 {
@@ -127,17 +126,8 @@ WorldPointsW WorldPoints(const ContactPositionGroup& g, const BodyStateW& positi
         // Circles: the normal joins the centres (+x when they coincide), normalized as
         // Vec2::Normalize does.
         const Vec2W d = clipPoints[0] - planePoint;
-        const RealW distanceSquared = d.x * d.x + d.y * d.y;
-        RealW length{};
-        for (int l = 0; l < kLanes; ++l)
-        {
-            length[l] = std::sqrt(distanceSquared[l]);
-        }
-        const MaskW normalizable = length >= kEpsilon;
-        const RealW invLength = Splat(1) / Select(normalizable, length, Splat(1));
-        const Vec2W centreNormal = Select(normalizable, invLength * d, d);
-        const MaskW apart = distanceSquared > Splat(kEpsilon * kEpsilon);
-        const Vec2W circleNormal = Select(apart, centreNormal, Vec2W{Splat(1), Splat(0)});
+        const MaskW apart = d.x * d.x + d.y * d.y > Splat(kEpsilon * kEpsilon);
+        const Vec2W circleNormal = Select(apart, NormalizeW(d), Vec2W{Splat(1), Splat(0)});
         normal = Select(g.circles, circleNormal, normal);
     }
 

@@ -153,19 +153,7 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
 
         // Circles: the normal joins the two centres (left as is when they coincide, as
         // Vec2::Normalize); faces: the reference face's normal.
-        Vec2W centreNormal = d;
-        if (AnyLane(g.circles))
-        {
-            const RealW lengthSquared = d.x * d.x + d.y * d.y;
-            RealW distance{};
-            for (int l = 0; l < kLanes; ++l)
-            {
-                distance[l] = std::sqrt(lengthSquared[l]);
-            }
-            const MaskW normalizable = distance >= kEpsilon;
-            const RealW invDistance = Splat(1) / Select(normalizable, distance, Splat(1));
-            centreNormal = Select(normalizable, invDistance * d, d);
-        }
+        const Vec2W centreNormal = AnyLane(g.circles) ? NormalizeW(d) : d;
         Vec2W normal = Select(g.circles, centreNormal, Mul(reference.q, g.localNormal));
         const RealW separation = Dot(d, normal) - g.radiusA - g.radiusB;
         const Vec2W point =

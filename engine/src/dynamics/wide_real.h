@@ -88,6 +88,21 @@ inline Vec2W Select(MaskW m, Vec2W ifTrue, Vec2W ifFalse)
     return {m ? ifTrue.x : ifFalse.x, m ? ifTrue.y : ifFalse.y};
 }
 
+/// Each lane's vector scaled to unit length, as Vec2::Normalize: left as it is where its length
+/// is below kEpsilon. The square root is taken lane by lane (std::sqrt, correctly rounded).
+inline Vec2W NormalizeW(Vec2W v)
+{
+    const RealW lengthSquared = v.x * v.x + v.y * v.y;
+    RealW length{};
+    for (int l = 0; l < kLanes; ++l)
+    {
+        length[l] = std::sqrt(lengthSquared[l]);
+    }
+    const MaskW normalizable = length >= kEpsilon;
+    const RealW invLength = Splat(1) / Select(normalizable, length, Splat(1));
+    return Select(normalizable, invLength * v, v);
+}
+
 /// Four rotations: sine and cosine of each lane's angle.
 struct RotW
 {
