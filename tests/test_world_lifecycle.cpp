@@ -194,7 +194,10 @@ TEST_CASE("contact reports describe the step even when read after the world chan
         {
             CHECK(reports[i].bodyA == expected[i].bodyA);
             CHECK(reports[i].bodyB == expected[i].bodyB);
+            CHECK(reports[i].shapeA == expected[i].shapeA);
             CHECK(reports[i].shapeB == expected[i].shapeB);
+            CHECK(reports[i].featureKey == expected[i].featureKey);
+            CHECK(reports[i].pointIndex == expected[i].pointIndex);
             CHECK(reports[i].point == expected[i].point);
             CHECK(reports[i].normal == expected[i].normal);
             CHECK(reports[i].separation == expected[i].separation);

@@ -374,9 +374,10 @@ class World
     /// The step records only which contacts it solved; the points, normals and separations
     /// are computed on the first call after a step (so a game that never asks pays almost
     /// nothing), from the state the step left, even if bodies are moved or destroyed before.
-    /// With continuous collision, the contacts of each time-of-impact sub-step are appended
-    /// after the step's own, as Box2D calls PostSolve again for them, so a contact can appear
-    /// more than once in one step.
+    /// Because that first call writes inside the world, two threads must not call it (or
+    /// Draw) on one world at the same time, though both are const. With continuous collision, the
+    /// contacts of each time-of-impact sub-step are appended after the step's own, as Box2D calls
+    /// PostSolve again for them, so a contact can appear more than once in one step.
     std::span<const ContactPointReport> GetContactReports() const;
     std::span<const ContactEvent> GetContactBeginEvents() const;
     /// Contacts that stopped touching in the last step. Destroying a touching shape or body
@@ -460,7 +461,8 @@ class World
 
     // Drawing
     /// Describes the world to `draw` (shapes, joints and, from the last step's reports,
-    /// contacts and impulses), as `flags` asks. Draws nothing itself.
+    /// contacts and impulses), as `flags` asks. Draws nothing itself. Drawing contacts builds
+    /// the reports if they are not built yet (see GetContactReports): not thread-safe.
     void Draw(DebugDraw& draw, const DrawFlags& flags = {}) const;
 
   private:

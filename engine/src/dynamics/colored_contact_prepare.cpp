@@ -5,13 +5,14 @@
 // (b2WorldManifold::Initialize), lever arms, the scalar effective masses of the seed
 //   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB,
 // the restitution bias −e·vn, and the block solver's K with its condition test. The contacts no
-// colour could take (the overflow) are prepared by ContactSolver, one by one.
+// colour could take (the overflow) are prepared by ContactSolver, one by one. The warm start
+// applies the same impulses, group by group in colour order; where a body has several contacts
+// their sum is rounded in another order than in Box2D's.
 #include "dynamics/colored_contact_solver.h"
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
 #include "dynamics/lane_bodies.h"
-
 
 namespace meff::detail
 {

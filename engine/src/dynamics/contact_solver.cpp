@@ -70,8 +70,9 @@ void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
     }
     m_anyHitEvents = false;
     const IslandContacts island{contactIndices, contacts, bodies};
-    // An island without contacts (a body in free fall) skips the colouring's fixed cost.
-    m_colored = data.step.solver.graphColoring && m_count > 0;
+    // An island without contacts (a body in free fall) skips the colouring's fixed cost; lanes
+    // need the island's discard slot (SolverData::discardIndex).
+    m_colored = data.step.solver.graphColoring && m_count > 0 && data.discardIndex >= 0;
     if (!m_colored)
     {
         for (std::size_t k = 0; k < m_count; ++k)
