@@ -269,7 +269,8 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
     // A (FaceA), a ball on the ground (polygon and circle), two balls colliding in the air
     // (Circles), all bouncy (restitution bias), with a varying dt (warm-start scaling). The
     // lanes prepare their rows from the contacts (colored_contact_prepare.cpp) and the island
-    // order by WorldManifold: both must give the same motion, for each solver option.
+    // order by WorldManifold: both must give the same motion, and the same hit events (which
+    // read the approach velocities the preparation records), for each solver option.
     struct Options
     {
         bool blockSolver, warmStarting, fromStepStart;
@@ -286,7 +287,8 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
             def.solver.warmStarting = option.warmStarting;
             def.solver.restitutionFromStepStart = option.fromStepStart;
             World world(def);
-            const ShapeDef bouncy = Material(1, Real(0.4), Real(0.5));
+            ShapeDef bouncy = Material(1, Real(0.4), Real(0.5));
+            bouncy.enableHitEvents = true; // the lanes' approach velocities feed hit events
             std::vector<BodyId> bodies;
             // Created before the ground: the box is shape A and the ground's face, which the
             // corner hits, is the reference (FaceB).
@@ -313,6 +315,7 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
         auto [colored, coloredBodies] = build(true);
         auto [ordered, orderedBodies] = build(false);
         double largest = 0;
+        int hits = 0;
         for (int step = 0; step < 120; ++step)
         {
             const Real dt = step % 3 == 2 ? Real(1.0 / 90.0) : kDt;
@@ -321,6 +324,15 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
             INFO("block " << option.blockSolver << " warm " << option.warmStarting
                           << " from step start " << option.fromStepStart << ", step " << step);
             REQUIRE(colored.GetContactReports().size() == ordered.GetContactReports().size());
+            const auto coloredHits = colored.GetContactHitEvents();
+            const auto orderedHits = ordered.GetContactHitEvents();
+            REQUIRE(coloredHits.size() == orderedHits.size());
+            for (std::size_t i = 0; i < coloredHits.size(); ++i)
+            {
+                hits += 1;
+                largest = std::max<double>(
+                    largest, std::abs(coloredHits[i].approachSpeed - orderedHits[i].approachSpeed));
+            }
             for (std::size_t i = 0; i < coloredBodies.size(); ++i)
             {
                 largest =
@@ -330,7 +342,8 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
                                                              ordered.GetAngle(orderedBodies[i])));
             }
         }
-        INFO("largest difference " << largest);
+        INFO("largest difference " << largest << ", hit events " << hits);
+        CHECK(hits >= 4); // at least the three landings and the balls' meeting (16 measured)
         // The lanes do the scalar preparation's operations in the same order; the two can
         // differ only by the sine and cosine the lanes compute (SinCosW, within 2 ulp of
         // std::sin/std::cos): 2.4e-7 relative on lever arms under a metre, grown through a few
