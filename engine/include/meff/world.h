@@ -398,10 +398,11 @@ class World
     // Queries (world_query.cpp). They go through the broad phase, so a query only visits the
     // part of the tree near what it asks about, not every shape. Do not create, destroy or move
     // anything, or step, from inside a callback: the broad phase being walked would change
-    // under the query. Queries share the broad phase's scratch stack, so one world must not
-    // be queried from several threads at once. Bad arguments (non-finite numbers, an inverted
-    // box, a degenerate shape) throw InvalidArgument naming the argument. Sensor shapes are
-    // found like any other (as Box2D 2.4.1): filter them with QueryFilter or the callback.
+    // under the query. Each walk of the tree keeps its own stack, so queries write nothing in the
+    // world: several threads may query one world at once while none changes it. Bad arguments
+    // (non-finite numbers, an inverted box, a degenerate shape) throw InvalidArgument naming the
+    // argument. Sensor shapes are found like any other (as Box2D 2.4.1): filter them with
+    // QueryFilter or the callback.
 
     /// The closest shape the ray origin → origin + translation hits, as Box2D 2.4.1's
     /// b2World::RayCast with a callback returning every fraction (the same shape, point,

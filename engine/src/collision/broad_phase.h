@@ -82,9 +82,41 @@ class DynamicTree
     std::int32_t m_freeList = kNullProxy;
     std::int32_t m_nodeCount = 0;
     Real m_margin;
-    /// Reused by Query, RayCast and BoxCast: no allocation per step or per query. It makes
-    /// queries of one tree unsafe to run from several threads at once.
-    mutable std::vector<std::int32_t> m_stack;
+};
+
+/// The explicit stack of one walk of a tree (Query, RayCast, BoxCast), local to the walk so that
+/// a callback may start another and the compiler can keep it out of memory it must reload: 256
+/// node ids in place — an AVL-balanced tree needs its height plus one, under 60 for any tree
+/// that fits in memory — and the heap beyond, last in first out across both.
+class TreeWalkStack
+{
+  public:
+    bool Empty() const { return m_count == 0 && m_spill.empty(); }
+    void Push(std::int32_t id)
+    {
+        if (m_count < kInPlace) [[likely]]
+        {
+            m_inPlace[m_count++] = id;
+            return;
+        }
+        m_spill.push_back(id);
+    }
+    std::int32_t Pop()
+    {
+        if (!m_spill.empty()) [[unlikely]]
+        {
+            const std::int32_t id = m_spill.back();
+            m_spill.pop_back();
+            return id;
+        }
+        return m_inPlace[--m_count];
+    }
+
+  private:
+    static constexpr int kInPlace = 256;
+    std::int32_t m_inPlace[kInPlace];
+    int m_count = 0;
+    std::vector<std::int32_t> m_spill;
 };
 
 class BroadPhase

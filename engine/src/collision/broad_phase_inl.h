@@ -13,29 +13,20 @@ template <typename Callback>
 void DynamicTree::Query(const AABB& aabb, Callback&& callback) const
 {
     // Depth-first with an explicit stack, visiting child2 before child1 (child1 is pushed
-    // first), as Box2D does. The stack is shared by nested queries (a callback may query this
-    // tree again): each query only works above the depth it started at, and the guard trims
-    // the stack back to that depth however the query ends.
-    struct StackGuard
+    // first), as Box2D does. The box is copied: the callback may change what `aabb` names.
+    const AABB box = aabb;
+    TreeWalkStack stack;
+    stack.Push(m_root);
+    while (!stack.Empty())
     {
-        std::vector<std::int32_t>& stack;
-        std::size_t base;
-        ~StackGuard() { stack.resize(base); }
-    };
-    const StackGuard guard{m_stack, m_stack.size()};
-
-    m_stack.push_back(m_root);
-    while (m_stack.size() > guard.base)
-    {
-        const std::int32_t nodeId = m_stack.back();
-        m_stack.pop_back();
+        const std::int32_t nodeId = stack.Pop();
         if (nodeId == kNullProxy)
         {
             continue;
         }
 
         const Node& node = m_nodes[nodeId];
-        if (!TestOverlap(node.aabb, aabb))
+        if (!TestOverlap(node.aabb, box))
         {
             continue;
         }
@@ -48,8 +39,8 @@ void DynamicTree::Query(const AABB& aabb, Callback&& callback) const
         }
         else
         {
-            m_stack.push_back(node.child1);
-            m_stack.push_back(node.child2);
+            stack.Push(node.child1);
+            stack.Push(node.child2);
         }
     }
 }
@@ -84,19 +75,11 @@ void DynamicTree::BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&
     AABB segmentAABB = segmentBox(maxFraction);
 
     // The same explicit stack and visiting order as Query (child2 first); see there.
-    struct StackGuard
+    TreeWalkStack stack;
+    stack.Push(m_root);
+    while (!stack.Empty())
     {
-        std::vector<std::int32_t>& stack;
-        std::size_t base;
-        ~StackGuard() { stack.resize(base); }
-    };
-    const StackGuard guard{m_stack, m_stack.size()};
-
-    m_stack.push_back(m_root);
-    while (m_stack.size() > guard.base)
-    {
-        const std::int32_t nodeId = m_stack.back();
-        m_stack.pop_back();
+        const std::int32_t nodeId = stack.Pop();
         if (nodeId == kNullProxy)
         {
             continue;
@@ -136,8 +119,8 @@ void DynamicTree::BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&
         }
         else
         {
-            m_stack.push_back(node.child1);
-            m_stack.push_back(node.child2);
+            stack.Push(node.child1);
+            stack.Push(node.child2);
         }
     }
 }
