@@ -32,7 +32,7 @@ struct LaneInputs
 /// Lane l's contact: the bodies, masses and manifold, into both groups.
 void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& in, int l,
                 std::int32_t source, const Contact& contact, const IslandContacts& island,
-                Real impulseScale, std::int32_t discardIndex)
+                Real impulseScale, bool fromStepStart, std::int32_t discardIndex)
 {
     const Body& bodyA = island.bodies[contact.bodyA];
     const Body& bodyB = island.bodies[contact.bodyB];
@@ -54,12 +54,16 @@ void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& 
     in.threshold[l] = contact.restitutionThreshold;
     in.valid[l] = -1;
     in.hitEvents = in.hitEvents || (contact.flags & Contact::HitEvents) != 0;
-    in.startVelocityA.linear.x[l] = bodyA.linearVelocity.x;
-    in.startVelocityA.linear.y[l] = bodyA.linearVelocity.y;
-    in.startVelocityA.angular[l] = bodyA.angularVelocity;
-    in.startVelocityB.linear.x[l] = bodyB.linearVelocity.x;
-    in.startVelocityB.linear.y[l] = bodyB.linearVelocity.y;
-    in.startVelocityB.angular[l] = bodyB.angularVelocity;
+    if (fromStepStart)
+    {
+        // Only then: the velocities lie beyond the body's first cache line (body.h).
+        in.startVelocityA.linear.x[l] = bodyA.linearVelocity.x;
+        in.startVelocityA.linear.y[l] = bodyA.linearVelocity.y;
+        in.startVelocityA.angular[l] = bodyA.angularVelocity;
+        in.startVelocityB.linear.x[l] = bodyB.linearVelocity.x;
+        in.startVelocityB.linear.y[l] = bodyB.linearVelocity.y;
+        in.startVelocityB.angular[l] = bodyB.angularVelocity;
+    }
 
     pg.localCenterA.x[l] = bodyA.sweep.localCenter.x;
     pg.localCenterA.y[l] = bodyA.sweep.localCenter.y;
@@ -268,7 +272,8 @@ bool ColoredContactSolver::Prepare(const IslandContacts& island, std::span<Solve
             {
                 const std::int32_t k = m_coloring.order[first + l];
                 GatherLane(vg, pg, in, l, k, island.contacts[island.contactIndices[k]], island,
-                           impulseScale, data.discardIndex);
+                           impulseScale, data.step.solver.restitutionFromStepStart,
+                           data.discardIndex);
             }
             WriteBack(vg, PrepareRows(vg, pg, in, data), island, solved);
             hitEvents = hitEvents || in.hitEvents;
