@@ -55,6 +55,19 @@ void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velociti
     b.w = wB;
 }
 
+/// A constraint's two bodies: their solver indices, inverse masses (1/kg) and inverse
+/// inertias (1/(kg·m²)). The velocity and position constraints name these members alike.
+template <typename Constraint>
+void SetBodies(Constraint& c, const Body& bodyA, const Body& bodyB)
+{
+    c.indexA = bodyA.islandIndex;
+    c.indexB = bodyB.islandIndex;
+    c.invMassA = bodyA.invMass;
+    c.invMassB = bodyB.invMass;
+    c.invIA = bodyA.invI;
+    c.invIB = bodyB.invI;
+}
+
 } // namespace
 
 void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
@@ -104,24 +117,14 @@ void ContactSolver::PrepareConstraint(const IslandContacts& island, std::size_t 
     vc.friction = contact.friction;
     vc.restitution = contact.restitution;
     vc.threshold = contact.restitutionThreshold;
-    vc.indexA = bodyA.islandIndex;
-    vc.indexB = bodyB.islandIndex;
-    vc.invMassA = bodyA.invMass;
-    vc.invMassB = bodyB.invMass;
-    vc.invIA = bodyA.invI;
-    vc.invIB = bodyB.invI;
+    SetBodies(vc, bodyA, bodyB);
     vc.contactIndex = contactIndex;
     vc.pointCount = manifold.pointCount;
     vc.K = Mat22{{0, 0}, {0, 0}};
     vc.normalMass = Mat22{{0, 0}, {0, 0}};
 
     ContactPositionConstraint& pc = m_position[k];
-    pc.indexA = bodyA.islandIndex;
-    pc.indexB = bodyB.islandIndex;
-    pc.invMassA = bodyA.invMass;
-    pc.invMassB = bodyB.invMass;
-    pc.invIA = bodyA.invI;
-    pc.invIB = bodyB.invI;
+    SetBodies(pc, bodyA, bodyB);
     pc.localCenterA = bodyA.sweep.localCenter;
     pc.localCenterB = bodyB.sweep.localCenter;
     pc.localNormal = manifold.localNormal;
