@@ -261,6 +261,107 @@ TEST_CASE("Graph colouring: resting bodies hold m·g·dt and match the island-or
     }
 }
 
+TEST_CASE("Graph colouring without sleep: the awake world is one island, holding what the "
+          "island search finds",
+          "[coloring]")
+{
+    // Without sleep, solving by colour gathers the whole awake world as one island (island.h:
+    // BuildWorldIsland) instead of searching islands from each awake body. No dynamic body
+    // here has more than one constraint, so neither the split into islands nor the colour
+    // order can change a result: the one-island world must match, bit for bit, a world that
+    // allows sleep (so searches islands) but whose bodies may not sleep. One position sweep
+    // per step, since the pass stops early per island but per world for the one island.
+    // The scene holds what the gathering must include (contacts with static ground and with a
+    // kinematic body, a lane joint to a static anchor, a joint between two dynamic bodies) and
+    // leave out (a contact the pre-solve callback disabled, a sensor's overlap, a joint
+    // between two static bodies), and a body created asleep, which the one-island gathering
+    // must leave to the search until a ball wakes it.
+    const auto build = [](bool allowSleep)
+    {
+        WorldDef def;
+        def.solver.graphColoring = true;
+        def.solver.positionIterations = 1;
+        def.allowSleep = allowSleep;
+        World world(def);
+        const BodyId ground = world.CreateBody({});
+        world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(50, 1, {0, -1}, 0));
+        std::vector<BodyId> bodies;
+        bodies.push_back(AddBox(world, BodyType::Dynamic, {-6, Real(0.6)}, Real(0.1), Real(0.5),
+                                Real(0.5), Material(1, Real(0.6))));
+        const BodyId pivot = AddAnchor(world, {0, 6});
+        bodies.push_back(AddBall(world, {1, 6}, {0, 0}, Real(0.25), Material(1, 0)));
+        world.CreateJoint(world.MakeRevoluteJointDef(pivot, bodies.back(), {0, 6}));
+        // A free pair of balls joined to each other, away from everything.
+        bodies.push_back(AddBall(world, {-20, 10}, {1, 0}, Real(0.25), Material(1, 0)));
+        bodies.push_back(AddBall(world, {-19, 10}, {0, 2}, Real(0.25), Material(1, 0)));
+        world.CreateJoint(world.MakeRevoluteJointDef(bodies[2], bodies[3], {Real(-19.5), 10}));
+        world.CreateJoint(
+            world.MakeRevoluteJointDef(pivot, AddAnchor(world, {0, 8}), {0, 7})); // static pair
+        const BodyId platform =
+            AddBox(world, BodyType::Kinematic, {6, 3}, 0, 1, Real(0.2), Material(1, Real(0.6)));
+        world.SetLinearVelocity(platform, {1, 0});
+        bodies.push_back(platform);
+        bodies.push_back(AddBox(world, BodyType::Dynamic, {6, Real(3.75)}, 0, Real(0.5), Real(0.5),
+                                Material(1, Real(0.6))));
+        ShapeDef sensor;
+        sensor.isSensor = true;
+        world.CreateShape(AddAnchor(world, {12, 2}), sensor, MakeBox(1, 1));
+        bodies.push_back(AddBall(world, {12, 4}, {0, 0}, Real(0.25), Material(1, 0)));
+        // A ball the pre-solve callback lets fall through the ground: its touching contact is
+        // disabled, and solving it would hold the ball up.
+        const BodyId ghost = AddBall(world, {18, 1}, {0, 0}, Real(0.25), Material(1, 0));
+        bodies.push_back(ghost);
+        world.SetPreSolveCallback([ghost](const PreSolveContact& c)
+                                  { return c.bodyA != ghost && c.bodyB != ghost; });
+        BodyDef asleep;
+        asleep.type = BodyType::Dynamic;
+        asleep.position = {-12, 20};
+        asleep.awake = false;
+        bodies.push_back(world.CreateBody(asleep));
+        world.CreateShape(bodies.back(), Material(1, Real(0.6)), MakeBox(Real(0.5), Real(0.5)));
+        bodies.push_back(AddBall(world, {-12, Real(21.5)}, {0, 0}, Real(0.25), Material(1, 0)));
+        for (const BodyId body : bodies)
+        {
+            if (world.GetType(body) == BodyType::Dynamic)
+            {
+                world.SetSleepingAllowed(body, false);
+            }
+        }
+        // SetSleepingAllowed(false) wakes a body: the sleeper sleeps again until hit.
+        world.SetAwake(bodies[bodies.size() - 2], false);
+        return std::pair{std::move(world), bodies};
+    };
+    auto [oneIsland, oneBodies] = build(false);
+    auto [searched, searchedBodies] = build(true);
+    const BodyId sleeper = oneBodies[oneBodies.size() - 2];
+    bool sleeperWoke = false;
+    for (int step = 0; step < 90; ++step)
+    {
+        oneIsland.Step(kDt);
+        searched.Step(kDt);
+        sleeperWoke = sleeperWoke || oneIsland.IsAwake(sleeper);
+        INFO("step " << step);
+        for (std::size_t i = 0; i < oneBodies.size(); ++i)
+        {
+            INFO("body " << i);
+            // Exactly equal: the same rows, solved in lanes that compute each constraint
+            // alone, with no body in two constraints.
+            REQUIRE(oneIsland.GetPosition(oneBodies[i]) == searched.GetPosition(searchedBodies[i]));
+            REQUIRE(oneIsland.GetAngle(oneBodies[i]) == searched.GetAngle(searchedBodies[i]));
+            REQUIRE(oneIsland.GetLinearVelocity(oneBodies[i]) ==
+                    searched.GetLinearVelocity(searchedBodies[i]));
+            REQUIRE(oneIsland.GetAngularVelocity(oneBodies[i]) ==
+                    searched.GetAngularVelocity(searchedBodies[i]));
+        }
+    }
+    // What the comparison covers happened: the sleeper was hit and woke, the box rode the
+    // platform, the ball fell through the sensor to the ground, the ghost through the ground.
+    CHECK(sleeperWoke);
+    CHECK(oneIsland.GetPosition(oneBodies[5]).x > Real(6.5));
+    CHECK(oneIsland.GetPosition(oneBodies[6]).y < Real(0.5));
+    CHECK(oneIsland.GetPosition(oneBodies[7]).y < Real(-1));
+}
+
 TEST_CASE("Graph colouring: lanes prepare every manifold type as the island order does",
           "[coloring]")
 {

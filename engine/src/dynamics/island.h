@@ -1,5 +1,10 @@
 // Islands: groups of bodies linked by touching contacts and joints, found by a depth-first
 // search in Box2D 2.4.1's order. Each island is solved on its own by the step stages.
+//
+// Islands exist for sleep (an island sleeps as a whole) and for Box2D's solver order. When
+// neither is wanted (no sleep, solving by colour) and every moving body is awake, the whole
+// world is one island, gathered by a walk through the arrays instead of the search's walk
+// through each body's contact and joint lists (a cache miss per edge).
 #pragma once
 
 #include "dynamics/solver_types.h"
@@ -33,6 +38,12 @@ struct Island
 void ResetIslandFlags(WorldState& world);
 /// Fills `island` with the island grown from `seed` (a non-static body with no island yet).
 void BuildIsland(WorldState& world, std::int32_t seed, Island& island);
+/// Fills `island` with every body, solid contact and joint of the world (bodies in array
+/// order, contacts and joints in reverse array order) when every moving body is awake; otherwise
+/// returns false and leaves the search to BuildIsland. Sets the island flags as the search would,
+/// so needs no ResetIslandFlags; static bodies are included (contacts and joints name them) but
+/// left unflagged.
+bool BuildWorldIsland(WorldState& world, Island& island);
 /// Lets static bodies join later islands again.
 void ReleaseStaticBodies(WorldState& world, const Island& island);
 

@@ -6,7 +6,8 @@
 //   report hits, sleep → synchronize shapes → find new contacts → continuous collision (if on) →
 //   clear forces
 //
-// Only awake bodies seed islands, so a sleeping island costs no solver work; the narrow phase
+// Solving by colour without sleep, the awake world is one island (island.h). Otherwise only
+// awake bodies seed islands, so a sleeping island costs no solver work; the narrow phase
 // skips contacts whose bodies all sleep, and only bodies solved this step move in the broad
 // phase.
 //
@@ -48,17 +49,7 @@ void World::Step(Real dt)
     }
     Collide(world);
 
-    ResetIslandFlags(world);
-    for (std::int32_t seed = world.bodyList; seed != kNullIndex; seed = world.bodies[seed].next)
-    {
-        if (CanSeedIsland(world.bodies[seed]))
-        {
-            BuildIsland(world, seed, world.island);
-            SolveIsland(world, world.island, step);
-            ReleaseStaticBodies(world, world.island);
-        }
-    }
-
+    SolveIslands(world, step);
     SynchronizeShapes(world);
     FindNewContacts(world);
     if (world.continuous)
@@ -84,6 +75,26 @@ StepContext BeginStep(WorldState& world, Real dt)
     step.tolerances = world.tolerances;
     ClearEvents(world);
     return step;
+}
+
+void SolveIslands(WorldState& world, const StepContext& step)
+{
+    // Without sleep and Box2D's order, islands would only split the colouring's work.
+    if (step.solver.graphColoring && !world.allowSleep && BuildWorldIsland(world, world.island))
+    {
+        SolveIsland(world, world.island, step);
+        return;
+    }
+    ResetIslandFlags(world);
+    for (std::int32_t seed = world.bodyList; seed != kNullIndex; seed = world.bodies[seed].next)
+    {
+        if (CanSeedIsland(world.bodies[seed]))
+        {
+            BuildIsland(world, seed, world.island);
+            SolveIsland(world, world.island, step);
+            ReleaseStaticBodies(world, world.island);
+        }
+    }
 }
 
 bool CanSeedIsland(const Body& body)

@@ -13,6 +13,8 @@ struct Body;
 struct Island;
 
 StepContext BeginStep(WorldState& world, Real dt);
+/// Finds the islands of awake bodies (island.h) and solves each.
+void SolveIslands(WorldState& world, const StepContext& step);
 bool CanSeedIsland(const Body& body);
 void SolveIsland(WorldState& world, Island& island, const StepContext& step);
 void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step);
