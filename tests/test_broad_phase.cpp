@@ -16,6 +16,7 @@ using meff::Real;
 using meff::Vec2;
 using meff::detail::BroadPhase;
 using meff::detail::DynamicTree;
+using meff::detail::ProxyLayers;
 
 namespace
 {
@@ -67,6 +68,22 @@ AABB Translated(const AABB& box, Vec2 d)
 }
 
 using PairSet = std::set<std::pair<std::int32_t, std::int32_t>>;
+
+/// Few bits (and sometimes none), so that many subtrees hold no leaf a query's layers meet.
+ProxyLayers RandomLayers(Random& rng)
+{
+    ProxyLayers layers;
+    layers.categoryBits = static_cast<std::uint16_t>(
+        rng.Index(6) == 0 ? 0 : 1u << static_cast<unsigned>(rng.Index(4)));
+    layers.maskBits = static_cast<std::uint16_t>(rng.Index(16));
+    return layers;
+}
+
+/// The pairing rule of ProxyLayers, written out apart from the engine's.
+bool Meet(ProxyLayers a, ProxyLayers b)
+{
+    return (a.categoryBits & b.maskBits) != 0 && (a.maskBits & b.categoryBits) != 0;
+}
 
 /// Runs UpdatePairs and returns the reported pairs as (userDataA, userDataB), in order.
 std::vector<std::pair<std::int32_t, std::int32_t>> CollectPairs(BroadPhase& bp)
@@ -342,6 +359,144 @@ TEST_CASE("Dynamic tree: Query matches brute force", "[broad_phase]")
                });
     CHECK(outerCount == plain);
     CHECK(inner >= outerCount); // each leaf finds at least itself
+}
+
+TEST_CASE("Dynamic tree: layer unions stay exact; a layered query reports the leaves whose "
+          "layers meet, in Query's order",
+          "[broad_phase]")
+{
+    for (std::uint64_t seed = 1; seed <= 3; ++seed)
+    {
+        Random rng(seed);
+        DynamicTree tree(kMargin);
+        std::map<std::int32_t, AABB> live;
+        std::map<std::int32_t, ProxyLayers> layersOf;
+        for (int op = 0; op < 1500; ++op)
+        {
+            INFO("seed " << seed << " op " << op);
+            const int kind = live.size() < 20 ? 0 : rng.Index(10);
+            if (kind <= 2)
+            {
+                const AABB box = RandomBox(rng, 50, 3);
+                const ProxyLayers layers = RandomLayers(rng);
+                const std::int32_t id = tree.CreateProxy(box, op, layers);
+                live[id] = box;
+                layersOf[id] = layers;
+                CHECK(tree.GetLayers(id).categoryBits == layers.categoryBits);
+                CHECK(tree.GetLayers(id).maskBits == layers.maskBits);
+            }
+            else if (kind <= 7)
+            {
+                auto it = std::next(live.begin(), rng.Index(static_cast<int>(live.size())));
+                const Vec2 d(rng.Uniform(-3, 3), rng.Uniform(-3, 3));
+                it->second = Translated(it->second, d);
+                tree.MoveProxy(it->first, it->second, d);
+            }
+            else
+            {
+                auto it = std::next(live.begin(), rng.Index(static_cast<int>(live.size())));
+                tree.DestroyProxy(it->first);
+                layersOf.erase(it->first);
+                live.erase(it);
+            }
+            // Every internal node's layers are the union of its children's (and so of its
+            // leaves'), through insertions, rotations and removals.
+            REQUIRE(tree.Validate());
+        }
+
+        std::size_t reportedAll = 0, reportedLayered = 0;
+        for (int q = 0; q < 200; ++q)
+        {
+            INFO("seed " << seed << " query " << q);
+            const AABB box = RandomBox(rng, 50, 10);
+            const ProxyLayers layers = RandomLayers(rng);
+            std::vector<std::int32_t> expected;
+            tree.Query(box,
+                       [&](std::int32_t id)
+                       {
+                           ++reportedAll;
+                           if (Meet(layersOf.at(id), layers))
+                           {
+                               expected.push_back(id);
+                           }
+                           return true;
+                       });
+            std::vector<std::int32_t> found;
+            tree.Query(box, layers,
+                       [&found](std::int32_t id)
+                       {
+                           found.push_back(id);
+                           return true;
+                       });
+            reportedLayered += found.size();
+            CHECK(found == expected);
+        }
+        // The layers do leave leaves out (else the comparison above would prove nothing).
+        CHECK(reportedLayered < reportedAll / 2);
+    }
+}
+
+TEST_CASE("Broad phase: pairs whose layers do not meet are left out only where the bits decide",
+          "[broad_phase]")
+{
+    // Every overlapping pair whose layers meet is reported, in the order the unlayered broad
+    // phase reports it; a pair whose layers do not meet is reported only if the proxy whose
+    // query found it does not let the bits decide (a shape in a positive collision group).
+    Random rng(11);
+    BroadPhase layered(kMargin);
+    BroadPhase plain(kMargin);
+    std::vector<std::int32_t> ids;
+    std::vector<ProxyLayers> layersOf;
+    for (int i = 0; i < 300; ++i)
+    {
+        const AABB box = RandomBox(rng, 20, Real(1.5));
+        ProxyLayers layers = RandomLayers(rng);
+        layers.bitsDecide = rng.Index(5) != 0;
+        ids.push_back(layered.CreateProxy(box, i, layers));
+        REQUIRE(plain.CreateProxy(box, i) == ids.back());
+        layersOf.push_back(layers);
+    }
+    for (int round = 0; round < 10; ++round)
+    {
+        INFO("round " << round);
+        const auto all = CollectPairs(plain);
+        const auto found = CollectPairs(layered);
+        std::vector<std::pair<std::int32_t, std::int32_t>> meeting;
+        for (const auto& [a, b] : all)
+        {
+            const ProxyLayers la = layersOf[static_cast<std::size_t>(a)];
+            const ProxyLayers lb = layersOf[static_cast<std::size_t>(b)];
+            if (Meet(la, lb))
+            {
+                meeting.push_back({a, b});
+            }
+        }
+        std::vector<std::pair<std::int32_t, std::int32_t>> foundMeeting;
+        for (const auto& [a, b] : found)
+        {
+            const ProxyLayers la = layersOf[static_cast<std::size_t>(a)];
+            const ProxyLayers lb = layersOf[static_cast<std::size_t>(b)];
+            if (Meet(la, lb))
+            {
+                foundMeeting.push_back({a, b});
+            }
+            else
+            {
+                CHECK((!la.bitsDecide || !lb.bitsDecide));
+            }
+        }
+        CHECK(foundMeeting == meeting);
+        CHECK(found.size() < all.size());
+        REQUIRE(!meeting.empty());
+        // Move a third of the proxies far enough to be queried again next round.
+        for (std::size_t i = 0; i < ids.size(); i += 3)
+        {
+            const Vec2 d(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
+            const AABB box = Translated(layered.GetFatAABB(ids[i]), d);
+            layered.MoveProxy(ids[i], box, d);
+            plain.MoveProxy(ids[i], box, d);
+        }
+    }
 }
 
 TEST_CASE("Dynamic tree: height stays logarithmic", "[broad_phase]")

@@ -18,13 +18,32 @@ namespace meff::detail
 
 inline constexpr std::int32_t kNullProxy = -1;
 
+/// A proxy's collision layers: its shape's Filter category and mask bits. The tree keeps them
+/// so that a query can skip every subtree none of whose proxies could pair with it: each
+/// internal node holds the union (bitwise or) of its leaves' bits, and a proxy A pairs with B
+/// only if A's category meets B's mask and B's category meets A's.
+struct ProxyLayers
+{
+    std::uint16_t categoryBits = 0xFFFF;
+    std::uint16_t maskBits = 0xFFFF;
+    /// Whether the bits alone decide this proxy's pairs. False for a shape in a positive
+    /// collision group, which pairs with its group whatever the bits: its queries skip nothing.
+    bool bitsDecide = true;
+};
+
+/// True when some proxy under a node with these (union) layers may pair with `query`'s.
+inline bool LayersMeet(std::uint16_t categoryBits, std::uint16_t maskBits, ProxyLayers query)
+{
+    return (categoryBits & query.maskBits) != 0 && (maskBits & query.categoryBits) != 0;
+}
+
 class DynamicTree
 {
   public:
     explicit DynamicTree(Real aabbMargin);
 
     /// Inserts a leaf with the box fattened by the margin; returns its proxy id.
-    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData);
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
     void DestroyProxy(std::int32_t proxyId);
     /// Re-inserts the leaf when `aabb` leaves the fat box (or the fat box is far too large);
     /// returns true when it did.
@@ -33,12 +52,28 @@ class DynamicTree
     std::int32_t GetUserData(std::int32_t proxyId) const { return m_nodes[proxyId].userData; }
     const AABB& GetFatAABB(std::int32_t proxyId) const { return m_nodes[proxyId].aabb; }
     bool WasMoved(std::int32_t proxyId) const { return m_nodes[proxyId].moved; }
+    ProxyLayers GetLayers(std::int32_t proxyId) const
+    {
+        const Node& node = m_nodes[proxyId];
+        return {node.categoryBits, node.maskBits, node.bitsDecide};
+    }
     void ClearMoved(std::int32_t proxyId) { m_nodes[proxyId].moved = false; }
 
     /// Calls callback(proxyId) -> bool for every leaf whose fat box overlaps `aabb`, until it
     /// returns false. Traversal order is Box2D's (stack, child1 pushed before child2).
     template <typename Callback>
-    void Query(const AABB& aabb, Callback&& callback) const;
+    void Query(const AABB& aabb, Callback&& callback) const
+    {
+        Walk(aabb, nullptr, callback);
+    }
+    /// Query for the leaves whose layers meet `layers` (LayersMeet): the others are never
+    /// reported, and subtrees with none are not entered. The order of the reported leaves is
+    /// Query's.
+    template <typename Callback>
+    void Query(const AABB& aabb, ProxyLayers layers, Callback&& callback) const
+    {
+        Walk(aabb, &layers, callback);
+    }
 
     /// Calls callback(subInput, proxyId) -> Real for every leaf whose fat box the ray
     /// input.p1 → input.p2 (up to input.maxFraction) may cross, pruning as Box2D 2.4.1's
@@ -55,7 +90,7 @@ class DynamicTree
     void BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&& callback) const;
 
     int GetHeight() const;
-    /// Checks parent links, heights and boxes of the whole tree; for tests.
+    /// Checks parent links, heights, boxes and layer unions of the whole tree; for tests.
     bool Validate() const;
 
     struct Node
@@ -66,11 +101,20 @@ class DynamicTree
         std::int32_t child1 = kNullProxy;
         std::int32_t child2 = kNullProxy;
         std::int32_t height = -1; ///< leaf 0, free -1
+        /// A leaf's ProxyLayers bits; an internal node's, the union of its leaves'.
+        std::uint16_t categoryBits = 0;
+        std::uint16_t maskBits = 0;
+        bool bitsDecide = true; ///< leaves: ProxyLayers::bitsDecide
         bool moved = false;
         bool IsLeaf() const { return child1 == kNullProxy; }
     };
 
   private:
+    /// Query's walk; with `layers`, it skips the nodes whose layers do not meet them.
+    template <typename Callback>
+    void Walk(const AABB& aabb, const ProxyLayers* layers, Callback&& callback) const;
+    /// Sets an internal node's layers to the union of its two children's.
+    void UniteLayers(Node& node);
     std::int32_t AllocateNode();
     void FreeNode(std::int32_t node);
     void InsertLeaf(std::int32_t leaf);
@@ -124,7 +168,7 @@ class BroadPhase
   public:
     explicit BroadPhase(Real aabbMargin) : m_tree(aabbMargin) {}
 
-    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData);
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
     void DestroyProxy(std::int32_t proxyId);
     void MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
     /// Makes the proxy report its pairs again at the next UpdatePairs.
@@ -138,6 +182,8 @@ class BroadPhase
 
     /// Calls addPair(userDataA, userDataB) for each new overlapping pair involving a moved
     /// proxy, in Box2D 2.4.1's order (A has the smaller proxy id), then clears the move buffer.
+    /// Pairs whose layers do not meet are left out: Box2D finds them and its filter refuses
+    /// them, so the pairs reported, and their order, are those Box2D's filter lets through.
     template <typename AddPair>
     void UpdatePairs(AddPair&& addPair);
 
@@ -145,6 +191,11 @@ class BroadPhase
     void Query(const AABB& aabb, Callback&& callback) const
     {
         m_tree.Query(aabb, callback);
+    }
+    template <typename Callback>
+    void Query(const AABB& aabb, ProxyLayers layers, Callback&& callback) const
+    {
+        m_tree.Query(aabb, layers, callback);
     }
     template <typename Callback>
     void RayCast(const RayCastInput& input, Callback&& callback) const

@@ -10,7 +10,7 @@ namespace meff::detail
 {
 
 template <typename Callback>
-void DynamicTree::Query(const AABB& aabb, Callback&& callback) const
+void DynamicTree::Walk(const AABB& aabb, const ProxyLayers* layers, Callback&& callback) const
 {
     // Depth-first with an explicit stack, visiting child2 before child1 (child1 is pushed
     // first), as Box2D does. The box is copied: the callback may change what `aabb` names.
@@ -26,7 +26,8 @@ void DynamicTree::Query(const AABB& aabb, Callback&& callback) const
         }
 
         const Node& node = m_nodes[nodeId];
-        if (!TestOverlap(node.aabb, box))
+        if (!TestOverlap(node.aabb, box) ||
+            (layers != nullptr && !LayersMeet(node.categoryBits, node.maskBits, *layers)))
         {
             continue;
         }
@@ -143,21 +144,31 @@ void BroadPhase::UpdatePairs(AddPair&& addPair)
         }
 
         const AABB fatBox = m_tree.GetFatAABB(queryId);
-        m_tree.Query(
-            fatBox,
-            [this, queryId](std::int32_t proxyId)
+        const auto record = [this, queryId](std::int32_t proxyId)
+        {
+            if (proxyId == queryId)
             {
-                if (proxyId == queryId)
-                {
-                    return true;
-                }
-                if (proxyId > queryId && m_tree.WasMoved(proxyId))
-                {
-                    return true;
-                }
-                m_pairBuffer.push_back({std::min(proxyId, queryId), std::max(proxyId, queryId)});
                 return true;
-            });
+            }
+            if (proxyId > queryId && m_tree.WasMoved(proxyId))
+            {
+                return true;
+            }
+            m_pairBuffer.push_back({std::min(proxyId, queryId), std::max(proxyId, queryId)});
+            return true;
+        };
+        // Leaving out pairs whose layers do not meet drops only pairs the filter refuses, so
+        // the rest keep their order (a net whose links do not collide with each other then
+        // costs no walk through its own part of the tree).
+        const ProxyLayers layers = m_tree.GetLayers(queryId);
+        if (layers.bitsDecide)
+        {
+            m_tree.Query(fatBox, layers, record);
+        }
+        else
+        {
+            m_tree.Query(fatBox, record);
+        }
     }
 
     for (std::size_t i = 0; i < m_pairBuffer.size(); ++i)

@@ -62,6 +62,9 @@ std::int32_t DynamicTree::AllocateNode()
     node.child2 = kNullProxy;
     node.height = 0;
     node.userData = -1;
+    node.categoryBits = 0;
+    node.maskBits = 0;
+    node.bitsDecide = true;
     node.moved = false;
     ++m_nodeCount;
     return id;
@@ -76,7 +79,7 @@ void DynamicTree::FreeNode(std::int32_t id)
     --m_nodeCount;
 }
 
-std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData)
+std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers)
 {
     const std::int32_t proxyId = AllocateNode();
 
@@ -86,6 +89,9 @@ std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData)
     node.aabb.upperBound = aabb.upperBound + r;
     node.userData = userData;
     node.height = 0;
+    node.categoryBits = layers.categoryBits;
+    node.maskBits = layers.maskBits;
+    node.bitsDecide = layers.bitsDecide;
     node.moved = true;
 
     InsertLeaf(proxyId);
@@ -207,6 +213,7 @@ void DynamicTree::InsertLeaf(std::int32_t leaf)
         parent.height = m_nodes[sibling].height + 1;
         parent.child1 = sibling;
         parent.child2 = leaf;
+        UniteLayers(parent);
     }
     m_nodes[sibling].parentOrNext = newParent;
     m_nodes[leaf].parentOrNext = newParent;
@@ -239,6 +246,7 @@ void DynamicTree::InsertLeaf(std::int32_t leaf)
         const Node& c2 = m_nodes[node.child2];
         node.height = 1 + std::max(c1.height, c2.height);
         node.aabb = Combine(c1.aabb, c2.aabb);
+        UniteLayers(node);
 
         index = node.parentOrNext;
     }
@@ -288,6 +296,7 @@ void DynamicTree::RemoveLeaf(std::int32_t leaf)
         const Node& c2 = m_nodes[node.child2];
         node.aabb = Combine(c1.aabb, c2.aabb);
         node.height = 1 + std::max(c1.height, c2.height);
+        UniteLayers(node);
 
         index = node.parentOrNext;
     }
@@ -360,6 +369,7 @@ std::int32_t DynamicTree::Balance(std::int32_t iA)
 
         a.height = 1 + std::max(stay.height, give.height);
         up.height = 1 + std::max(a.height, keep.height);
+        UniteLayers(a); // `up`'s are set by the caller's walk up, which refits it next
     };
 
     if (balance > 1)
@@ -373,6 +383,14 @@ std::int32_t DynamicTree::Balance(std::int32_t iA)
         return iB;
     }
     return iA;
+}
+
+void DynamicTree::UniteLayers(Node& node)
+{
+    const Node& c1 = m_nodes[node.child1];
+    const Node& c2 = m_nodes[node.child2];
+    node.categoryBits = c1.categoryBits | c2.categoryBits;
+    node.maskBits = c1.maskBits | c2.maskBits;
 }
 
 int DynamicTree::GetHeight() const
@@ -450,6 +468,11 @@ bool DynamicTree::Validate() const
         }
         const AABB box = Combine(c1.aabb, c2.aabb);
         if (box.lowerBound != node.aabb.lowerBound || box.upperBound != node.aabb.upperBound)
+        {
+            return false;
+        }
+        if (node.categoryBits != (c1.categoryBits | c2.categoryBits) ||
+            node.maskBits != (c1.maskBits | c2.maskBits))
         {
             return false;
         }

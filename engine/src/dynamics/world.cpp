@@ -580,7 +580,10 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
     shape.body = bodyId.index;
     shape.def = def;
     shape.aabb = shape.ComputeAABB(body.xf);
-    shape.proxyId = world.broadPhase.CreateProxy(shape.aabb, index);
+    // A shape in a positive group pairs with its group whatever the bits (FiltersAllow).
+    const Filter& filter = def.filter;
+    shape.proxyId = world.broadPhase.CreateProxy(
+        shape.aabb, index, {filter.categoryBits, filter.maskBits, filter.groupIndex <= 0});
 
     const ShapeId id{index, generation};
     body.shapes.insert(body.shapes.begin(), index); // newest first, as Box2D's fixture list

@@ -233,7 +233,7 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
                               Describe(box.lowerBound) + " to " + Describe(box.upperBound));
     }
     const WorldState& world = *m_state;
-    world.broadPhase.Query(box,
+    world.broadPhase.Query(box, {filter.categoryBits, filter.maskBits},
                            [&](std::int32_t proxyId)
                            {
                                const std::int32_t index = world.broadPhase.GetUserData(proxyId);
@@ -250,7 +250,7 @@ void World::OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callbac
     RequireFinite(point, "World::OverlapPoint: point");
     const WorldState& world = *m_state;
     // A shape containing the point has it inside its tight box, so inside its fat box.
-    world.broadPhase.Query(AABB{point, point},
+    world.broadPhase.Query(AABB{point, point}, {filter.categoryBits, filter.maskBits},
                            [&](std::int32_t proxyId)
                            {
                                const std::int32_t index = world.broadPhase.GetUserData(proxyId);
