@@ -21,7 +21,7 @@ bool FiltersAllow(const Filter& a, const Filter& b)
     return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
 }
 
-/// The same key for (a, b) and (b, a).
+/// The same key for (a, b) and (b, a); never 0 (PairSet's empty mark), since a ≠ b.
 std::uint64_t ShapePairKey(std::int32_t a, std::int32_t b)
 {
     const auto low = static_cast<std::uint32_t>(std::min(a, b));
@@ -104,7 +104,7 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     // Does a contact between these two shapes exist already? Box2D 2.4.1 walks body B's
     // contact list, a cache miss per edge and a thousand edges for a container full of boxes;
     // the set answers the same question in one look-up.
-    if (world.contactPairs.contains(ShapePairKey(shapeIndexA, shapeIndexB)))
+    if (world.contactPairs.Contains(ShapePairKey(shapeIndexA, shapeIndexB)))
     {
         return;
     }
@@ -151,7 +151,7 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
         contact.flags |= Contact::HitEvents;
     }
 
-    world.contactPairs.insert(ShapePairKey(sA, sB));
+    world.contactPairs.Insert(ShapePairKey(sA, sB));
     contact.prev = kNullIndex;
     contact.next = world.contactList;
     if (world.contactList != kNullIndex)
@@ -197,7 +197,7 @@ void DestroyContact(WorldState& world, std::int32_t contactIndex)
     }
     UnlinkEdge(world, world.bodies[contact.bodyA], contactIndex, 0);
     UnlinkEdge(world, world.bodies[contact.bodyB], contactIndex, 1);
-    world.contactPairs.erase(ShapePairKey(contact.shapeA, contact.shapeB));
+    world.contactPairs.Erase(ShapePairKey(contact.shapeA, contact.shapeB));
     contact.alive = false;
     contact.flags = 0;
     world.freeContacts.push_back(contactIndex);

@@ -9,13 +9,13 @@
 #include "dynamics/contact_solver.h"
 #include "dynamics/island.h"
 #include "dynamics/joint_solver.h"
+#include "dynamics/pair_set.h"
 #include "dynamics/shape.h"
 #include "joints/joint.h"
 #include "meff/world.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <unordered_set>
 #include <vector>
 
 namespace meff::detail
@@ -64,7 +64,7 @@ struct WorldState
     std::int32_t contactList = kNullIndex; ///< newest first, as b2ContactManager::m_contactList
     int contactCount = 0;
     /// ShapePairKey of every contact's two shapes (contact_manager.cpp): does a pair have one?
-    std::unordered_set<std::uint64_t> contactPairs;
+    PairSet contactPairs;
 
     BroadPhase broadPhase;
     bool newShapes = false; ///< find new contacts before the next narrow phase
