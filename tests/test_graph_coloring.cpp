@@ -291,10 +291,10 @@ TEST_CASE("Graph colouring without sleep: the awake world is one island, holding
         const BodyId pivot = AddAnchor(world, {0, 6});
         bodies.push_back(AddBall(world, {1, 6}, {0, 0}, Real(0.25), Material(1, 0)));
         world.CreateJoint(world.MakeRevoluteJointDef(pivot, bodies.back(), {0, 6}));
-        // A free pair of balls joined to each other, away from everything.
-        bodies.push_back(AddBall(world, {-20, 10}, {1, 0}, Real(0.25), Material(1, 0)));
-        bodies.push_back(AddBall(world, {-19, 10}, {0, 2}, Real(0.25), Material(1, 0)));
-        world.CreateJoint(world.MakeRevoluteJointDef(bodies[2], bodies[3], {Real(-19.5), 10}));
+        // A free pair of balls joined to each other, high enough not to land within the run.
+        bodies.push_back(AddBall(world, {-20, 20}, {1, 0}, Real(0.25), Material(1, 0)));
+        bodies.push_back(AddBall(world, {-19, 20}, {0, 2}, Real(0.25), Material(1, 0)));
+        world.CreateJoint(world.MakeRevoluteJointDef(bodies[2], bodies[3], {Real(-19.5), 20}));
         world.CreateJoint(
             world.MakeRevoluteJointDef(pivot, AddAnchor(world, {0, 8}), {0, 7})); // static pair
         const BodyId platform =
@@ -329,6 +329,10 @@ TEST_CASE("Graph colouring without sleep: the awake world is one island, holding
         }
         // SetSleepingAllowed(false) wakes a body: the sleeper sleeps again until hit.
         world.SetAwake(bodies[bodies.size() - 2], false);
+        // Dead slots among the bodies and joints, which the gathering must skip.
+        const BodyId doomed = AddBall(world, {30, 5}, {0, 0}, Real(0.25), Material(1, 0));
+        world.CreateJoint(world.MakeRevoluteJointDef(pivot, doomed, {30, 6}));
+        world.DestroyBody(doomed);
         return std::pair{std::move(world), bodies};
     };
     auto [oneIsland, oneBodies] = build(false);

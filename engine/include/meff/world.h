@@ -78,8 +78,12 @@ struct SolverSettings
     /// in SIMD lanes — same rows, effective masses, iteration counts and block solvers, but
     /// another Gauss-Seidel order, so results agree with Box2D 2.4.1 only up to that order's
     /// effect (settled-state checks), not bit for bit. Other joints, and continuous
-    /// collision's sub-steps, keep the island order. Off (default): Box2D 2.4.1's order,
-    /// bit-identical.
+    /// collision's sub-steps, keep the island order. Without sleep (WorldDef::allowSleep off)
+    /// and with every moving body awake, the whole world is solved as one island, gathered
+    /// from the arrays instead of searched: the position pass then stops when the whole world
+    /// is within tolerance, not island by island. A moving body kept asleep (BodyDef::awake
+    /// false, SetAwake(false)) brings back the island search. Off (default): Box2D 2.4.1's
+    /// order, bit-identical.
     bool graphColoring = false;
 };
 

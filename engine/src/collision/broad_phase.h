@@ -182,8 +182,11 @@ class BroadPhase
 
     /// Calls addPair(userDataA, userDataB) for each new overlapping pair involving a moved
     /// proxy, in Box2D 2.4.1's order (A has the smaller proxy id), then clears the move buffer.
-    /// Pairs whose layers do not meet are left out: Box2D finds them and its filter refuses
-    /// them, so the pairs reported, and their order, are those Box2D's filter lets through.
+    /// A pair whose layers do not meet is left out when the querying proxy lets the bits
+    /// decide: then neither proxy is in the other's positive group, so the filter refuses the
+    /// pair whatever else it is. The pairs the filter lets through, and their order, are
+    /// Box2D's. Filters are fixed at shape creation; a filter setter would have to update the
+    /// leaf's layers and refit its ancestors' unions.
     template <typename AddPair>
     void UpdatePairs(AddPair&& addPair);
 

@@ -106,18 +106,26 @@ bool BuildWorldIsland(WorldState& world, Island& island)
             return false;
         }
         body.islandFlag = moves;
+        // Static bodies are only read, by the contacts and joints that name them: one
+        // without either (a tile no one touches) costs the solve nothing, as in the search.
+        if (!moves && body.contactList == kNullIndex && body.jointList == kNullIndex)
+        {
+            continue;
+        }
         body.islandIndex = static_cast<std::int32_t>(island.bodies.size());
         island.bodies.push_back(static_cast<std::int32_t>(b));
     }
-    // Every solid contact and joint has a moving body (the broad phase pairs no two static
-    // bodies), so all are reached, as the search from every awake body would reach them.
-    // Contacts and joints go in reverse array order, which for joints is newest first like
-    // the lists the search walks: the colouring is greedy in this order, and the oldest-first
-    // order colours joint_grid's net so that it flails more (its largest gap to Box2D's
-    // order grows from 28 m to 76 m, and the broad phase's work doubles).
+    // Every contact has a dynamic body (AddPair refuses pairs without one) and every joint
+    // gathered here a moving one, so all are reached, as the search from every awake body
+    // would reach them. Contacts and joints go in reverse array order, roughly newest first
+    // (freed slots are reused) like the lists the search walks: the colouring is greedy in
+    // this order, and the oldest-first order colours joint_grid's net so that it flails more
+    // (its largest gap to Box2D's order grows from 28 m to 76 m, and the broad phase's work
+    // doubles).
     for (std::size_t c = world.contacts.size(); c-- > 0;)
     {
-        if (world.contacts[c].IsSolid())
+        const Contact& contact = world.contacts[c];
+        if (contact.alive && contact.IsSolid())
         {
             island.contacts.push_back(static_cast<std::int32_t>(c));
         }

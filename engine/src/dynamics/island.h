@@ -38,11 +38,12 @@ struct Island
 void ResetIslandFlags(WorldState& world);
 /// Fills `island` with the island grown from `seed` (a non-static body with no island yet).
 void BuildIsland(WorldState& world, std::int32_t seed, Island& island);
-/// Fills `island` with every body, solid contact and joint of the world (bodies in array
-/// order, contacts and joints in reverse array order) when every moving body is awake; otherwise
-/// returns false and leaves the search to BuildIsland. Sets the island flags as the search would,
-/// so needs no ResetIslandFlags; static bodies are included (contacts and joints name them) but
-/// left unflagged.
+/// Fills `island` with every moving body, every static body that a contact or joint names,
+/// every solid contact and every joint with a moving body (bodies in array order, contacts and
+/// joints in reverse array order) when every moving body is awake; otherwise returns false
+/// and leaves the search to BuildIsland. Sets the bodies' island flags as the search would
+/// (static bodies unflagged), so needs no ResetIslandFlags; the contacts' and joints' flags
+/// are left as they were (the searches reset them before use).
 bool BuildWorldIsland(WorldState& world, Island& island);
 /// Lets static bodies join later islands again.
 void ReleaseStaticBodies(WorldState& world, const Island& island);

@@ -2,9 +2,11 @@
 // contact already?" for every pair the broad phase finds, thousands per step). Open addressing
 // with linear probing in one array of keys: a look-up reads one or two cache lines where a
 // node-based set follows a bucket's chain, and inserting allocates only when the table grows.
-// Erasing shifts the following keys back, so no tombstones slow later look-ups.
+// Erasing shifts the following keys back, so no tombstones slow later look-ups. The table
+// never shrinks: after a mass destruction it keeps its size, ready for the contacts to return.
 #pragma once
 
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -38,6 +40,7 @@ class PairSet
     /// Adds `key` (not 0); returns false when it was there already.
     bool Insert(std::uint64_t key)
     {
+        assert(key != 0);
         // At most half full: probe runs stay short.
         if (2 * (m_count + 1) > m_slots.size())
         {
