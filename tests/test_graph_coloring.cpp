@@ -459,6 +459,100 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
     }
 }
 
+TEST_CASE("Graph colouring: a needle's two close points drop the second, as the island order does",
+          "[coloring]")
+{
+    // A box 4 mm wide standing on its end: its two contact points are 4 mm apart, so the
+    // block solver's K is ill-conditioned (k11² ≥ kMaxConditionNumber·det K) and only the
+    // first point is solved, in the lanes (colored_contact_prepare.cpp) as in the island
+    // order (contact_solver.cpp). One isolated contact, so the colour order changes nothing.
+    const auto build = [](bool colored)
+    {
+        WorldDef def;
+        def.solver.graphColoring = colored;
+        World world(def);
+        const BodyId ground = world.CreateBody({});
+        world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(50, 1, {0, -1}, 0));
+        const BodyId needle = AddBox(world, BodyType::Dynamic, {0, Real(0.5)}, 0, Real(0.002),
+                                     Real(0.5), Material(1, Real(0.6)));
+        return std::pair{std::move(world), needle};
+    };
+    auto [colored, coloredNeedle] = build(true);
+    auto [ordered, orderedNeedle] = build(false);
+    for (int step = 0; step < 20; ++step)
+    {
+        colored.Step(kDt);
+        ordered.Step(kDt);
+        INFO("step " << step);
+        // One point solved and reported in both, the second dropped.
+        REQUIRE(colored.GetContactReports().size() == 1);
+        REQUIRE(ordered.GetContactReports().size() == 1);
+        // Both solve the same single row; they differ only by the position pass's SIMD sine
+        // and cosine (≤ 2.4e-7 relative): 1e-6 m over 20 steps of a 1 m needle.
+        CHECK(Distance(colored.GetPosition(coloredNeedle), ordered.GetPosition(orderedNeedle)) <
+              1e-6);
+        CHECK(std::abs(colored.GetAngle(coloredNeedle) - ordered.GetAngle(orderedNeedle)) < 1e-6);
+    }
+}
+
+TEST_CASE("Graph colouring: a plank holding more boxes than there are colours still holds them",
+          "[coloring][analytic]")
+{
+    // 70 boxes resting on one dynamic plank: the plank is in 71 contacts (70 boxes and the
+    // ground), more than the 64 colours, so 7 of its contacts go to the overflow and are
+    // solved one by one after the lanes, in the same island. Every box must still rest on the
+    // plank, held by m·g·dt per step, and the ground must carry everything.
+    WorldDef def;
+    def.solver.graphColoring = true;
+    World world(def);
+    const BodyId ground = world.CreateBody({});
+    world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(100, 1, {0, -1}, 0));
+    const BodyId plank = AddBox(world, BodyType::Dynamic, {0, Real(0.25)}, 0, 40, Real(0.25),
+                                Material(1, Real(0.6)));
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 70; ++i)
+    {
+        boxes.push_back(AddBox(world, BodyType::Dynamic, {Real(-34.5 + i), Real(0.75)}, 0,
+                               Real(0.25), Real(0.25), Material(1, Real(0.6))));
+    }
+    for (int step = 0; step < 120; ++step)
+    {
+        world.Step(kDt);
+    }
+    std::vector<double> support(boxes.size(), 0);
+    double groundSupport = 0;
+    for (const ContactPointReport& point : world.GetContactReports())
+    {
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+        {
+            if (point.bodyA == boxes[i] || point.bodyB == boxes[i])
+            {
+                support[i] += point.normalImpulse;
+            }
+        }
+        if (point.bodyA == ground || point.bodyB == ground)
+        {
+            groundSupport += point.normalImpulse;
+        }
+    }
+    double totalMass = world.GetMass(plank);
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+    {
+        INFO("box " << i);
+        // Resting on the plank, which rests on the ground: two contacts below the box, each
+        // 0.02 m of polygon skins thick and each resting between 0 and the linear slop
+        // (0.005 m) of penetration, so the box's centre is at 0.75 + 2·0.02 − [0, 2·0.005].
+        const double y = world.GetPosition(boxes[i]).y;
+        CHECK(y > 0.78 - 1e-4);
+        CHECK(y < 0.79 + 1e-4);
+        const double mgdt = world.GetMass(boxes[i]) * 10 * double(kDt);
+        // Float rounding of a few operations on impulses of size m·g·dt, as the resting test.
+        CHECK(support[i] == Approx(mgdt).epsilon(1e-4));
+        totalMass += world.GetMass(boxes[i]);
+    }
+    CHECK(groundSupport == Approx(totalMass * 10 * double(kDt)).epsilon(1e-4));
+}
+
 TEST_CASE("Graph colouring: pyramid20 settles where Box2D 2.4.1's does", "[coloring][validation]")
 {
     meff::Scene scene = meff::LoadScene(
