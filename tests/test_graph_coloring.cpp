@@ -81,6 +81,35 @@ void CheckColoring(const std::vector<ConstraintBodies>& constraints,
     }
 }
 
+/// A world on Box2D's benchmark ground (a static box 2·halfWidth wide whose top is y = 0),
+/// solving by colour or in the island order.
+std::pair<World, BodyId> MakeGroundedWorld(bool colored, Real halfWidth = 50)
+{
+    WorldDef def;
+    def.solver.graphColoring = colored;
+    World world(def);
+    const BodyId ground = world.CreateBody({});
+    world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(halfWidth, 1, {0, -1}, 0));
+    return {std::move(world), ground};
+}
+
+/// Each body's normal impulse over the last step, summed over its reported points (N·s).
+std::vector<double> NormalSupport(const World& world, const std::vector<BodyId>& bodies)
+{
+    std::vector<double> support(bodies.size(), 0);
+    for (const ContactPointReport& point : world.GetContactReports())
+    {
+        for (std::size_t i = 0; i < bodies.size(); ++i)
+        {
+            if (point.bodyA == bodies[i] || point.bodyB == bodies[i])
+            {
+                support[i] += point.normalImpulse;
+            }
+        }
+    }
+    return support;
+}
+
 } // namespace
 
 TEST_CASE("Graph colouring: no colour moves a body twice; static bodies are shared", "[coloring]")
@@ -202,11 +231,7 @@ TEST_CASE("Graph colouring: resting bodies hold m·g·dt and match the island-or
     // both solvers must agree but for the position pass's sine and cosine (≤ 2 ulp apart).
     const auto build = [](bool colored)
     {
-        WorldDef def;
-        def.solver.graphColoring = colored;
-        World world(def);
-        const BodyId ground = world.CreateBody({});
-        world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(50, 1, {0, -1}, 0));
+        World world = MakeGroundedWorld(colored).first;
         std::vector<BodyId> bodies;
         for (int i = 0; i < 11; ++i)
         {
@@ -244,17 +269,7 @@ TEST_CASE("Graph colouring: resting bodies hold m·g·dt and match the island-or
     }
     // Each body rests: the summed normal impulse of its points is m·g·dt (float rounding of a
     // few operations on impulses of size m·g·dt).
-    std::vector<double> support(coloredBodies.size(), 0);
-    for (const ContactPointReport& point : colored.GetContactReports())
-    {
-        for (std::size_t i = 0; i < coloredBodies.size(); ++i)
-        {
-            if (point.bodyB == coloredBodies[i] || point.bodyA == coloredBodies[i])
-            {
-                support[i] += point.normalImpulse;
-            }
-        }
-    }
+    const std::vector<double> support = NormalSupport(colored, coloredBodies);
     for (std::size_t i = 0; i < coloredBodies.size(); ++i)
     {
         const double mgdt = colored.GetMass(coloredBodies[i]) * 10 * double(kDt);
@@ -468,11 +483,7 @@ TEST_CASE("Graph colouring: a needle's two close points drop the second, as the 
     // order (contact_solver.cpp). One isolated contact, so the colour order changes nothing.
     const auto build = [](bool colored)
     {
-        WorldDef def;
-        def.solver.graphColoring = colored;
-        World world(def);
-        const BodyId ground = world.CreateBody({});
-        world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(50, 1, {0, -1}, 0));
+        World world = MakeGroundedWorld(colored).first;
         const BodyId needle = AddBox(world, BodyType::Dynamic, {0, Real(0.5)}, 0, Real(0.002),
                                      Real(0.5), Material(1, Real(0.6)));
         return std::pair{std::move(world), needle};
@@ -502,11 +513,7 @@ TEST_CASE("Graph colouring: a plank holding more boxes than there are colours st
     // ground), more than the 64 colours, so 7 of its contacts go to the overflow and are
     // solved one by one after the lanes, in the same island. Every box must still rest on the
     // plank, held by m·g·dt per step, and the ground must carry everything.
-    WorldDef def;
-    def.solver.graphColoring = true;
-    World world(def);
-    const BodyId ground = world.CreateBody({});
-    world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(100, 1, {0, -1}, 0));
+    auto [world, ground] = MakeGroundedWorld(true, 100);
     const BodyId plank = AddBox(world, BodyType::Dynamic, {0, Real(0.25)}, 0, 40, Real(0.25),
                                 Material(1, Real(0.6)));
     std::vector<BodyId> boxes;
@@ -519,22 +526,8 @@ TEST_CASE("Graph colouring: a plank holding more boxes than there are colours st
     {
         world.Step(kDt);
     }
-    std::vector<double> support(boxes.size(), 0);
-    double groundSupport = 0;
-    for (const ContactPointReport& point : world.GetContactReports())
-    {
-        for (std::size_t i = 0; i < boxes.size(); ++i)
-        {
-            if (point.bodyA == boxes[i] || point.bodyB == boxes[i])
-            {
-                support[i] += point.normalImpulse;
-            }
-        }
-        if (point.bodyA == ground || point.bodyB == ground)
-        {
-            groundSupport += point.normalImpulse;
-        }
-    }
+    const std::vector<double> support = NormalSupport(world, boxes);
+    const double groundSupport = NormalSupport(world, {ground})[0];
     double totalMass = world.GetMass(plank);
     for (std::size_t i = 0; i < boxes.size(); ++i)
     {
