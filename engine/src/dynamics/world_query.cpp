@@ -236,12 +236,8 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
     world.broadPhase.Query(box, {filter.categoryBits, filter.maskBits},
                            [&](std::int32_t proxyId)
                            {
-                               const std::int32_t index = world.broadPhase.GetUserData(proxyId);
-                               if (!IsSeen(world.shapes[index], filter))
-                               {
-                                   return true;
-                               }
-                               return callback(IdOf(world, index));
+                               // The layered query reports only shapes the filter sees.
+                               return callback(IdOf(world, world.broadPhase.GetUserData(proxyId)));
                            });
 }
 
@@ -255,8 +251,7 @@ void World::OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callbac
                            {
                                const std::int32_t index = world.broadPhase.GetUserData(proxyId);
                                const Shape& shape = world.shapes[index];
-                               if (!IsSeen(shape, filter) ||
-                                   !TestPointShape(shape, world.bodies[shape.body].xf, point))
+                               if (!TestPointShape(shape, world.bodies[shape.body].xf, point))
                                {
                                    return true;
                                }
