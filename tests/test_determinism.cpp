@@ -2,8 +2,8 @@
 // and rollback (stepping on from a restored snapshot is bit-identical to the original run).
 #include <catch2/catch.hpp>
 
-#include "meff/world.h"
 #include "world_fixtures.h"
+#include "meff/world.h"
 
 #include <vector>
 

@@ -2,8 +2,8 @@
 // lifecycle events, and the order of reports.
 #include <catch2/catch.hpp>
 
-#include "meff/world.h"
 #include "world_fixtures.h"
+#include "meff/world.h"
 
 #include <atomic>
 #include <cstdlib>
