@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
-MEFF=build/samples/meff/meff
+MEFF=build/tools/meff/meff
 mkdir -p out/trajectories
 for scene in samples/scenes/*.json; do
     name=$(basename "$scene" .json)
