@@ -1,6 +1,6 @@
 // A small tour of what a game needs from meff, one feature per file. Each stop builds its own
 // world, runs it and returns what a game would observe, so the tests in
-// tests/test_embed_tour.cpp can hold every stop to its promise and `meff_tour` can print it.
+// test_tour.cpp can hold every stop to its promise and `meff_tour` can print it.
 #pragma once
 
 #include "meff/world.h"

@@ -1,5 +1,7 @@
 // The embedding tour (samples/embed/tour/) keeps its promises: each stop is run and what a game
-// would observe is checked against what the feature guarantees.
+// would observe is checked against what the feature guarantees. Built with the samples, as
+// meff_tour_tests, when the tests are built too.
+#define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #include "tour.h"

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# meff used from outside its repository, as games use it (what CI runs after the test suite):
+#   1. `cmake --install` of the build directory (default: build, already built) into a prefix;
+#   2. a game configured against that prefix with find_package(meff CONFIG REQUIRED), built
+#      and run, its sources compiled with -ffp-contract=off (meff::engine's usage requirement);
+#   3. the same game built with pkg-config's flags for meff;
+#   4. a game that adds meff's source tree with add_subdirectory: only the engine is built, with
+#      every optional dependency of meff (Box2D, OSMesa, libpng, CLI11, nlohmann-json, Catch2,
+#      Google Benchmark, Python) hidden from CMake, and the game's build type left alone.
+# Everything is written under ${MEFF_CONSUMER_DIR:-build-consumers}.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SOURCE=$PWD
+BUILD="${1:-build}"
+WORK="${MEFF_CONSUMER_DIR:-build-consumers}"
+rm -rf "$WORK"
+mkdir -p "$WORK"
+WORK=$(cd "$WORK" && pwd)
+
+# Fails unless the compile command of FILE in the compile database DB has -ffp-contract=off.
+check_contract_off() {
+    if ! grep -A3 "\"file\": \".*$2\"" "$1" | grep -q -- "-ffp-contract=off" &&
+        ! grep -B3 "\"file\": \".*$2\"" "$1" | grep -q -- "-ffp-contract=off"; then
+        echo "FAIL: $2 was not compiled with -ffp-contract=off ($1)" >&2
+        exit 1
+    fi
+}
+
+echo "== 1. cmake --install $BUILD --prefix $WORK/prefix =="
+cmake --install "$BUILD" --prefix "$WORK/prefix" >/dev/null
+ls "$WORK/prefix/lib/cmake/meff" "$WORK/prefix/lib/pkgconfig"
+
+echo "== 2. find_package(meff CONFIG REQUIRED COMPONENTS scene) =="
+cmake -S tests/consumers/find_package -B "$WORK/find_package" \
+    -DCMAKE_PREFIX_PATH="$WORK/prefix" >/dev/null
+cmake --build "$WORK/find_package" -j"$(nproc)" >/dev/null
+check_contract_off "$WORK/find_package/compile_commands.json" game.cpp
+"$WORK/find_package/game"
+"$WORK/find_package/scene_game"
+
+echo "== 3. pkg-config --cflags --libs meff =="
+flags=$(PKG_CONFIG_PATH="$WORK/prefix/lib/pkgconfig" pkg-config --cflags --libs meff)
+echo "$flags"
+case " $flags " in *" -ffp-contract=off "*) ;; *) echo "FAIL: no -ffp-contract=off" >&2; exit 1 ;; esac
+# shellcheck disable=SC2086 # the flags are words
+${CXX:-c++} -std=c++20 -O2 tests/consumers/game.cpp $flags -o "$WORK/pkg_config_game"
+"$WORK/pkg_config_game"
+
+echo "== 4. add_subdirectory(meff) with no optional dependency to be found =="
+hidden=()
+for package in box2d PkgConfig PNG CLI11 nlohmann_json Catch2 benchmark Python3; do
+    hidden+=("-DCMAKE_DISABLE_FIND_PACKAGE_$package=ON")
+done
+cmake -S tests/consumers/add_subdirectory -B "$WORK/add_subdirectory" \
+    -DMEFF_SOURCE_DIR="$SOURCE" "${hidden[@]}" --no-warn-unused-cli >/dev/null
+cmake --build "$WORK/add_subdirectory" -j"$(nproc)" >/dev/null
+check_contract_off "$WORK/add_subdirectory/compile_commands.json" game.cpp
+"$WORK/add_subdirectory/game"
+
+echo "All consumer builds passed."
