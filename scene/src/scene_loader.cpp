@@ -978,18 +978,27 @@ Scene LoadScene(const std::string& path)
     {
         throw SceneError({path + ": cannot open: " + std::strerror(errno)});
     }
+    // Read at most one byte more than a scene may have: /dev/zero, or a huge file given by
+    // mistake, is refused instead of filling the memory.
     std::string text;
     char buffer[1 << 16];
     std::size_t count = 0;
-    while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0)
+    while (text.size() <= kMaxSceneFileBytes &&
+           (count = std::fread(buffer, 1, sizeof buffer, file)) > 0)
     {
         text.append(buffer, count);
     }
     const bool failed = std::ferror(file) != 0;
+    const int readError = errno;
     std::fclose(file);
     if (failed)
     {
-        throw SceneError({path + ": cannot read: " + std::strerror(errno)});
+        throw SceneError({path + ": cannot read: " + std::strerror(readError)});
+    }
+    if (text.size() > kMaxSceneFileBytes)
+    {
+        throw SceneError({path + ": larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
+                          " MiB: not a scene file"});
     }
     return ParseScene(text, path);
 }

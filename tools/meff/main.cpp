@@ -1,6 +1,10 @@
 // `meff`: runs scene files. One subcommand per file; add new ones to the list below.
 #include "commands.h"
+#include "output_file.h"
 
+#include <cstdio>
+#include <exception>
+#include <new>
 #include <vector>
 
 int main(int argc, char** argv)
@@ -30,12 +34,29 @@ int main(int argc, char** argv)
         // --help is a "parse error" with status 0; every real one is bad input.
         return app.exit(error) == 0 ? kExitOk : kExitBadInput;
     }
+    // Ctrl-C or a kill leaves no half-written temporary file behind.
+    RemoveTemporariesOnSignal();
     for (const Command& command : commands)
     {
-        if (command.app->parsed())
+        if (!command.app->parsed())
+        {
+            continue;
+        }
+        // Each command reports its own failures; anything that still escapes is said in one
+        // line rather than aborting the program.
+        try
         {
             return command.run();
         }
+        catch (const std::bad_alloc&)
+        {
+            std::fprintf(stderr, "meff %s: out of memory\n", command.app->get_name().c_str());
+        }
+        catch (const std::exception& error)
+        {
+            std::fprintf(stderr, "meff %s: %s\n", command.app->get_name().c_str(), error.what());
+        }
+        return kExitRunFailed;
     }
     return kExitBadInput;
 }

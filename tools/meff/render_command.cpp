@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -73,8 +74,10 @@ bool ParseSize(const std::string& text, int& width, int& height)
     return true;
 }
 
-/// "x,y,height": finite numbers, height > 0.
-bool ParseCamera(const std::string& text, render::Camera& camera)
+/// "x,y,height": numbers the engine's scalar holds, height > 0 (and not so small that it
+/// rounds to nothing), and a view whose edges stay finite for an image `aspect` times as wide
+/// as high.
+bool ParseCamera(const std::string& text, double aspect, render::Camera& camera)
 {
     std::vector<double> values;
     std::stringstream stream(text);
@@ -90,6 +93,13 @@ bool ParseCamera(const std::string& text, render::Camera& camera)
         values.push_back(value);
     }
     if (values.size() != 3 || !(values[2] > 0))
+    {
+        return false;
+    }
+    const double maxReal = double(std::numeric_limits<Real>::max());
+    const double halfWidth = 0.5 * values[2] * std::max(aspect, 1.0);
+    if (std::abs(values[0]) + halfWidth > maxReal || std::abs(values[1]) + halfWidth > maxReal ||
+        values[2] < double(std::numeric_limits<Real>::min()))
     {
         return false;
     }
@@ -282,8 +292,11 @@ bool Assemble(const std::string& ffmpeg, const std::filesystem::path& directory,
     }
     arguments.push_back(temporary);
     // Without a shell: no quoting problems with odd file names.
+    const int registration = RegisterTemporary(temporary); // removed if we are interrupted
     const int status = RunProgram(arguments, false);
-    if (status != 0 || std::rename(temporary.c_str(), output.c_str()) != 0)
+    const bool renamed = status == 0 && std::rename(temporary.c_str(), output.c_str()) == 0;
+    UnregisterTemporary(registration);
+    if (!renamed)
     {
         std::remove(temporary.c_str());
         Fail(status != 0 ? "ffmpeg failed (exit status " + std::to_string(status) + ") making " +
@@ -308,9 +321,13 @@ int Run(const RenderOptions& options)
         return kExitBadInput;
     }
     std::optional<render::Camera> camera;
-    if (!options.camera.empty() && !ParseCamera(options.camera, camera.emplace()))
+    if (!options.camera.empty() &&
+        !ParseCamera(options.camera, double(width) / height, camera.emplace()))
     {
-        Fail("--camera must be x,y,height with height > 0, got " + options.camera);
+        char limit[32];
+        std::snprintf(limit, sizeof limit, "%.3g", double(std::numeric_limits<Real>::max()));
+        Fail("--camera must be x,y,height with height > 0, the view's edges within ±" +
+             std::string(limit) + " m (the engine's float), got " + options.camera);
         return kExitBadInput;
     }
     const bool gif = !options.gifPath.empty();

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "output_file.h"
 
+#include <cerrno>
 #include <chrono>
 #include <cinttypes>
 #include <climits>
@@ -49,28 +50,46 @@ class RunOutputs
         m_joints = Open(options.jointsPath, "frame,joint,fx,fy,torque\n");
     }
 
+    /// Throws std::runtime_error as soon as an output can no longer be written (a closed
+    /// pipe, a full disk): the run stops there.
     void WriteFrame(int frame)
     {
+        errno = 0; // CheckWrites reads the reason of a failed write from it
         WriteTrajectory(frame);
         if (frame > 0)
         {
             WriteContacts(frame);
             WriteJoints(frame);
         }
+        ForEach([](OutputFile& file) { file.CheckWrites(); });
     }
 
     void Commit()
+    {
+        ForEach([](OutputFile& file) { file.Commit(); });
+    }
+
+    /// Whether an output is standard output (then the summary goes to standard error).
+    bool ToStandardOutput()
+    {
+        bool any = false;
+        ForEach([&](OutputFile& file) { any = any || file.ToStandardOutput(); });
+        return any;
+    }
+
+  private:
+    template <typename Function>
+    void ForEach(Function function)
     {
         for (OutputFile* file : {m_trajectory.get(), m_contacts.get(), m_joints.get()})
         {
             if (file != nullptr)
             {
-                file->Commit();
+                function(*file);
             }
         }
     }
 
-  private:
     static std::unique_ptr<OutputFile> Open(const std::string& path, const char* header)
     {
         if (path.empty())
@@ -166,10 +185,11 @@ class RunOutputs
     std::unique_ptr<OutputFile> m_joints;
 };
 
-/// Two options naming one file would race to rename over each other.
+/// Two options naming one file (through links, or both standard output) would race to rename
+/// over each other, or interleave their rows.
 bool OutputsAreDistinct(const RunOptions& options)
 {
-    std::vector<std::filesystem::path> seen;
+    std::vector<const std::string*> seen;
     for (const std::string* path :
          {&options.trajectoryPath, &options.contactsPath, &options.jointsPath})
     {
@@ -177,17 +197,17 @@ bool OutputsAreDistinct(const RunOptions& options)
         {
             continue;
         }
-        const std::filesystem::path normal =
-            std::filesystem::weakly_canonical(std::filesystem::absolute(*path));
-        for (const std::filesystem::path& other : seen)
+        for (const std::string* other : seen)
         {
-            if (other == normal)
+            if (SameOutput(*path, *other))
             {
-                std::fprintf(stderr, "meff run: %s is given for two outputs\n", path->c_str());
+                std::fprintf(stderr,
+                             "meff run: %s and %s are the same file, given for two outputs\n",
+                             other->c_str(), path->c_str());
                 return false;
             }
         }
-        seen.push_back(normal);
+        seen.push_back(path);
     }
     return true;
 }
@@ -240,6 +260,11 @@ int Run(const RunOptions& options)
             options.scenePath.c_str(), error.step, error.step + 1, bodyText.c_str(), error.what());
         return kExitRunFailed;
     }
+    catch (const std::runtime_error& error)
+    {
+        std::fprintf(stderr, "meff run: %s\n", error.what());
+        return kExitRunFailed;
+    }
 
     try
     {
@@ -253,9 +278,10 @@ int Run(const RunOptions& options)
 
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %zu bodies, %zu joints, %d frames (%.6g s simulated) in %.3f s\n",
-                scene->name.c_str(), scene->bodies.size(), scene->joints.size(), frames,
-                frames * scene->world.dt, seconds);
+    std::fprintf(outputs->ToStandardOutput() ? stderr : stdout,
+                 "%s: %zu bodies, %zu joints, %d frames (%.6g s simulated) in %.3f s\n",
+                 scene->name.c_str(), scene->bodies.size(), scene->joints.size(), frames,
+                 frames * scene->world.dt, seconds);
     return kExitOk;
 }
 

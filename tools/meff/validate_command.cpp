@@ -326,9 +326,13 @@ class Reporter
             arguments.push_back(std::to_string(result.horizonFrames));
         }
         std::error_code error;
-        if (RunProgram(arguments, false) != 0)
+        const std::string temporaryText = temporary.string();
+        const int registration = RegisterTemporary(temporaryText); // removed if interrupted
+        const int status = RunProgram(arguments, false);
+        if (status != 0)
         {
             std::filesystem::remove(temporary, error);
+            UnregisterTemporary(registration);
             std::fprintf(stderr, "meff validate: %s: the plot could not be drawn (%s)\n",
                          result.scene.c_str(), script.c_str());
             return false;
@@ -337,8 +341,10 @@ class Reporter
         if (error)
         {
             std::filesystem::remove(temporary, error);
+            UnregisterTemporary(registration);
             throw std::runtime_error("cannot write " + png.string() + ": " + error.message());
         }
+        UnregisterTemporary(registration);
         return true;
     }
 
@@ -347,6 +353,30 @@ class Reporter
     std::set<std::string> m_used;
     std::optional<std::string> m_python;
 };
+
+/// Creates `directory` if needed and proves a file can be written in it (a trial file,
+/// discarded unwritten); otherwise says why in one line.
+bool CanWriteInto(const std::string& directory)
+{
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error)
+    {
+        std::fprintf(stderr, "meff validate: cannot create %s: %s\n", directory.c_str(),
+                     error.message().c_str());
+        return false;
+    }
+    try
+    {
+        OutputFile probe((std::filesystem::path(directory) / "summary.json").string());
+    }
+    catch (const std::runtime_error& failure)
+    {
+        std::fprintf(stderr, "meff validate: %s\n", failure.what());
+        return false;
+    }
+    return true;
+}
 
 int Validate(const ValidateOptions& options)
 {
@@ -381,6 +411,11 @@ int Validate(const ValidateOptions& options)
     std::optional<Reporter> reporter;
     if (!options.reportDir.empty())
     {
+        // A report folder that cannot be written is bad input, said before anything runs.
+        if (!CanWriteInto(options.reportDir))
+        {
+            return kExitBadInput;
+        }
         reporter.emplace(options.reportDir, !options.noPlot);
     }
     bool allPassed = true;

@@ -243,6 +243,9 @@ class SceneError : public Error
     std::vector<std::string> m_messages;
 };
 
+/// The largest scene file LoadScene reads (bytes).
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t(64) << 20;
+
 /// Reads and validates a scene file. Throws SceneError listing every problem found.
 Scene LoadScene(const std::string& path);
 /// The same for text already in memory; `sourcePath` only names it in messages and gives the

@@ -1,0 +1,308 @@
+#!/usr/bin/env python3
+"""CTest cases for the `meff` tool's outputs and its failures (issue 18):
+
+    check_cli.py MEFF SOURCE_DIR WORK_DIR CASE
+
+Each CASE (a function below named case_CASE) runs the tool as a user would and passes when it
+does what the README promises:
+
+* regular output files appear whole or not at all, through a temporary file renamed into
+  place; anything else is written through, in place: "-", /dev/stdout, a FIFO, a device; a
+  symbolic link's target is written and the link kept;
+* every failure is one line on stderr naming the path and the reason, exit status 1 (the run
+  failed) or 2 (bad input, nothing run), never an abort;
+* SIGINT and SIGTERM leave no temporary file behind.
+
+WORK_DIR is emptied first and holds everything a case writes.
+"""
+import os
+import signal
+import stat
+import subprocess
+import sys
+import threading
+import time
+
+MEFF, SOURCE, WORK, CASE = sys.argv[1:5]
+ROD = os.path.join(SOURCE, "samples", "scenes", "anchored_rod.json")
+STACK = os.path.join(SOURCE, "samples", "scenes", "stack10.json")
+HEADER = "frame,time,body,x,y,angle,vx,vy,omega"
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def run(args, timeout=120, **kwargs):
+    """Runs meff; returns (status, stdout, stderr) as text."""
+    done = subprocess.run([MEFF] + args, capture_output=True, text=True, timeout=timeout,
+                          **kwargs)
+    print("$ meff " + " ".join(args))
+    print("status %d\nstdout: %s\nstderr: %s" % (done.returncode, done.stdout[:400],
+                                                 done.stderr[:400]))
+    return done.returncode, done.stdout, done.stderr
+
+
+def expect_one_line_error(status, stdout, stderr, expected_status, *needles):
+    if status != expected_status:
+        fail("exit status %d, expected %d" % (status, expected_status))
+    if stderr.count("\n") != 1 or not stderr.endswith("\n"):
+        fail("expected one line on stderr, got %r" % stderr)
+    for needle in needles:
+        if needle not in stderr:
+            fail("stderr does not say %r: %r" % (needle, stderr))
+
+
+def expect_trajectory(text, frames):
+    """A trajectory CSV of anchored_rod (one dynamic body) over `frames` steps."""
+    lines = text.splitlines()
+    if not lines or lines[0] != HEADER:
+        fail("the CSV does not start with its header: %r" % text[:200])
+    if len(lines) != 1 + frames + 1:
+        fail("%d lines, expected %d (header and frames 0 to %d)" % (len(lines), frames + 2,
+                                                                    frames))
+
+
+def leftovers():
+    """Hidden temporary files left in WORK."""
+    return [name for name in os.listdir(WORK) if name.startswith(".")]
+
+
+def expect_no_leftovers():
+    if leftovers():
+        fail("temporary files left behind: %s" % leftovers())
+
+
+# --- finding 1: outputs that are not regular files are written through ----------------------
+
+def case_fifo():
+    """A FIFO given as output is written through and stays a FIFO."""
+    fifo = os.path.join(WORK, "fifo")
+    os.mkfifo(fifo)
+    received = []
+
+    def reader():
+        with open(fifo) as stream:
+            received.append(stream.read())
+
+    thread = threading.Thread(target=reader, daemon=True)
+    thread.start()
+    status, _, _ = run(["run", ROD, "--frames", "5", "--trajectory", fifo])
+    thread.join(30)
+    if status != 0:
+        fail("exit status %d" % status)
+    if not stat.S_ISFIFO(os.lstat(fifo).st_mode):
+        fail("the FIFO was replaced by a regular file")
+    expect_trajectory(received[0] if received else "", 5)
+    expect_no_leftovers()
+
+
+def make_device(name, major, minor):
+    """A character device node in WORK (as root), else the system's own node."""
+    if os.geteuid() == 0:
+        path = os.path.join(WORK, name)
+        os.mknod(path, 0o666 | stat.S_IFCHR, os.makedev(major, minor))
+        return path
+    return "/dev/" + name
+
+
+def case_device():
+    """A device given as output (a null device) is written through and stays a device."""
+    null = make_device("null", 1, 3)
+    status, _, _ = run(["run", ROD, "--frames", "5", "--trajectory", null])
+    if status != 0:
+        fail("exit status %d" % status)
+    if not stat.S_ISCHR(os.lstat(null).st_mode):
+        fail("%s was replaced by a regular file" % null)
+    expect_no_leftovers()
+
+
+def case_full_device():
+    """A full device (every write fails with ENOSPC): one line naming it, exit status 1, and the
+    device is still a device."""
+    full = make_device("full", 1, 7)
+    status, stdout, stderr = run(["run", ROD, "--frames", "2000", "--trajectory", full])
+    expect_one_line_error(status, stdout, stderr, 1, full, "No space left on device")
+    if not stat.S_ISCHR(os.lstat(full).st_mode):
+        fail("%s was replaced by a regular file" % full)
+    expect_no_leftovers()
+
+
+def case_dev_stdout():
+    """/dev/stdout: the CSV on standard output (a pipe here), the summary on standard error."""
+    status, stdout, stderr = run(["run", ROD, "--frames", "5", "--trajectory", "/dev/stdout"])
+    if status != 0:
+        fail("exit status %d" % status)
+    expect_trajectory(stdout, 5)
+    if "anchored_rod: 2 bodies" not in stderr:
+        fail("the summary should go to stderr when stdout carries the CSV")
+
+
+def case_dash():
+    """"-" is standard output."""
+    status, stdout, _ = run(["run", ROD, "--frames", "5", "--trajectory", "-"])
+    if status != 0:
+        fail("exit status %d" % status)
+    expect_trajectory(stdout, 5)
+    status, _, stderr = run(["run", ROD, "--trajectory", "-", "--joints", "/dev/stdout"])
+    expect_one_line_error(status, "", stderr, 2, "same file")
+
+
+def case_closed_pipe():
+    """`meff run ... --trajectory /dev/stdout | head -1`: once the reader is gone the run stops
+    with one line on stderr naming the output and the broken pipe, exit status 1."""
+    process = subprocess.Popen([MEFF, "run", ROD, "--frames", "100000000", "--trajectory",
+                                "/dev/stdout"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True)
+    first = process.stdout.readline()
+    process.stdout.close()
+    try:
+        status = process.wait(timeout=60)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        fail("the run went on after its output was closed")
+    stderr = process.stderr.read()
+    print("first line %r, status %d, stderr %r" % (first, status, stderr))
+    if first.strip() != HEADER:
+        fail("the first line is not the header")
+    expect_one_line_error(status, "", stderr, 1, "/dev/stdout", "Broken pipe")
+
+
+def case_symlink():
+    """A symbolic link given as output: its target is replaced whole, the link kept."""
+    target = os.path.join(WORK, "target.csv")
+    link = os.path.join(WORK, "link.csv")
+    with open(target, "w") as stream:
+        stream.write("old\n")
+    os.chmod(target, 0o640)
+    os.symlink("target.csv", link)
+    status, _, _ = run(["run", ROD, "--frames", "5", "--trajectory", link])
+    if status != 0:
+        fail("exit status %d" % status)
+    if not os.path.islink(link) or os.readlink(link) != "target.csv":
+        fail("the link was replaced")
+    with open(target) as stream:
+        expect_trajectory(stream.read(), 5)
+    if stat.S_IMODE(os.stat(target).st_mode) != 0o640:
+        fail("the target lost its permissions")
+    # A link to a file that does not exist yet: the file is created, the link kept.
+    dangling = os.path.join(WORK, "dangling.csv")
+    os.symlink(os.path.join(WORK, "new.csv"), dangling)
+    status, _, _ = run(["run", ROD, "--frames", "5", "--trajectory", dangling])
+    if status != 0 or not os.path.islink(dangling):
+        fail("a dangling link was not written through")
+    with open(os.path.join(WORK, "new.csv")) as stream:
+        expect_trajectory(stream.read(), 5)
+    expect_no_leftovers()
+
+
+# --- finding 2: failures of the output path are one line, never an abort --------------------
+
+def case_symlink_loop():
+    """Loops of symbolic links, as the output and in its directory: exit status 2, one line."""
+    os.symlink("loop2", os.path.join(WORK, "loop1"))
+    os.symlink("loop1", os.path.join(WORK, "loop2"))
+    for output in (os.path.join(WORK, "loop1"), os.path.join(WORK, "loop1", "out.csv")):
+        status, stdout, stderr = run(["run", ROD, "--frames", "5", "--trajectory", output])
+        expect_one_line_error(status, stdout, stderr, 2, output, "symbolic links")
+
+
+def case_unreadable_directory():
+    """An output inside a directory the user may not enter: exit status 2, one line. Root
+    ignores permissions, so as root the tool runs without the capabilities that let it."""
+    locked = os.path.join(WORK, "locked")
+    os.mkdir(locked)
+    os.chmod(locked, 0)
+    prefix = []
+    if os.geteuid() == 0:
+        prefix = ["setpriv", "--bounding-set", "-dac_override,-dac_read_search", "--"]
+    output = os.path.join(locked, "sub", "out.csv")
+    done = subprocess.run(prefix + [MEFF, "run", ROD, "--frames", "5", "--trajectory", output],
+                          capture_output=True, text=True, timeout=60)
+    os.chmod(locked, 0o700)
+    print("status %d, stderr %r" % (done.returncode, done.stderr))
+    expect_one_line_error(done.returncode, done.stdout, done.stderr, 2, output,
+                          "Permission denied")
+
+
+# --- finding 9: rough edges -----------------------------------------------------------------
+
+def interrupted(signal_number):
+    """A long run writing three outputs, stopped by a signal once its temporaries exist: the
+    signal ends it (as the signal would) and nothing is left behind."""
+    outputs = [os.path.join(WORK, name + ".csv") for name in ("t", "c", "j")]
+    process = subprocess.Popen([MEFF, "run", ROD, "--frames", "100000000", "--trajectory",
+                                outputs[0], "--contacts", outputs[1], "--joints", outputs[2]],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    deadline = time.time() + 60
+    while len(leftovers()) < 3 and time.time() < deadline and process.poll() is None:
+        time.sleep(0.05)
+    if len(leftovers()) < 3:
+        process.kill()
+        fail("the run did not start writing its three outputs")
+    time.sleep(0.3)  # well into the run
+    process.send_signal(signal_number)
+    status = process.wait(timeout=60)
+    print("status %d, left: %s" % (status, os.listdir(WORK)))
+    if status != -signal_number:
+        fail("status %d: the run should end by the signal (%d)" % (status, -signal_number))
+    expect_no_leftovers()
+    if any(os.path.exists(path) for path in outputs):
+        fail("an interrupted run wrote an output")
+
+
+def case_sigterm():
+    interrupted(signal.SIGTERM)
+
+
+def case_sigint():
+    interrupted(signal.SIGINT)
+
+
+def case_dev_zero():
+    """An endless file as the scene: refused, not read until memory runs out."""
+    status, stdout, stderr = run(["run", "/dev/zero"], timeout=60)
+    expect_one_line_error(status, stdout, stderr, 2, "/dev/zero", "not a scene file")
+
+
+def case_validate_unwritable_report():
+    """A report folder that cannot be written is bad input before anything runs: exit status
+    2, one line, no scene validated (as `meff run` and `meff render` do)."""
+    blocker = os.path.join(WORK, "file")
+    with open(blocker, "w") as stream:
+        stream.write("a file, so nothing can be created below it\n")
+    report = os.path.join(blocker, "reports")
+    status, stdout, stderr = run(["validate", STACK, "--report", report, "--no-plot"])
+    expect_one_line_error(status, stdout, stderr, 2, report)
+    if stdout:
+        fail("something ran: %r" % stdout)
+
+
+def case_bench_threads():
+    """--threads is checked up front: exit status 2, one line naming the option."""
+    for threads in ("0", "1.5"):
+        status, stdout, stderr = run(["bench", STACK, "--threads", threads, "--runs", "1",
+                                      "--steps", "2"])
+        if status != 2 or "--threads" not in stderr or stdout:
+            fail("--threads %s: status %d" % (threads, status))
+
+
+def main():
+    if not os.path.isdir(WORK):
+        os.makedirs(WORK)
+    for name in os.listdir(WORK):
+        path = os.path.join(WORK, name)
+        if os.path.isdir(path) and not os.path.islink(path):
+            os.chmod(path, 0o700)
+            subprocess.run(["rm", "-rf", path], check=True)
+        else:
+            os.remove(path)
+    case = globals().get("case_" + CASE)
+    if case is None:
+        fail("no case %r" % CASE)
+    case()
+    print("PASS")
+
+
+main()
