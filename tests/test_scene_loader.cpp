@@ -86,10 +86,10 @@ TEST_CASE("A minimal scene gets every default", "[scene]")
     CHECK(scene.world.gravity.y == -10);
     CHECK(scene.world.dt == 1.0 / 60.0);
     CHECK(scene.world.frames == 240);
-    CHECK(scene.world.velocityIterations == 8);
-    CHECK(scene.world.positionIterations == 3);
-    CHECK(scene.world.warmStarting);
-    CHECK(scene.world.blockSolver);
+    CHECK(scene.world.solver.velocityIterations == 8);
+    CHECK(scene.world.solver.positionIterations == 3);
+    CHECK(scene.world.solver.warmStarting);
+    CHECK(scene.world.solver.blockSolver);
     CHECK_FALSE(scene.world.allowSleep);
     CHECK_FALSE(scene.world.continuous);
     CHECK_FALSE(scene.camera.has_value());
@@ -521,4 +521,31 @@ TEST_CASE("Scene files: weld, motor and mouse joints load their fields", "[scene
     CHECK(heldWorld.world.GetPosition(box).x == Approx(3).margin(1e-5));
     CHECK(heldWorld.world.GetPosition(box).y == Approx(1).margin(1e-5));
     CHECK(heldWorld.world.GetAngle(box) == Approx(0.4).margin(1e-5));
+}
+
+TEST_CASE("Scene: world.solver chooses the back end; graph_coloring is the older spelling",
+          "[scene][solver]")
+{
+    const auto kindOf = [](const std::string& world)
+    {
+        return ParseScene(R"({ "meff_scene": 1, "world": )" + world + R"(, "bodies": [] })",
+                          "x.json")
+            .world.solver.kind;
+    };
+    CHECK(kindOf("{}") == SolverKind::Box2D);
+    CHECK(kindOf(R"({"solver": "box2d"})") == SolverKind::Box2D);
+    CHECK(kindOf(R"({"solver": "colour"})") == SolverKind::Colour);
+    CHECK(kindOf(R"({"graph_coloring": true})") == SolverKind::Colour);
+    CHECK(kindOf(R"({"graph_coloring": false})") == SolverKind::Box2D);
+    CHECK(kindOf(R"({"solver": "colour", "graph_coloring": true})") == SolverKind::Colour);
+
+    const auto errorsOf = [](const std::string& world)
+    { return ErrorsOf(R"({ "meff_scene": 1, "world": )" + world + R"(, "bodies": [] })"); };
+    CHECK(errorsOf(R"({"solver": "colour"})").empty());
+    CHECK(errorsOf(R"({"solver": "fast"})") ==
+          Messages{R"(x.json: world.solver: must be one of "box2d", "colour", got "fast")"});
+    CHECK(
+        errorsOf(R"({"solver": "box2d", "graph_coloring": true})") ==
+        Messages{
+            R"(x.json: world.graph_coloring: true means "solver": "colour", but "solver" is "box2d", got true)"});
 }

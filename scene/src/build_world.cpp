@@ -27,13 +27,7 @@ WorldDef MakeWorldDef(const SceneWorldSettings& settings)
 {
     WorldDef def;
     def.gravity = ToVec2(settings.gravity);
-    def.solver.velocityIterations = settings.velocityIterations;
-    def.solver.positionIterations = settings.positionIterations;
-    def.solver.warmStarting = settings.warmStarting;
-    def.solver.blockSolver = settings.blockSolver;
-    def.solver.blockJoints = settings.blockJoints;
-    def.solver.restitutionFromStepStart = settings.restitutionFromStepStart;
-    def.solver.graphColoring = settings.graphColoring;
+    def.solver = settings.solver;
     def.allowSleep = settings.allowSleep;
     def.continuous = settings.continuous;
     return def;

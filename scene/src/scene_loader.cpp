@@ -121,23 +121,52 @@ Vec2 ToEngine(SceneVec2 v)
     return {Real(v.x), Real(v.y)};
 }
 
+/// "solver": "box2d" (default), "colour" or "soft_step"; "graph_coloring": true is the older
+/// spelling of "colour" and may stand alone or beside "solver": "colour".
+void ReadSolverKind(ObjectReader& reader, SolverSettings& solver)
+{
+    constexpr SolverKind kinds[] = {SolverKind::Box2D, SolverKind::Colour};
+    std::optional<std::size_t> chosen;
+    if (reader.Find("solver") != nullptr)
+    {
+        chosen = ReadChoice(reader, "solver", {SolverKindName(kinds[0]), SolverKindName(kinds[1])});
+    }
+    if (chosen)
+    {
+        solver.kind = kinds[*chosen];
+    }
+    const std::optional<bool> coloured = reader.Boolean("graph_coloring", false);
+    if (coloured && *coloured)
+    {
+        if (chosen && solver.kind != SolverKind::Colour)
+        {
+            reader.Fail("graph_coloring",
+                        std::string("true means \"solver\": \"colour\", but \"solver\" is \"") +
+                            SolverKindName(solver.kind) + "\"");
+            return;
+        }
+        solver.kind = SolverKind::Colour;
+    }
+}
+
 void ReadWorld(ObjectReader& reader, SceneWorldSettings& world)
 {
     const SceneWorldSettings defaults;
     Assign(world.gravity, reader.Vector("gravity", defaults.gravity));
     Assign(world.dt, ReadPositive(reader, "dt", defaults.dt));
     Assign(world.frames, reader.Integer("frames", defaults.frames, 0, INT_MAX));
-    Assign(world.velocityIterations,
-           reader.Integer("velocity_iterations", defaults.velocityIterations, 1, 1000));
+    ReadSolverKind(reader, world.solver);
+    SolverSettings& solver = world.solver;
+    Assign(solver.velocityIterations,
+           reader.Integer("velocity_iterations", defaults.solver.velocityIterations, 1, 1000));
     // Zero position iterations is legitimate: it shows what the velocity solver alone does.
-    Assign(world.positionIterations,
-           reader.Integer("position_iterations", defaults.positionIterations, 0, 1000));
-    Assign(world.warmStarting, reader.Boolean("warm_starting", defaults.warmStarting));
-    Assign(world.blockSolver, reader.Boolean("block_solver", defaults.blockSolver));
-    Assign(world.blockJoints, reader.Boolean("block_joints", defaults.blockJoints));
-    Assign(world.restitutionFromStepStart,
-           reader.Boolean("restitution_from_step_start", defaults.restitutionFromStepStart));
-    Assign(world.graphColoring, reader.Boolean("graph_coloring", defaults.graphColoring));
+    Assign(solver.positionIterations,
+           reader.Integer("position_iterations", defaults.solver.positionIterations, 0, 1000));
+    Assign(solver.warmStarting, reader.Boolean("warm_starting", defaults.solver.warmStarting));
+    Assign(solver.blockSolver, reader.Boolean("block_solver", defaults.solver.blockSolver));
+    Assign(solver.blockJoints, reader.Boolean("block_joints", defaults.solver.blockJoints));
+    Assign(solver.restitutionFromStepStart,
+           reader.Boolean("restitution_from_step_start", defaults.solver.restitutionFromStepStart));
     Assign(world.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
     Assign(world.continuous, reader.Boolean("continuous", defaults.continuous));
     reader.Finish();

@@ -102,13 +102,14 @@ namespace
 
 Scene WithIterations(Scene scene, int velocityIterations)
 {
-    scene.world.velocityIterations = velocityIterations;
+    scene.world.solver.velocityIterations = velocityIterations;
     return scene;
 }
 
 std::string Label(const Scene& scene)
 {
-    return scene.name + " (" + std::to_string(scene.world.velocityIterations) + " iterations)";
+    return scene.name + " (" + std::to_string(scene.world.solver.velocityIterations) +
+           " iterations)";
 }
 
 /// Box on box: the smallest distance between the two centres over the run (1.015 m as built).
@@ -159,7 +160,7 @@ TEST_CASE("mass ratio 100:1: the heavy box stays on the light box for 30 s (8 it
           "[extreme][mass_ratio]")
 {
     const Scene scene = LoadExtreme("mass_ratio_100");
-    REQUIRE(scene.world.velocityIterations == 8);
+    REQUIRE(scene.world.solver.velocityIterations == 8);
     MeffEngine meff(scene);
     Box2DEngine box2d(scene);
     const BoxOnBox m = RunBoxOnBox(meff, scene);
@@ -706,8 +707,9 @@ TEST_CASE("long run: a ball with restitution 1 never gains energy over 10^5 step
                      highest = std::max(highest, last);
                  });
         Report(run.name, engine,
-               std::string(run.world.restitutionFromStepStart ? "restitution from step start: "
-                                                              : "Box2D profile: ") +
+               std::string(run.world.solver.restitutionFromStepStart
+                               ? "restitution from step start: "
+                               : "Box2D profile: ") +
                    Format("energy change over 1e5 steps: final %+.3g %%, range [%+.3g %%, "
                           "%+.3g %%] of the initial energy",
                           100 * last / e0, 100 * lowest / e0, 100 * highest / e0));
@@ -716,7 +718,7 @@ TEST_CASE("long run: a ball with restitution 1 never gains energy over 10^5 step
     };
 
     Scene fromStepStart = scene;
-    fromStepStart.world.restitutionFromStepStart = true;
+    fromStepStart.world.solver.restitutionFromStepStart = true;
     MeffEngine meff(fromStepStart);
     // Float rounding of a 5 m height and a 10 m/s speed is ~1e-6 of the energy per step; 1e-4
     // allows that to accumulate over a bounce.

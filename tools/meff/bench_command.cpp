@@ -33,7 +33,7 @@ struct BenchOptions
     std::optional<int> steps;
     int runs = 5;
     int threads = 1;
-    bool graphColoring = false; ///< meff solves contacts by colour (Box2D keeps its order)
+    std::optional<SolverKind> solver; ///< meff's back end, instead of the scene's
     std::string jsonPath;
 };
 
@@ -178,9 +178,9 @@ int RunBench(const BenchOptions& options)
         {
             return kExitBadInput;
         }
-        if (options.graphColoring)
+        if (options.solver)
         {
-            scene->world.graphColoring = true;
+            scene->world.solver.kind = *options.solver; // Box2D keeps its own order
         }
         scenes.push_back(std::move(*scene));
     }
@@ -282,9 +282,12 @@ Command AddBenchCommand(CLI::App& parent)
         ->check(CLI::Range(1, 1000));
     app->add_option("--threads", options->threads, "Threads for meff (only 1 for now)");
     app->add_option("--json", options->jsonPath, "Also write the results to this JSON file");
-    app->add_flag("--graph-coloring", options->graphColoring,
-                  "meff solves contacts colour by colour, four at a time (SIMD); its results "
-                  "then differ from Box2D's (see |dp| end)");
+    AddSolverOption(*app, options->solver);
+    // The older spelling of `--solver colour`.
+    app->add_flag_callback(
+           "--graph-coloring", [options] { options->solver = SolverKind::Colour; },
+           "The same as --solver colour: meff's results then differ from Box2D's (|dp| end)")
+        ->excludes("--solver");
     return {app, [options] { return RunBench(*options); }};
 }
 

@@ -47,6 +47,10 @@ Command AddBenchCommand(CLI::App& parent);
 /// `meff sweep SCENE.json [--out DIR] [--quick] [--seconds S] [--runs R] [--no-plot]`
 Command AddSweepCommand(CLI::App& parent);
 
+/// Adds `--solver box2d|colour`: the solver back end to run instead of the scene's
+/// (world.solver); `kind` stays empty when the option is not given.
+CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind);
+
 /// Loads a scene; on failure prints every problem to stderr, one per line, and returns nullopt.
 std::optional<Scene> LoadSceneOrReport(const std::string& path);
 

@@ -8,6 +8,7 @@
 #include <climits>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -286,6 +287,20 @@ int Run(const RunOptions& options)
 }
 
 } // namespace
+
+CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind)
+{
+    std::map<std::string, SolverKind> names;
+    for (const SolverKind k : {SolverKind::Box2D, SolverKind::Colour})
+    {
+        names.emplace(SolverKindName(k), k);
+    }
+    return app
+        .add_option("--solver", kind,
+                    "Solver back end instead of the scene's world.solver: box2d (Box2D "
+                    "2.4.1, bit-identical), colour (Box2D's rows by colour, SIMD)")
+        ->transform(CLI::CheckedTransformer(names));
+}
 
 std::optional<Scene> LoadSceneOrReport(const std::string& path)
 {

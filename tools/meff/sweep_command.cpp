@@ -138,10 +138,10 @@ Scene WithSetting(const Scene& scene, const Setting& setting)
 {
     Scene copy = scene;
     copy.world.dt = 1.0 / setting.hz;
-    copy.world.velocityIterations = setting.velocityIterations;
-    copy.world.positionIterations = setting.positionIterations;
-    copy.world.blockSolver = setting.blockSolver;
-    copy.world.warmStarting = setting.warmStarting;
+    copy.world.solver.velocityIterations = setting.velocityIterations;
+    copy.world.solver.positionIterations = setting.positionIterations;
+    copy.world.solver.blockSolver = setting.blockSolver;
+    copy.world.solver.warmStarting = setting.warmStarting;
     return copy;
 }
 
@@ -1098,8 +1098,8 @@ int RunSweep(const SweepOptions& options)
                                    64,
                                    16,
                                    8 * fastest,
-                                   scene.world.blockSolver,
-                                   scene.world.warmStarting};
+                                   scene.world.solver.blockSolver,
+                                   scene.world.solver.warmStarting};
             const Scene referenceScene = WithSetting(scene, settings);
             const auto start = std::chrono::steady_clock::now();
             const Trace reference = Measure<MeffEngine>(referenceScene, seconds, std::nullopt);

@@ -2,8 +2,8 @@
 #include "collision/broad_phase.h"
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
-#include "dynamics/contact_solver.h"
 #include "dynamics/shape.h"
+#include "solvers/box2d/contact_solver.h"
 #include "meff/collision.h"
 #include "meff/ray_cast.h"
 #include "meff/world.h"
@@ -101,7 +101,7 @@ void BM_ContactRowUpdate(benchmark::State& state)
     data.positions = positions.data();
     data.velocities = velocities.data();
     ContactSolver solver;
-    solver.Prepare(indices, contacts, bodies, data);
+    solver.Prepare({indices, contacts, bodies}, data);
     for (auto _ : state)
     {
         solver.SolveVelocities(data);

@@ -291,13 +291,13 @@ class Box2DMirror::Listener : public b2ContactListener
 
 Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
     : m_scene(scene), m_dt(static_cast<float>(scene.world.dt)),
-      m_blockSolve(blockSolver.value_or(scene.world.blockSolver)),
+      m_blockSolve(blockSolver.value_or(scene.world.solver.blockSolver)),
       m_world(std::make_unique<b2World>(ToB2(scene.world.gravity))),
       m_listener(std::make_unique<Listener>())
 {
     const SceneWorldSettings& settings = scene.world;
     m_world->SetAllowSleeping(settings.allowSleep);
-    m_world->SetWarmStarting(settings.warmStarting);
+    m_world->SetWarmStarting(settings.solver.warmStarting);
     m_world->SetContinuousPhysics(settings.continuous);
     m_world->SetSubStepping(false);
     m_world->SetAutoClearForces(true);
@@ -339,7 +339,8 @@ void Box2DMirror::Step()
 {
     m_listener->Clear();
     const BlockSolveScope scope(m_blockSolve);
-    m_world->Step(m_dt, m_scene.world.velocityIterations, m_scene.world.positionIterations);
+    m_world->Step(m_dt, m_scene.world.solver.velocityIterations,
+                  m_scene.world.solver.positionIterations);
 }
 
 FrameSample Box2DMirror::Sample() const

@@ -77,7 +77,7 @@ void Track(RunMaximum& maximum, double value, int frame, const std::string& wher
 std::vector<std::string> MirrorNotes(const Scene& scene, const RunOptions& options)
 {
     std::vector<std::string> notes;
-    if (!scene.world.blockJoints)
+    if (!scene.world.solver.blockJoints)
     {
         notes.emplace_back("world.block_joints is false: Box2D 2.4.1 always solves a joint's "
                            "coupled rows as one block (revolute, prismatic and mouse points, "
@@ -85,11 +85,11 @@ std::vector<std::string> MirrorNotes(const Scene& scene, const RunOptions& optio
                            "agree");
     }
     if (options.meffVelocityIterations &&
-        *options.meffVelocityIterations != scene.world.velocityIterations)
+        *options.meffVelocityIterations != scene.world.solver.velocityIterations)
     {
         notes.emplace_back("meff runs " + std::to_string(*options.meffVelocityIterations) +
                            " velocity iterations, Box2D " +
-                           std::to_string(scene.world.velocityIterations) +
+                           std::to_string(scene.world.solver.velocityIterations) +
                            " (a deliberate difference: this run is expected to fail)");
     }
     return notes;
@@ -164,10 +164,10 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
     result.sourcePath = scene.sourcePath;
     result.frames = options.frames.value_or(scene.world.frames);
     result.tolerances = TolerancesOf(scene.tolerances);
-    result.blockSolver = options.blockSolver.value_or(scene.world.blockSolver);
-    result.box2dVelocityIterations = scene.world.velocityIterations;
+    result.blockSolver = options.blockSolver.value_or(scene.world.solver.blockSolver);
+    result.box2dVelocityIterations = scene.world.solver.velocityIterations;
     result.meffVelocityIterations =
-        options.meffVelocityIterations.value_or(scene.world.velocityIterations);
+        options.meffVelocityIterations.value_or(scene.world.solver.velocityIterations);
     result.chaotic = scene.validation.chaotic;
     result.horizonFrames = scene.validation.horizonFrames;
     result.notes = MirrorNotes(scene, options);

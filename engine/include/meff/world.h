@@ -53,14 +53,37 @@ struct Tolerances
 /// restitution threshold (m/s) are yours to give in the same units.
 Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter);
 
+/// Which solver back end steps the world (SolverSettings::kind). Each is one way of trading
+/// speed for accuracy; all solve every constraint row with the scalar effective mass
+/// 1/k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB (docs/effective-mass.md).
+enum class SolverKind
+{
+    /// Box2D 2.4.1's step: velocityIterations sequential-impulse sweeps in island order, then
+    /// positionIterations non-linear Gauss-Seidel sweeps. Bit-identical to Box2D 2.4.1.
+    Box2D,
+    /// The same rows, effective masses, iteration counts, block solvers and position pass as
+    /// Box2D, visited colour by colour (Box2D v3's graph colouring): an island's contacts, and
+    /// apart from them its revolute joints without limit or motor (with blockJoints on), are
+    /// sorted into colours that share no moving body, and each colour is solved four
+    /// constraints at a time in SIMD lanes. Another Gauss-Seidel order, so results agree with
+    /// Box2D 2.4.1 only up to that order's effect (settled-state checks), not bit for bit.
+    /// Other joints keep the island order after the lanes. Without sleep (WorldDef::allowSleep
+    /// off) and with every moving body awake, the whole world is solved as one island,
+    /// gathered from the arrays instead of searched: the position pass then stops when the
+    /// whole world is within tolerance, not island by island. A moving body kept asleep
+    /// (BodyDef::awake false, SetAwake(false)) brings back the island search.
+    Colour,
+};
+
 /// How the solver works. Every member may be changed between steps.
 struct SolverSettings
 {
-    int velocityIterations = 8; ///< sequential-impulse sweeps per step, ≥ 1
-    int positionIterations = 3; ///< non-linear Gauss-Seidel sweeps per step, ≥ 0
+    SolverKind kind = SolverKind::Box2D; ///< the back end (see SolverKind)
+    int velocityIterations = 8; ///< Box2D, Colour: sequential-impulse sweeps per step, ≥ 1
+    int positionIterations = 3; ///< Box2D, Colour: non-linear Gauss-Seidel sweeps per step, ≥ 0
     bool warmStarting = true;   ///< start each step from last step's impulses
-    /// Solve a two-point manifold's normal rows together as a 2×2 block (Box2D's block
-    /// solver). Off: every row alone with its scalar effective mass.
+    /// Box2D, Colour: solve a two-point manifold's normal rows together as a 2×2 block
+    /// (Box2D's block solver). Off: every row alone with its scalar effective mass.
     bool blockSolver = true;
     /// Solve a joint's coupled rows as one block (Box2D): the revolute and mouse point (2×2),
     /// the prismatic's perpendicular and angular rows (2×2, with its axial limit row in the
@@ -72,20 +95,10 @@ struct SolverSettings
     /// more speed than arrived and e = 1 gains energy bounce after bounce. On: at the start of
     /// the step, so restitution never adds energy (results then differ from Box2D's).
     bool restitutionFromStepStart = false;
-    /// Solve by colour (Box2D v3's graph colouring): an island's contacts, and apart from them
-    /// its revolute joints without limit or motor (with blockJoints on), are sorted into
-    /// colours that share no moving body, and each colour is solved four constraints at a time
-    /// in SIMD lanes — same rows, effective masses, iteration counts and block solvers, but
-    /// another Gauss-Seidel order, so results agree with Box2D 2.4.1 only up to that order's
-    /// effect (settled-state checks), not bit for bit. Other joints, and continuous
-    /// collision's sub-steps, keep the island order. Without sleep (WorldDef::allowSleep off)
-    /// and with every moving body awake, the whole world is solved as one island, gathered
-    /// from the arrays instead of searched: the position pass then stops when the whole world
-    /// is within tolerance, not island by island. A moving body kept asleep (BodyDef::awake
-    /// false, SetAwake(false)) brings back the island search. Off (default): Box2D 2.4.1's
-    /// order, bit-identical.
-    bool graphColoring = false;
 };
+
+/// The name of a solver back end as scene files and the tools write it: "box2d", "colour".
+const char* SolverKindName(SolverKind kind);
 
 /// Everything needed to create a world.
 struct WorldDef
@@ -103,6 +116,8 @@ struct WorldDef
     /// kinematic shapes (bullets: with dynamic shapes too) and re-solved over the rest of the
     /// step, so they do not tunnel through thin geometry. Off: only the discrete step runs,
     /// and a body that moves further than a shape's thickness in one step can pass through it.
+    /// Whatever the solver back end, the time-of-impact sub-steps are Box2D 2.4.1's (its
+    /// position pass on the pair, then its velocity sweeps in island order).
     bool continuous = true;
 };
 

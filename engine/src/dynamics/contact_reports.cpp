@@ -1,14 +1,24 @@
 #include "dynamics/contact_reports.h"
 
+#include "dynamics/events.h"
 #include "dynamics/world_state.h"
 
 namespace meff::detail
 {
 
-void RecordContactReports(WorldState& world)
+void RecordContactReports(WorldState& world, std::span<const SolvedContact> solved)
 {
-    const std::span<const SolvedContact> solved = world.contactSolver.SolvedContacts();
     world.solvedContacts.insert(world.solvedContacts.end(), solved.begin(), solved.end());
+}
+
+void WorldContactSink::Record(std::span<const SolvedContact> solved, bool anyHitEvents,
+                              const StepContext& step)
+{
+    RecordContactReports(m_world, solved);
+    if (anyHitEvents)
+    {
+        ReportHitEvents(m_world, solved, step);
+    }
 }
 
 void BuildContactReports(WorldState& world)

@@ -7,14 +7,32 @@
 // nothing.
 #pragma once
 
+#include "solvers/solver.h"
+
+#include <span>
+
 namespace meff::detail
 {
 
 struct WorldState;
+struct SolvedContact;
 
-/// The report stage of an island or a time-of-impact sub-step: records the contacts the
-/// contact solver has just solved (after ContactSolver::CollectResults).
-void RecordContactReports(WorldState& world);
+/// The report stage of an island or a time-of-impact sub-step: records the contacts a solver
+/// has just solved.
+void RecordContactReports(WorldState& world, std::span<const SolvedContact> solved);
+
+/// The world's end of SolvedContactSink: records the solved contacts for the reports, and
+/// turns them into hit events (events.h).
+class WorldContactSink final : public SolvedContactSink
+{
+  public:
+    explicit WorldContactSink(WorldState& world) : m_world(world) {}
+    void Record(std::span<const SolvedContact> solved, bool anyHitEvents,
+                const StepContext& step) override;
+
+  private:
+    WorldState& m_world;
+};
 
 /// Turns the recorded contacts into ContactPointReports at the bodies' current transforms
 /// (those the step left them at, as long as every change to them calls this first).

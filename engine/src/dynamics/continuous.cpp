@@ -19,6 +19,7 @@
 #include "dynamics/contact_reports.h"
 #include "dynamics/events.h"
 #include "dynamics/world_state.h"
+#include "solvers/box2d/island_step.h"
 
 namespace meff::detail
 {
@@ -264,7 +265,8 @@ void BuildImpactIsland(WorldState& world, std::int32_t contactIndex, Real alpha,
     }
 }
 
-/// Solves the mini-island over the rest of the step, [alpha, 1] (b2Island::SolveTOI).
+/// Solves the mini-island over the rest of the step, [alpha, 1] (b2Island::SolveTOI), with
+/// Box2D's contact rows whatever the back end: the event has a handful of contacts.
 void SolveImpactIsland(WorldState& world, Island& island, const StepContext& step, Real alpha)
 {
     StepContext subStep = step;
@@ -272,8 +274,7 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
     subStep.invDt = Real(1) / subStep.dt;
     subStep.dtRatio = 1;
     subStep.solver.positionIterations = kToiPositionIterations;
-    subStep.solver.warmStarting = false;  // the discrete step already applied warm starting
-    subStep.solver.graphColoring = false; // a handful of contacts: Box2D's order
+    subStep.solver.warmStarting = false; // the discrete step already applied warm starting
 
     const std::size_t count = island.bodies.size();
     island.positions.resize(count);
@@ -285,12 +286,14 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
         island.velocities[i] = {body.linearVelocity, body.angularVelocity};
     }
     SolverData data{subStep, island.positions.data(), island.velocities.data()};
+    ContactSolver& contacts = world.toiSolver;
+    const IslandContacts islandContacts{island.contacts, world.contacts, world.bodies};
 
     // Push the pair (solver indices 0 and 1) out of overlap; the neighbours do not move.
-    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, data);
+    contacts.Prepare(islandContacts, data);
     for (int i = 0; i < subStep.solver.positionIterations; ++i)
     {
-        if (world.contactSolver.SolveToiPositions(data, 0, 1))
+        if (contacts.SolveToiPositions(data, 0, 1))
         {
             break;
         }
@@ -306,17 +309,18 @@ void SolveImpactIsland(WorldState& world, Island& island, const StepContext& ste
 
     // Velocity constraints at the corrected poses. Impulses start from zero and are not stored
     // back: impact impulses can be large and would spoil the next step's warm start.
-    world.contactSolver.Prepare(island.contacts, world.contacts, world.bodies, data);
+    contacts.Prepare(islandContacts, data);
     for (int i = 0; i < subStep.solver.velocityIterations; ++i)
     {
-        world.contactSolver.SolveVelocities(data);
+        contacts.SolveVelocities(data);
     }
 
     IntegratePositions(island, subStep);
-    FinishBodies(world, island);
-    world.contactSolver.CollectResults();
-    RecordContactReports(world);
-    ReportHitEvents(world, subStep);
+    WorldContactSink sink(world);
+    SolverWorld view = SolverView(world, sink);
+    FinishBodies(view, island);
+    contacts.CollectResults();
+    sink.Record(contacts.SolvedContacts(), contacts.AnyHitEvents(), subStep);
 }
 
 /// Clears the island flags, moves the broad-phase boxes of the island's dynamic bodies and

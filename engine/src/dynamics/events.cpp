@@ -102,16 +102,13 @@ void RunPreSolve(WorldState& world, std::int32_t contactIndex)
     }
 }
 
-void ReportHitEvents(WorldState& world, const StepContext& step)
+void ReportHitEvents(WorldState& world, std::span<const SolvedContact> solvedContacts,
+                     const StepContext& step)
 {
     const Real threshold = step.tolerances.hitEventThreshold;
     // Marks the contacts that already have an event in this step (stepCount advances after it).
     const std::uint64_t stamp = world.stepCount + 1;
-    if (!world.contactSolver.AnyHitEvents())
-    {
-        return; // no contact of the island asked for them: no contact needs reading
-    }
-    for (const SolvedContact& solved : world.contactSolver.SolvedContacts())
+    for (const SolvedContact& solved : solvedContacts)
     {
         Contact& contact = world.contacts[solved.contactIndex];
         if ((contact.flags & Contact::HitEvents) == 0)

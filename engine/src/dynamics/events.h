@@ -5,12 +5,14 @@
 #include "dynamics/solver_types.h"
 
 #include <cstdint>
+#include <span>
 
 namespace meff::detail
 {
 
 struct WorldState;
 struct Contact;
+struct SolvedContact;
 
 /// Empties the event lists of the last step (World::Step's first stage). End events recorded
 /// after that step ended — a touching shape or body destroyed between steps — are kept, at the
@@ -25,10 +27,11 @@ void RecordTouchEnded(WorldState& world, const Contact& contact);
 /// Box2D 2.4.1's PreSolve, called by UpdateContact for a touching, non-sensor contact: asks the
 /// user's callback, if any, and disables the contact for this step when it says no.
 void RunPreSolve(WorldState& world, std::int32_t contactIndex);
-/// Hit events of the contacts the solver has just solved (an island, or a time-of-impact
-/// sub-step): for each contact with Contact::HitEvents, its fastest point whose approach speed
+/// Hit events of contacts a solver has just solved (an island, or a time-of-impact sub-step):
+/// for each contact with Contact::HitEvents, its fastest point whose approach speed
 /// before impulses exceeds the threshold and which took an impulse. One event per contact per
 /// step: a later, faster hit of the same contact in the same step replaces the earlier one.
-void ReportHitEvents(WorldState& world, const StepContext& step);
+void ReportHitEvents(WorldState& world, std::span<const SolvedContact> solved,
+                     const StepContext& step);
 
 } // namespace meff::detail

@@ -10,18 +10,11 @@ namespace meff::detail
 
 struct WorldState;
 struct Body;
-struct Island;
 
 StepContext BeginStep(WorldState& world, Real dt);
-/// Finds the islands of awake bodies (island.h) and solves each.
-void SolveIslands(WorldState& world, const StepContext& step);
-bool CanSeedIsland(const Body& body);
-void SolveIsland(WorldState& world, Island& island, const StepContext& step);
-void IntegrateVelocities(WorldState& world, Island& island, const StepContext& step);
-void IntegratePositions(Island& island, const StepContext& step);
-/// Returns true when the position pass converged (Box2D's positionSolved).
-bool CorrectPositions(WorldState& world, SolverData& data);
-void FinishBodies(WorldState& world, Island& island);
+/// Hands the awake bodies to the solver back end SolverSettings::kind chooses
+/// (solvers/solver.h).
+void Solve(WorldState& world, const StepContext& step);
 void SynchronizeShapes(WorldState& world);
 /// Moves the broad-phase boxes of one body's shapes to cover its sweep from (c0, a0) to now.
 void SynchronizeBodyShapes(WorldState& world, Body& body);
@@ -30,11 +23,6 @@ void SynchronizeBodyShapes(WorldState& world, Body& body);
 /// with its static, kinematic or bullet neighbours over the rest of the step, and repeats.
 void SolveContinuous(WorldState& world, const StepContext& step);
 void ClearForces(WorldState& world);
-/// After an island is solved (b2Island::Solve's sleep pass): advances each body's rest time
-/// and puts the whole island to sleep once every body has rested timeToSleep and the position
-/// pass converged.
-void UpdateSleep(WorldState& world, const Island& island, const StepContext& step,
-                 bool positionSolved);
 
 // Contact lifecycle
 /// Creates contacts for the broad phase's new pairs.

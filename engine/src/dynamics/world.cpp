@@ -188,6 +188,18 @@ void ValidateShapeDef(const ShapeDef& def)
 
 } // namespace
 
+const char* SolverKindName(SolverKind kind)
+{
+    switch (kind)
+    {
+    case SolverKind::Box2D:
+        return "box2d";
+    case SolverKind::Colour:
+        return "colour";
+    }
+    return "unknown";
+}
+
 Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
 {
     Require(meff::IsValid(lengthUnitsPerMeter) && lengthUnitsPerMeter > 0,
@@ -1213,6 +1225,12 @@ void World::SetSolverSettings(const SolverSettings& settings)
             {
                 return std::string("SolverSettings::positionIterations: must be >= 0, got " +
                                    std::to_string(settings.positionIterations));
+            });
+    Require(settings.kind == SolverKind::Box2D || settings.kind == SolverKind::Colour,
+            [&]
+            {
+                return "SolverSettings::kind: not a SolverKind (" +
+                       std::to_string(static_cast<int>(settings.kind)) + ")";
             });
     m_state->solver = settings;
 }

@@ -6,12 +6,13 @@
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
 #include "dynamics/contact_reports.h"
-#include "dynamics/contact_solver.h"
-#include "dynamics/island.h"
-#include "dynamics/joint_solver.h"
+#include "dynamics/joint_slot.h"
 #include "dynamics/pair_set.h"
 #include "dynamics/shape.h"
 #include "joints/joint.h"
+#include "solvers/box2d/contact_solver.h"
+#include "solvers/island.h"
+#include "solvers/solver.h"
 #include "meff/world.h"
 
 #include <cstddef>
@@ -20,16 +21,6 @@
 
 namespace meff::detail
 {
-
-struct JointSlot
-{
-    std::uint32_t generation = 0;
-    bool alive = false;
-    Joint joint;
-    std::int32_t prev = kNullIndex, next = kNullIndex; ///< world joint list, newest first
-    Edge edges[2];                                     ///< [0] on bodyA's list, [1] on bodyB's
-    bool islandFlag = false;
-};
 
 struct WorldState
 {
@@ -69,10 +60,9 @@ struct WorldState
     BroadPhase broadPhase;
     bool newShapes = false; ///< find new contacts before the next narrow phase
 
-    Island island;
-    Island toiIsland; ///< the mini-island of one time-of-impact event
-    ContactSolver contactSolver;
-    JointSolver jointSolver;
+    SolverSet solvers;       ///< the back ends (SolverSettings::kind picks one each step)
+    Island toiIsland;        ///< the mini-island of one time-of-impact event
+    ContactSolver toiSolver; ///< its contact rows: Box2D's, whatever the back end
 
     std::vector<ContactPointReport> contactReports; ///< built when read (contact_reports.h)
     std::vector<SolvedContact> solvedContacts;      ///< recorded, not yet in contactReports
@@ -91,6 +81,13 @@ struct WorldState
     std::uint64_t stepCount = 0;
     bool failed = false; ///< a step produced a non-finite state; stepping is refused
 };
+
+/// What a solver back end sees of the world (solvers/solver.h).
+inline SolverWorld SolverView(WorldState& world, SolvedContactSink& solvedContacts)
+{
+    return SolverWorld{world.bodies,  world.contacts,   world.joints,    world.bodyList,
+                       world.gravity, world.allowSleep, world.stepCount, solvedContacts};
+}
 
 /// Wakes body `bodyIndex` (see WakeBody(Body&)): the helper for any world change — a joint
 /// setter, say — that must wake the bodies it affects.

@@ -36,19 +36,14 @@ struct SceneVec2
 /// "world": gravity, time step and solver settings.
 struct SceneWorldSettings
 {
-    SceneVec2 gravity{0, -10};  ///< m/s²
-    double dt = 1.0 / 60.0;     ///< s, > 0
-    int frames = 240;           ///< steps to run, ≥ 0
-    int velocityIterations = 8; ///< 1..1000
-    int positionIterations = 3; ///< 0..1000
-    bool warmStarting = true;
-    bool blockSolver = true; ///< 2×2 block solve of two-point manifolds
-    /// meff only: block solve of joint rows (revolute, prismatic, weld, motor, mouse)
-    bool blockJoints = true;
-    bool restitutionFromStepStart = false; ///< meff only: see SolverSettings
-    bool graphColoring = false;            ///< meff only: contacts by colour (SolverSettings)
-    bool allowSleep = false;               ///< let resting islands sleep (Box2D's rules)
-    bool continuous = false;               ///< Box2D's continuous physics (time of impact)
+    SceneVec2 gravity{0, -10}; ///< m/s²
+    double dt = 1.0 / 60.0;    ///< s, > 0
+    int frames = 240;          ///< steps to run, ≥ 0
+    /// "solver" (the back end) and the solver's fields, as the engine takes them: the world is
+    /// built with exactly these (velocity iterations 1..1000, position iterations 0..1000).
+    SolverSettings solver{};
+    bool allowSleep = false; ///< let resting islands sleep (Box2D's rules)
+    bool continuous = false; ///< Box2D's continuous physics (time of impact)
 };
 
 enum class SceneShapeType

@@ -131,7 +131,7 @@ FrameErrors CompareFrames(const FrameSample& meff, const FrameSample& box2d, dou
 struct RunOptions
 {
     std::optional<int> frames;       ///< overrides scene.world.frames
-    std::optional<bool> blockSolver; ///< overrides scene.world.blockSolver in both engines
+    std::optional<bool> blockSolver; ///< overrides scene.world.solver.blockSolver in both engines
     /// meff only, to prove the comparison can fail: its velocity iterations (Box2D keeps the
     /// scene's).
     std::optional<int> meffVelocityIterations;

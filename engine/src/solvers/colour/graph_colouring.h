@@ -3,7 +3,7 @@
 // constraints can be solved at the same time — four to a SIMD group, later on several threads —
 // without two of them writing the same body. Static and kinematic bodies (zero inverse mass and
 // inertia) are only read, so any number of a colour's constraints may touch one. Contacts
-// (contact_coloring.h) and joints (joint_solver.h) are coloured apart, because they are solved
+// (contact_colouring.h) and joints (joint_solver.h) are coloured apart, because they are solved
 // in separate passes.
 #pragma once
 
@@ -20,18 +20,19 @@ namespace meff::detail
 
 /// At most this many colours (one bit each per body); constraints that find every colour taken
 /// at one of their bodies go to the overflow and are solved one by one.
-inline constexpr int kMaxColors = 64;
+inline constexpr int kMaxColours = 64;
 
-struct ConstraintColoring
+struct ConstraintColouring
 {
-    std::vector<std::int32_t> order;       ///< constraint indices, colour after colour
-    std::vector<std::int32_t> colorStarts; ///< colour c is order[colorStarts[c], colorStarts[c+1])
-    std::vector<std::int32_t> overflow;    ///< constraint indices no colour had room for
-    std::vector<std::uint64_t> bodyColors; ///< scratch: colours taken at each solver body
-    std::vector<std::int8_t> colorOf;      ///< scratch: each constraint's colour, −1 overflow
-    std::vector<std::int32_t> next;        ///< scratch: next free slot of each colour in order
+    std::vector<std::int32_t> order; ///< constraint indices, colour after colour
+    std::vector<std::int32_t>
+        colourStarts;                   ///< colour c is order[colourStarts[c], colourStarts[c+1])
+    std::vector<std::int32_t> overflow; ///< constraint indices no colour had room for
+    std::vector<std::uint64_t> bodyColours; ///< scratch: colours taken at each solver body
+    std::vector<std::int8_t> colourOf;      ///< scratch: each constraint's colour, −1 overflow
+    std::vector<std::int32_t> next;         ///< scratch: next free slot of each colour in order
 
-    int ColorCount() const { return static_cast<int>(colorStarts.size()) - 1; }
+    int ColourCount() const { return static_cast<int>(colourStarts.size()) - 1; }
 };
 
 /// True when the solver can change a body with this inverse mass (1/kg) and inverse inertia
@@ -52,55 +53,55 @@ struct ConstraintBodies
 /// `bodiesOf(i)`) takes the lowest colour free at both of its moving bodies. Within a colour,
 /// constraints keep their order. `bodyCount` bounds the solver body indices.
 template <typename BodiesOf>
-void ColorConstraints(std::size_t count, std::size_t bodyCount, BodiesOf&& bodiesOf,
-                      ConstraintColoring& out)
+void ColourConstraints(std::size_t count, std::size_t bodyCount, BodiesOf&& bodiesOf,
+                       ConstraintColouring& out)
 {
-    out.bodyColors.assign(bodyCount, 0);
-    out.colorOf.resize(count);
+    out.bodyColours.assign(bodyCount, 0);
+    out.colourOf.resize(count);
     out.overflow.clear();
 
-    int colorCount = 0;
+    int colourCount = 0;
     // Counts per colour, shifted by one so that a prefix sum turns them into colour starts.
-    out.colorStarts.assign(kMaxColors + 1, 0);
+    out.colourStarts.assign(kMaxColours + 1, 0);
     for (std::size_t i = 0; i < count; ++i)
     {
         const ConstraintBodies bodies = bodiesOf(i);
-        const std::uint64_t taken = (bodies.movesA ? out.bodyColors[bodies.indexA] : 0) |
-                                    (bodies.movesB ? out.bodyColors[bodies.indexB] : 0);
+        const std::uint64_t taken = (bodies.movesA ? out.bodyColours[bodies.indexA] : 0) |
+                                    (bodies.movesB ? out.bodyColours[bodies.indexB] : 0);
         if (taken == ~std::uint64_t{0})
         {
-            out.colorOf[i] = -1;
+            out.colourOf[i] = -1;
             out.overflow.push_back(static_cast<std::int32_t>(i));
             continue;
         }
-        const int color = std::countr_one(taken);
-        const std::uint64_t bit = std::uint64_t{1} << color;
+        const int colour = std::countr_one(taken);
+        const std::uint64_t bit = std::uint64_t{1} << colour;
         if (bodies.movesA)
         {
-            out.bodyColors[bodies.indexA] |= bit;
+            out.bodyColours[bodies.indexA] |= bit;
         }
         if (bodies.movesB)
         {
-            out.bodyColors[bodies.indexB] |= bit;
+            out.bodyColours[bodies.indexB] |= bit;
         }
-        out.colorOf[i] = static_cast<std::int8_t>(color);
-        ++out.colorStarts[color + 1];
-        colorCount = std::max(colorCount, color + 1);
+        out.colourOf[i] = static_cast<std::int8_t>(colour);
+        ++out.colourStarts[colour + 1];
+        colourCount = std::max(colourCount, colour + 1);
     }
 
     // Counting sort by colour, stable: a colour's constraints keep their order.
-    out.colorStarts.resize(colorCount + 1);
-    for (int c = 0; c < colorCount; ++c)
+    out.colourStarts.resize(colourCount + 1);
+    for (int c = 0; c < colourCount; ++c)
     {
-        out.colorStarts[c + 1] += out.colorStarts[c];
+        out.colourStarts[c + 1] += out.colourStarts[c];
     }
     out.order.resize(count - out.overflow.size());
-    out.next.assign(out.colorStarts.begin(), out.colorStarts.end() - 1);
+    out.next.assign(out.colourStarts.begin(), out.colourStarts.end() - 1);
     for (std::size_t i = 0; i < count; ++i)
     {
-        if (out.colorOf[i] >= 0)
+        if (out.colourOf[i] >= 0)
         {
-            out.order[out.next[out.colorOf[i]]++] = static_cast<std::int32_t>(i);
+            out.order[out.next[out.colourOf[i]]++] = static_cast<std::int32_t>(i);
         }
     }
 }

@@ -1,14 +1,14 @@
-// Revolute joints by colour (SolverSettings::graphColoring): the joints whose only rows are the
-// point constraint (no limit, no motor — a hinge or a chain link, the bulk of a cloth or a rope)
-// are coloured (graph_coloring.h) and solved four at a time in SIMD lanes, with the same 2×2
+// Revolute joints in SIMD lanes, colour by colour (SolverKind::Colour): the joints whose only rows
+// are the point constraint (no limit, no motor — a hinge or a chain link, the bulk of a cloth or a
+// rope) are coloured (graph_colouring.h) and solved four at a time in SIMD lanes, with the same 2×2
 // block row, K and position step as RevoluteJoint's scalar code (revolute_joint.cpp) and Box2D
 // 2.4.1's b2RevoluteJoint. Only the Gauss-Seidel order changes: the joints of a colour share no
 // moving body, so solving them together equals solving them one after another.
 #pragma once
 
-#include "dynamics/graph_coloring.h"
 #include "dynamics/solver_types.h"
-#include "dynamics/wide_real.h"
+#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/wide_real.h"
 
 #include <cstdint>
 #include <span>
@@ -32,7 +32,7 @@ struct RevoluteJointGroup
     Vec2W anchorA, anchorB;   ///< local anchors relative to the local centres (m)
 };
 
-class ColoredJointSolver
+class RevoluteLanes
 {
   public:
     /// Colours the joints (their bodies stored by StoreJointBodies and summarised in `bodies`,
@@ -43,7 +43,7 @@ class ColoredJointSolver
                  const SolverData& data);
     /// Positions in Prepare's `joints` of the joints no colour had room for, in their order:
     /// the caller prepares and solves them one by one.
-    std::span<const std::int32_t> Overflow() const { return m_coloring.overflow; }
+    std::span<const std::int32_t> Overflow() const { return m_colouring.overflow; }
     void SolveVelocities(Velocity* velocities);
     /// Copies the lanes' accumulated impulses back into the joints.
     void StoreImpulses() const;
@@ -51,7 +51,7 @@ class ColoredJointSolver
     bool SolvePositions(Position* positions, const Tolerances& tolerances);
 
   private:
-    ConstraintColoring m_coloring;
+    ConstraintColouring m_colouring;
     std::vector<RevoluteJointGroup> m_groups;
     std::vector<RevoluteJoint*> m_sources; ///< each group's joints, kLanes per group (or null)
 };

@@ -1,9 +1,9 @@
-// The contact solver by colours (SolverSettings::graphColoring, engine/src/dynamics/
-// colored_contact_solver.cpp): the colouring's invariant, the SIMD sine and cosine, analytic
+// The contact solver by colours (SolverKind::Colour, engine/src/solvers/colour/
+// colour_contact_solver.cpp): the colouring's invariant, the SIMD sine and cosine, analytic
 // answers, agreement with the island-order solver where order cannot matter, and the settled
 // state of a pyramid against Box2D 2.4.1.
-#include "dynamics/graph_coloring.h"
-#include "dynamics/wide_real.h"
+#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/wide_real.h"
 
 #include "analytic_support.h"
 #include "test_random.h"
@@ -25,7 +25,7 @@ using namespace meff;
 using namespace meff::test;
 using namespace meff::analytic;
 using meff::detail::ConstraintBodies;
-using meff::detail::ConstraintColoring;
+using meff::detail::ConstraintColouring;
 
 namespace
 {
@@ -35,37 +35,37 @@ ConstraintBodies MakeConstraint(std::int32_t a, std::int32_t b, bool aMoves, boo
     return ConstraintBodies{a, b, aMoves, bMoves};
 }
 
-void Color(const std::vector<ConstraintBodies>& constraints, ConstraintColoring& coloring)
+void Colour(const std::vector<ConstraintBodies>& constraints, ConstraintColouring& colouring)
 {
     std::int32_t bodyCount = 0;
     for (const ConstraintBodies& c : constraints)
     {
         bodyCount = std::max({bodyCount, c.indexA + 1, c.indexB + 1});
     }
-    detail::ColorConstraints(
+    detail::ColourConstraints(
         constraints.size(), static_cast<std::size_t>(bodyCount),
-        [&](std::size_t i) { return constraints[i]; }, coloring);
+        [&](std::size_t i) { return constraints[i]; }, colouring);
 }
 
 /// Every constraint exactly once, in colours or the overflow; no colour writes a body twice;
 /// island order kept within a colour.
-void CheckColoring(const std::vector<ConstraintBodies>& constraints,
-                   const ConstraintColoring& coloring)
+void CheckColouring(const std::vector<ConstraintBodies>& constraints,
+                    const ConstraintColouring& colouring)
 {
-    std::multiset<std::int32_t> seen(coloring.order.begin(), coloring.order.end());
-    seen.insert(coloring.overflow.begin(), coloring.overflow.end());
+    std::multiset<std::int32_t> seen(colouring.order.begin(), colouring.order.end());
+    seen.insert(colouring.overflow.begin(), colouring.overflow.end());
     REQUIRE(seen.size() == constraints.size());
     for (std::size_t i = 0; i < constraints.size(); ++i)
     {
         REQUIRE(seen.count(static_cast<std::int32_t>(i)) == 1);
     }
-    for (int c = 0; c < coloring.ColorCount(); ++c)
+    for (int c = 0; c < colouring.ColourCount(); ++c)
     {
         std::set<std::int32_t> written;
         std::int32_t previous = -1;
-        for (std::int32_t k = coloring.colorStarts[c]; k < coloring.colorStarts[c + 1]; ++k)
+        for (std::int32_t k = colouring.colourStarts[c]; k < colouring.colourStarts[c + 1]; ++k)
         {
-            const std::int32_t i = coloring.order[k];
+            const std::int32_t i = colouring.order[k];
             CHECK(i > previous);
             previous = i;
             const ConstraintBodies& c = constraints[i];
@@ -83,10 +83,10 @@ void CheckColoring(const std::vector<ConstraintBodies>& constraints,
 
 /// A world on Box2D's benchmark ground (a static box 2·halfWidth wide whose top is y = 0),
 /// solving by colour or in the island order.
-std::pair<World, BodyId> MakeGroundedWorld(bool colored, Real halfWidth = 50)
+std::pair<World, BodyId> MakeGroundedWorld(bool coloured, Real halfWidth = 50)
 {
     WorldDef def;
-    def.solver.graphColoring = colored;
+    def.solver.kind = coloured ? SolverKind::Colour : SolverKind::Box2D;
     World world(def);
     const BodyId ground = world.CreateBody({});
     world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(halfWidth, 1, {0, -1}, 0));
@@ -112,7 +112,7 @@ std::vector<double> NormalSupport(const World& world, const std::vector<BodyId>&
 
 } // namespace
 
-TEST_CASE("Graph colouring: no colour moves a body twice; static bodies are shared", "[coloring]")
+TEST_CASE("Graph colouring: no colour moves a body twice; static bodies are shared", "[colouring]")
 {
     Random random(7);
     std::vector<ConstraintBodies> constraints;
@@ -127,10 +127,10 @@ TEST_CASE("Graph colouring: no colour moves a body twice; static bodies are shar
         }
         constraints.push_back(MakeConstraint(a, b, a != 0, true));
     }
-    ConstraintColoring coloring;
-    Color(constraints, coloring);
-    CheckColoring(constraints, coloring);
-    CHECK(coloring.overflow.empty());
+    ConstraintColouring colouring;
+    Colour(constraints, colouring);
+    CheckColouring(constraints, colouring);
+    CHECK(colouring.overflow.empty());
 
     // Contacts with only the static body and distinct dynamic ones all fit in one colour.
     std::vector<ConstraintBodies> onGround;
@@ -138,13 +138,13 @@ TEST_CASE("Graph colouring: no colour moves a body twice; static bodies are shar
     {
         onGround.push_back(MakeConstraint(0, i, false, true));
     }
-    Color(onGround, coloring);
-    CheckColoring(onGround, coloring);
-    CHECK(coloring.ColorCount() == 1);
+    Colour(onGround, colouring);
+    CheckColouring(onGround, colouring);
+    CHECK(colouring.ColourCount() == 1);
 }
 
 TEST_CASE("Graph colouring: a body with more contacts than colours overflows the rest",
-          "[coloring]")
+          "[colouring]")
 {
     // One dynamic body (0) touching 70 others: each contact needs its own colour.
     std::vector<ConstraintBodies> constraints;
@@ -152,16 +152,16 @@ TEST_CASE("Graph colouring: a body with more contacts than colours overflows the
     {
         constraints.push_back(MakeConstraint(0, i, true, true));
     }
-    ConstraintColoring coloring;
-    Color(constraints, coloring);
-    CheckColoring(constraints, coloring);
-    CHECK(coloring.ColorCount() == detail::kMaxColors);
-    CHECK(coloring.overflow.size() == 70 - detail::kMaxColors);
+    ConstraintColouring colouring;
+    Colour(constraints, colouring);
+    CheckColouring(constraints, colouring);
+    CHECK(colouring.ColourCount() == detail::kMaxColours);
+    CHECK(colouring.overflow.size() == 70 - detail::kMaxColours);
     // The overflow keeps island order: the last six contacts.
-    CHECK(coloring.overflow.front() == detail::kMaxColors);
+    CHECK(colouring.overflow.front() == detail::kMaxColours);
 }
 
-TEST_CASE("SIMD sine and cosine agree with the standard library", "[coloring]")
+TEST_CASE("SIMD sine and cosine agree with the standard library", "[colouring]")
 {
     Random random(11);
     double worst = 0;
@@ -197,12 +197,12 @@ TEST_CASE("SIMD sine and cosine agree with the standard library", "[coloring]")
 }
 
 TEST_CASE("Graph colouring: head-on circles exchange P = (1+e)(u2-u1) m_red",
-          "[coloring][analytic]")
+          "[colouring][analytic]")
 {
     const Real e = GENERATE(Real(0), Real(1));
     World world = MakeWorld({0, 0});
     SolverSettings solver = world.GetSolverSettings();
-    solver.graphColoring = true;
+    solver.kind = SolverKind::Colour;
     world.SetSolverSettings(solver);
     const Real u1 = 4, u2 = -1;
     const BodyId b1 = AddBall(world, {-2, 0}, {u1, 0}, Real(0.5), Material(1, 0, e));
@@ -224,14 +224,14 @@ TEST_CASE("Graph colouring: head-on circles exchange P = (1+e)(u2-u1) m_red",
 }
 
 TEST_CASE("Graph colouring: resting bodies hold m·g·dt and match the island-order solver",
-          "[coloring][analytic]")
+          "[colouring][analytic]")
 {
     // Boxes (two-point manifolds: block lanes) and circles (one point: scalar lanes) apart on
     // the ground: every contact touches its own body, so the colour order changes nothing and
     // both solvers must agree but for the position pass's sine and cosine (≤ 2 ulp apart).
-    const auto build = [](bool colored)
+    const auto build = [](bool coloured)
     {
-        World world = MakeGroundedWorld(colored).first;
+        World world = MakeGroundedWorld(coloured).first;
         std::vector<BodyId> bodies;
         for (int i = 0; i < 11; ++i)
         {
@@ -249,17 +249,17 @@ TEST_CASE("Graph colouring: resting bodies hold m·g·dt and match the island-or
         }
         return std::pair{std::move(world), bodies};
     };
-    auto [colored, coloredBodies] = build(true);
+    auto [coloured, colouredBodies] = build(true);
     auto [ordered, orderedBodies] = build(false);
     for (int step = 0; step < 180; ++step)
     {
-        colored.Step(kDt);
+        coloured.Step(kDt);
         ordered.Step(kDt);
     }
-    for (std::size_t i = 0; i < coloredBodies.size(); ++i)
+    for (std::size_t i = 0; i < colouredBodies.size(); ++i)
     {
         INFO("body " << i);
-        const Vec2 p = colored.GetPosition(coloredBodies[i]);
+        const Vec2 p = coloured.GetPosition(colouredBodies[i]);
         const Vec2 q = ordered.GetPosition(orderedBodies[i]);
         // Resting bodies damp differences: ulp-level sine/cosine differences (≤ 2.4e-7
         // relative) in the position pass move a 0.5 m body by at most ~1e-7 m per step, and
@@ -269,17 +269,17 @@ TEST_CASE("Graph colouring: resting bodies hold m·g·dt and match the island-or
     }
     // Each body rests: the summed normal impulse of its points is m·g·dt (float rounding of a
     // few operations on impulses of size m·g·dt).
-    const std::vector<double> support = NormalSupport(colored, coloredBodies);
-    for (std::size_t i = 0; i < coloredBodies.size(); ++i)
+    const std::vector<double> support = NormalSupport(coloured, colouredBodies);
+    for (std::size_t i = 0; i < colouredBodies.size(); ++i)
     {
-        const double mgdt = colored.GetMass(coloredBodies[i]) * 10 * double(kDt);
+        const double mgdt = coloured.GetMass(colouredBodies[i]) * 10 * double(kDt);
         CHECK(support[i] == Approx(mgdt).epsilon(1e-4));
     }
 }
 
 TEST_CASE("Graph colouring without sleep: the awake world is one island, holding what the "
           "island search finds",
-          "[coloring]")
+          "[colouring]")
 {
     // Without sleep, solving by colour gathers the whole awake world as one island (island.h:
     // BuildWorldIsland) instead of searching islands from each awake body. No dynamic body
@@ -295,7 +295,7 @@ TEST_CASE("Graph colouring without sleep: the awake world is one island, holding
     const auto build = [](bool allowSleep)
     {
         WorldDef def;
-        def.solver.graphColoring = true;
+        def.solver.kind = SolverKind::Colour;
         def.solver.positionIterations = 1;
         def.allowSleep = allowSleep;
         World world(def);
@@ -383,13 +383,13 @@ TEST_CASE("Graph colouring without sleep: the awake world is one island, holding
 }
 
 TEST_CASE("Graph colouring: lanes prepare every manifold type as the island order does",
-          "[coloring]")
+          "[colouring]")
 {
     // Isolated contacts, each on its own dynamic body, so that the colour order changes
     // nothing: tilted boxes landing on a corner with the ground as shape B (FaceB) and as shape
     // A (FaceA), a ball on the ground (polygon and circle), two balls colliding in the air
     // (Circles), all bouncy (restitution bias), with a varying dt (warm-start scaling). The
-    // lanes prepare their rows from the contacts (colored_contact_prepare.cpp) and the island
+    // lanes prepare their rows from the contacts (colour_contact_prepare.cpp) and the island
     // order by WorldManifold: both must give the same motion, and the same hit events (which
     // read the approach velocities the preparation records), for each solver option.
     struct Options
@@ -400,10 +400,10 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
         {true, true, false}, {false, true, false}, {true, false, false}, {true, true, true}};
     for (const Options& option : options)
     {
-        const auto build = [&](bool colored)
+        const auto build = [&](bool coloured)
         {
             WorldDef def;
-            def.solver.graphColoring = colored;
+            def.solver.kind = coloured ? SolverKind::Colour : SolverKind::Box2D;
             def.solver.blockSolver = option.blockSolver;
             def.solver.warmStarting = option.warmStarting;
             def.solver.restitutionFromStepStart = option.fromStepStart;
@@ -433,33 +433,33 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
             }
             return std::pair{std::move(world), bodies};
         };
-        auto [colored, coloredBodies] = build(true);
+        auto [coloured, colouredBodies] = build(true);
         auto [ordered, orderedBodies] = build(false);
         double largest = 0;
         int hits = 0;
         for (int step = 0; step < 120; ++step)
         {
             const Real dt = step % 3 == 2 ? Real(1.0 / 90.0) : kDt;
-            colored.Step(dt);
+            coloured.Step(dt);
             ordered.Step(dt);
             INFO("block " << option.blockSolver << " warm " << option.warmStarting
                           << " from step start " << option.fromStepStart << ", step " << step);
-            REQUIRE(colored.GetContactReports().size() == ordered.GetContactReports().size());
-            const auto coloredHits = colored.GetContactHitEvents();
+            REQUIRE(coloured.GetContactReports().size() == ordered.GetContactReports().size());
+            const auto colouredHits = coloured.GetContactHitEvents();
             const auto orderedHits = ordered.GetContactHitEvents();
-            REQUIRE(coloredHits.size() == orderedHits.size());
-            for (std::size_t i = 0; i < coloredHits.size(); ++i)
+            REQUIRE(colouredHits.size() == orderedHits.size());
+            for (std::size_t i = 0; i < colouredHits.size(); ++i)
             {
                 hits += 1;
-                largest = std::max<double>(
-                    largest, std::abs(coloredHits[i].approachSpeed - orderedHits[i].approachSpeed));
+                largest = std::max<double>(largest, std::abs(colouredHits[i].approachSpeed -
+                                                             orderedHits[i].approachSpeed));
             }
-            for (std::size_t i = 0; i < coloredBodies.size(); ++i)
+            for (std::size_t i = 0; i < colouredBodies.size(); ++i)
             {
                 largest =
-                    std::max<double>(largest, Distance(colored.GetPosition(coloredBodies[i]),
+                    std::max<double>(largest, Distance(coloured.GetPosition(colouredBodies[i]),
                                                        ordered.GetPosition(orderedBodies[i])));
-                largest = std::max<double>(largest, std::abs(colored.GetAngle(coloredBodies[i]) -
+                largest = std::max<double>(largest, std::abs(coloured.GetAngle(colouredBodies[i]) -
                                                              ordered.GetAngle(orderedBodies[i])));
             }
         }
@@ -475,39 +475,39 @@ TEST_CASE("Graph colouring: lanes prepare every manifold type as the island orde
 }
 
 TEST_CASE("Graph colouring: a needle's two close points drop the second, as the island order does",
-          "[coloring]")
+          "[colouring]")
 {
     // A box 4 mm wide standing on its end: its two contact points are 4 mm apart, so the
     // block solver's K is ill-conditioned (k11² ≥ kMaxConditionNumber·det K) and only the
-    // first point is solved, in the lanes (colored_contact_prepare.cpp) as in the island
+    // first point is solved, in the lanes (colour_contact_prepare.cpp) as in the island
     // order (contact_solver.cpp). One isolated contact, so the colour order changes nothing.
-    const auto build = [](bool colored)
+    const auto build = [](bool coloured)
     {
-        World world = MakeGroundedWorld(colored).first;
+        World world = MakeGroundedWorld(coloured).first;
         const BodyId needle = AddBox(world, BodyType::Dynamic, {0, Real(0.5)}, 0, Real(0.002),
                                      Real(0.5), Material(1, Real(0.6)));
         return std::pair{std::move(world), needle};
     };
-    auto [colored, coloredNeedle] = build(true);
+    auto [coloured, colouredNeedle] = build(true);
     auto [ordered, orderedNeedle] = build(false);
     for (int step = 0; step < 20; ++step)
     {
-        colored.Step(kDt);
+        coloured.Step(kDt);
         ordered.Step(kDt);
         INFO("step " << step);
         // One point solved and reported in both, the second dropped.
-        REQUIRE(colored.GetContactReports().size() == 1);
+        REQUIRE(coloured.GetContactReports().size() == 1);
         REQUIRE(ordered.GetContactReports().size() == 1);
         // Both solve the same single row; they differ only by the position pass's SIMD sine
         // and cosine (≤ 2.4e-7 relative): 1e-6 m over 20 steps of a 1 m needle.
-        CHECK(Distance(colored.GetPosition(coloredNeedle), ordered.GetPosition(orderedNeedle)) <
+        CHECK(Distance(coloured.GetPosition(colouredNeedle), ordered.GetPosition(orderedNeedle)) <
               1e-6);
-        CHECK(std::abs(colored.GetAngle(coloredNeedle) - ordered.GetAngle(orderedNeedle)) < 1e-6);
+        CHECK(std::abs(coloured.GetAngle(colouredNeedle) - ordered.GetAngle(orderedNeedle)) < 1e-6);
     }
 }
 
 TEST_CASE("Graph colouring: a plank holding more boxes than there are colours still holds them",
-          "[coloring][analytic]")
+          "[colouring][analytic]")
 {
     // 70 boxes resting on one dynamic plank: the plank is in 71 contacts (70 boxes and the
     // ground), more than the 64 colours, so 7 of its contacts go to the overflow and are
@@ -546,11 +546,11 @@ TEST_CASE("Graph colouring: a plank holding more boxes than there are colours st
     CHECK(groundSupport == Approx(totalMass * 10 * double(kDt)).epsilon(1e-4));
 }
 
-TEST_CASE("Graph colouring: pyramid20 settles where Box2D 2.4.1's does", "[coloring][validation]")
+TEST_CASE("Graph colouring: pyramid20 settles where Box2D 2.4.1's does", "[colouring][validation]")
 {
     meff::Scene scene = meff::LoadScene(
         (std::filesystem::path(MEFF_SOURCE_DIR) / "samples" / "bench" / "pyramid20.json").string());
-    scene.world.graphColoring = true;
+    scene.world.solver.kind = SolverKind::Colour;
     // Another Gauss-Seidel order from the first step: no frame-by-frame agreement is expected
     // (horizon 0), only the settled state. 0.02 m: a twenty-fifth of a box; the measured
     // largest difference after 500 steps is 9 mm, from the order's different sag of the rows.
@@ -566,7 +566,7 @@ TEST_CASE("Graph colouring: pyramid20 settles where Box2D 2.4.1's does", "[color
 }
 
 TEST_CASE("Graph colouring: a tumbler's boxes tumble as in Box2D's order, on average",
-          "[coloring][validation]")
+          "[colouring][validation]")
 {
     // The tumbler is chaotic: after a few hundred steps no box is where it is in Box2D's
     // order, so only the pile as a whole can agree. The bench scene with 15 x 15 of its boxes,
@@ -591,10 +591,10 @@ TEST_CASE("Graph colouring: a tumbler's boxes tumble as in Box2D's order, on ave
         double meanHeight = 0, meanSpeed = 0; ///< over the boxes and the last 180 steps
         int inside = 0;                       ///< boxes inside the container at the end
     };
-    const auto run = [&scene](bool colored)
+    const auto run = [&scene](bool coloured)
     {
         meff::Scene copy = scene;
-        copy.world.graphColoring = colored;
+        copy.world.solver.kind = coloured ? SolverKind::Colour : SolverKind::Box2D;
         meff::BuiltScene built = meff::BuildWorld(copy);
         Pile pile;
         for (int step = 0; step < 360; ++step)
@@ -622,11 +622,11 @@ TEST_CASE("Graph colouring: a tumbler's boxes tumble as in Box2D's order, on ave
         return pile;
     };
     const Pile ordered = run(false);
-    const Pile colored = run(true);
-    INFO("mean height " << ordered.meanHeight << " / " << colored.meanHeight << ", mean speed "
-                        << ordered.meanSpeed << " / " << colored.meanSpeed);
+    const Pile coloured = run(true);
+    INFO("mean height " << ordered.meanHeight << " / " << coloured.meanHeight << ", mean speed "
+                        << ordered.meanSpeed << " / " << coloured.meanSpeed);
     CHECK(ordered.inside == 225);
-    CHECK(colored.inside == 225);
-    CHECK(std::abs(colored.meanHeight - ordered.meanHeight) < 0.25);
-    CHECK(std::abs(colored.meanSpeed - ordered.meanSpeed) < 0.25);
+    CHECK(coloured.inside == 225);
+    CHECK(std::abs(coloured.meanHeight - ordered.meanHeight) < 0.25);
+    CHECK(std::abs(coloured.meanSpeed - ordered.meanSpeed) < 0.25);
 }

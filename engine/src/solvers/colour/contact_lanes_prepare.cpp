@@ -5,14 +5,14 @@
 // (b2WorldManifold::Initialize), lever arms, the scalar effective masses of the seed
 //   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB,
 // the restitution bias −e·vn, and the block solver's K with its condition test. The contacts no
-// colour could take (the overflow) are prepared by ContactSolver, one by one. The warm start
-// applies the same impulses, group by group in colour order; where a body has several contacts
-// their sum is rounded in another order than in Box2D's.
-#include "dynamics/colored_contact_solver.h"
+// colour could take (the overflow) are prepared one by one by the scalar preparation
+// (ColourContactSolver). The warm start applies the same impulses, group by group in colour order;
+// where a body has several contacts their sum is rounded in another order than in Box2D's.
+#include "solvers/colour/contact_lanes.h"
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
-#include "dynamics/lane_bodies.h"
+#include "solvers/lanes/lane_bodies.h"
 
 namespace meff::detail
 {
@@ -244,19 +244,24 @@ void WriteBack(const ContactVelocityGroup& vg, const PreparedLanes& prepared,
 
 } // namespace
 
-bool ColoredContactSolver::Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
-                                   const SolverData& data)
+bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
+                           const SolverData& data)
 {
     bool hitEvents = false;
-    m_blockSolver = data.step.solver.blockSolver;
-    ColorContacts(island, static_cast<std::size_t>(data.discardIndex), m_coloring);
-    const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
     m_velocityGroups.clear();
     m_positionGroups.clear();
-    for (int color = 0; color < m_coloring.ColorCount(); ++color)
+    if (island.contactIndices.empty())
     {
-        const std::int32_t begin = m_coloring.colorStarts[color];
-        const std::int32_t end = m_coloring.colorStarts[color + 1];
+        // A body in free fall: skip the colouring's fixed cost (its per-body scratch).
+        m_colouring.overflow.clear();
+        return false;
+    }
+    ColourContacts(island, static_cast<std::size_t>(data.discardIndex), m_colouring);
+    const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
+    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
+    {
+        const std::int32_t begin = m_colouring.colourStarts[colour];
+        const std::int32_t end = m_colouring.colourStarts[colour + 1];
         for (std::int32_t first = begin; first < end; first += kLanes)
         {
             // Empty lanes read body 0 and write the discard slot; all their masses are zero.
@@ -270,7 +275,7 @@ bool ColoredContactSolver::Prepare(const IslandContacts& island, std::span<Solve
             LaneInputs in{};
             for (int l = 0; l < kLanes && first + l < end; ++l)
             {
-                const std::int32_t k = m_coloring.order[first + l];
+                const std::int32_t k = m_colouring.order[first + l];
                 GatherLane(vg, pg, in, l, k, island.contacts[island.contactIndices[k]], island,
                            impulseScale, data.step.solver.restitutionFromStepStart,
                            data.discardIndex);
@@ -282,7 +287,7 @@ bool ColoredContactSolver::Prepare(const IslandContacts& island, std::span<Solve
     return hitEvents;
 }
 
-void ColoredContactSolver::WarmStart(SolverData& data)
+void ContactLanes::WarmStart(SolverData& data)
 {
     for (const ContactVelocityGroup& g : m_velocityGroups)
     {

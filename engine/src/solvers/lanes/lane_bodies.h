@@ -1,11 +1,11 @@
 // The lanes' view of their bodies: four bodies' velocities or positions gathered from the
 // island's arrays into SIMD lanes, updated there, and scattered back. Shared by the contact and
-// joint solvers that work by colour (graph_coloring.h).
+// joint solvers that work by colour (graph_colouring.h).
 #pragma once
 
-#include "dynamics/graph_coloring.h"
 #include "dynamics/solver_types.h"
-#include "dynamics/wide_real.h"
+#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/wide_real.h"
 
 #include <cstddef>
 #include <cstdint>

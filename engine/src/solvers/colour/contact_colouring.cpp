@@ -1,4 +1,4 @@
-#include "dynamics/contact_coloring.h"
+#include "solvers/colour/contact_colouring.h"
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
@@ -6,9 +6,9 @@
 namespace meff::detail
 {
 
-void ColorContacts(const IslandContacts& island, std::size_t bodyCount, ConstraintColoring& out)
+void ColourContacts(const IslandContacts& island, std::size_t bodyCount, ConstraintColouring& out)
 {
-    ColorConstraints(
+    ColourConstraints(
         island.contactIndices.size(), bodyCount,
         [&](std::size_t i)
         {

@@ -1,11 +1,14 @@
-#include "dynamics/island.h"
+#include "solvers/island.h"
 
-#include "dynamics/world_state.h"
+#include "dynamics/joint_slot.h"
+#include "meff/error.h"
+
+#include <string>
 
 namespace meff::detail
 {
 
-void ResetIslandFlags(WorldState& world)
+void ResetIslandFlags(SolverWorld& world)
 {
     for (Body& body : world.bodies)
     {
@@ -21,7 +24,7 @@ void ResetIslandFlags(WorldState& world)
     }
 }
 
-void BuildIsland(WorldState& world, std::int32_t seed, Island& island)
+void BuildIsland(SolverWorld& world, std::int32_t seed, Island& island)
 {
     island.Clear();
     std::vector<std::int32_t>& stack = island.stack;
@@ -89,7 +92,7 @@ void BuildIsland(WorldState& world, std::int32_t seed, Island& island)
     }
 }
 
-bool BuildWorldIsland(WorldState& world, Island& island)
+bool BuildWorldIsland(SolverWorld& world, Island& island)
 {
     island.Clear();
     for (std::size_t b = 0; b < world.bodies.size(); ++b)
@@ -142,7 +145,7 @@ bool BuildWorldIsland(WorldState& world, Island& island)
     return true;
 }
 
-void ReleaseStaticBodies(WorldState& world, const Island& island)
+void ReleaseStaticBodies(SolverWorld& world, const Island& island)
 {
     for (const std::int32_t bodyIndex : island.bodies)
     {
@@ -150,6 +153,77 @@ void ReleaseStaticBodies(WorldState& world, const Island& island)
         if (body.type == BodyType::Static)
         {
             body.islandFlag = false;
+        }
+    }
+}
+
+bool CanSeedIsland(const Body& body)
+{
+    return body.alive && !body.islandFlag && body.awake && body.type != BodyType::Static;
+}
+
+void FinishBodies(SolverWorld& world, const Island& island)
+{
+    for (std::size_t i = 0; i < island.bodies.size(); ++i)
+    {
+        const Position& p = island.positions[i];
+        const Velocity& v = island.velocities[i];
+        if (!p.c.IsValid() || !meff::IsValid(p.a) || !v.v.IsValid() || !meff::IsValid(v.w))
+        {
+            const std::int32_t bodyIndex = island.bodies[i];
+            throw SimulationError("step " + std::to_string(world.stepCount) + ": body " +
+                                      std::to_string(bodyIndex) + " (user data " +
+                                      std::to_string(world.bodies[bodyIndex].userData) +
+                                      ") has a non-finite position or velocity",
+                                  world.stepCount, bodyIndex);
+        }
+    }
+    for (std::size_t i = 0; i < island.bodies.size(); ++i)
+    {
+        Body& body = world.bodies[island.bodies[i]];
+        body.sweep.c = island.positions[i].c;
+        body.sweep.a = island.positions[i].a;
+        body.linearVelocity = island.velocities[i].v;
+        body.angularVelocity = island.velocities[i].w;
+        SynchronizeTransform(body);
+    }
+}
+
+void UpdateSleep(SolverWorld& world, const Island& island, const StepContext& step,
+                 bool positionSolved)
+{
+    // Speeds are compared squared, as Box2D does, so that no square root changes the verdict.
+    const Tolerances& tol = step.tolerances;
+    const Real linearToleranceSquared = tol.linearSleepTolerance * tol.linearSleepTolerance;
+    const Real angularToleranceSquared = tol.angularSleepTolerance * tol.angularSleepTolerance;
+    Real minSleepTime = kMaxReal;
+    for (const std::int32_t bodyIndex : island.bodies)
+    {
+        Body& body = world.bodies[bodyIndex];
+        if (body.type == BodyType::Static)
+        {
+            continue;
+        }
+        if (!body.allowSleep ||
+            body.angularVelocity * body.angularVelocity > angularToleranceSquared ||
+            Dot(body.linearVelocity, body.linearVelocity) > linearToleranceSquared)
+        {
+            body.sleepTime = 0; // moving, or never allowed to sleep: keeps the island awake
+            minSleepTime = 0;
+        }
+        else
+        {
+            body.sleepTime += step.dt;
+            minSleepTime = Min(minSleepTime, body.sleepTime);
+        }
+    }
+    // The island sleeps as a whole: one body put to sleep alone would be woken at once by the
+    // island search through its touching neighbours.
+    if (minSleepTime >= tol.timeToSleep && positionSolved)
+    {
+        for (const std::int32_t bodyIndex : island.bodies)
+        {
+            PutBodyToSleep(world.bodies[bodyIndex]);
         }
     }
 }

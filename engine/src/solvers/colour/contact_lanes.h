@@ -1,16 +1,17 @@
-// The contact solver by colours (SolverSettings::graphColoring). The same rows, effective
-// masses, clamps, block solver and position pass as ContactSolver (Box2D 2.4.1's algorithm,
-// with the same iteration counts), visited in another order: colour after colour, each colour's
-// contacts four at a time in SIMD lanes (wide_real.h), contacts no colour could take one by
-// one at the end. A colour's contacts share no moving body, so lanes never write the same
-// body. What changes is the Gauss-Seidel order, so results differ from Box2D's — by round-off in
-// a single contact, by the order's effect on convergence in a pile — and are validated by
-// settled-state checks instead of bit for bit.
+// Contacts in SIMD lanes, colour by colour (SolverKind::Colour): the same rows, effective
+// masses, clamps, block solver and position pass as Box2D's ContactSolver (Box2D 2.4.1's
+// algorithm, with the same iteration counts), visited in another order: colour after colour,
+// each colour's contacts four at a time in SIMD lanes (wide_real.h). Contacts no colour could
+// take are left to the caller (ColourContactSolver solves them one by one after the lanes). A
+// colour's contacts share no moving body, so lanes never write the same body. What changes is the
+// Gauss-Seidel order, so results differ from Box2D's — by round-off in a single contact, by the
+// order's effect on convergence in a pile — and are validated by settled-state checks instead of
+// bit for bit.
 #pragma once
 
-#include "dynamics/contact_coloring.h"
-#include "dynamics/contact_constraint.h"
-#include "dynamics/wide_real.h"
+#include "solvers/box2d/contact_constraint.h"
+#include "solvers/colour/contact_colouring.h"
+#include "solvers/lanes/wide_real.h"
 
 #include <cstdint>
 #include <span>
@@ -50,33 +51,32 @@ struct ContactPositionGroup
     MaskW hasPoint[2];
 };
 
-class ColoredContactSolver
+class ContactLanes
 {
   public:
     /// Colours the island's contacts and prepares the coloured ones four at a time, in lanes
-    /// (colored_contact_prepare.cpp): the same world manifold, lever arms, effective masses,
+    /// (contact_lanes_prepare.cpp): the same world manifold, lever arms, effective masses,
     /// restitution bias and block K as ContactSolver's scalar preparation, which the overflow
     /// gets instead. A coloured contact's rows live in the lanes; its `solved[k]` gets the
     /// contact index, the solved point count and each point's normal velocity. Returns whether
     /// any coloured contact has hit events.
     bool Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
                  const SolverData& data);
-    /// Applies the lanes' warm-start impulses (the overflow's are ContactSolver's).
+    /// Applies the lanes' warm-start impulses.
     void WarmStart(SolverData& data);
-    /// One velocity sweep: the colours in order, then the overflow in island order.
-    void SolveVelocities(std::span<ContactVelocityConstraint> velocity, SolverData& data);
+    /// One velocity sweep of the lanes, colour after colour.
+    void SolveVelocities(SolverData& data);
     /// Copies the lanes' accumulated impulses into their contacts' `solved[k]`.
     void CollectResults(std::span<SolvedContact> solved) const;
-    /// One position sweep; true when no point overlaps more than 3·slop.
-    bool SolvePositions(std::span<const ContactPositionConstraint> position, SolverData& data);
+    /// One position sweep of the lanes; returns the smallest separation seen (≤ 0).
+    Real SolvePositions(SolverData& data);
 
-    const ConstraintColoring& Coloring() const { return m_coloring; }
+    const ConstraintColouring& Colouring() const { return m_colouring; }
 
   private:
-    ConstraintColoring m_coloring;
+    ConstraintColouring m_colouring;
     std::vector<ContactVelocityGroup> m_velocityGroups;
     std::vector<ContactPositionGroup> m_positionGroups;
-    bool m_blockSolver = true;
 };
 
 } // namespace meff::detail

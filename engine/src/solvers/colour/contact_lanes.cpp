@@ -1,6 +1,6 @@
-#include "dynamics/colored_contact_solver.h"
+#include "solvers/colour/contact_lanes.h"
 
-#include "dynamics/lane_bodies.h"
+#include "solvers/lanes/lane_bodies.h"
 
 #include <algorithm>
 
@@ -182,20 +182,15 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
 
 } // namespace
 
-void ColoredContactSolver::SolveVelocities(std::span<ContactVelocityConstraint> velocity,
-                                           SolverData& data)
+void ContactLanes::SolveVelocities(SolverData& data)
 {
     for (ContactVelocityGroup& group : m_velocityGroups)
     {
         SolveVelocityGroup(group, data.velocities);
     }
-    for (const std::int32_t i : m_coloring.overflow)
-    {
-        SolveVelocityConstraint(velocity[i], data.velocities, m_blockSolver);
-    }
 }
 
-void ColoredContactSolver::CollectResults(std::span<SolvedContact> solved) const
+void ContactLanes::CollectResults(std::span<SolvedContact> solved) const
 {
     for (const ContactVelocityGroup& group : m_velocityGroups)
     {
@@ -211,8 +206,7 @@ void ColoredContactSolver::CollectResults(std::span<SolvedContact> solved) const
     }
 }
 
-bool ColoredContactSolver::SolvePositions(std::span<const ContactPositionConstraint> position,
-                                          SolverData& data)
+Real ContactLanes::SolvePositions(SolverData& data)
 {
     const Tolerances& tol = data.step.tolerances;
     RealW minSeparationW = Splat(0);
@@ -226,15 +220,7 @@ bool ColoredContactSolver::SolvePositions(std::span<const ContactPositionConstra
     {
         minSeparation = Min(minSeparation, minSeparationW[l]);
     }
-    for (const std::int32_t i : m_coloring.overflow)
-    {
-        const ContactPositionConstraint& pc = position[i];
-        minSeparation = Min(
-            minSeparation, SolvePositionConstraint(pc, data.positions, tol, tol.baumgarte,
-                                                   {pc.invMassA, pc.invMassB, pc.invIA, pc.invIB}));
-    }
-    // As ContactSolver::SolvePositions: −3·slop counts as solved.
-    return minSeparation >= Real(-3) * tol.linearSlop;
+    return minSeparation;
 }
 
 } // namespace meff::detail

@@ -1,5 +1,5 @@
-// Revolute joints by colour (SolverSettings::graphColoring, engine/src/dynamics/
-// colored_joint_solver.cpp): a lone joint in a lane against the island-order solver, static
+// Revolute joints by colour (SolverKind::Colour, engine/src/solvers/colour/
+// colour_joint_solver.cpp): a lone joint in a lane against the island-order solver, static
 // equilibria whose joint reactions are known exactly (which also checks that the lanes'
 // impulses reach the joints), a body with more joints than there are colours (the overflow),
 // and a hanging net whose joints must not stretch more than in Box2D's order.
@@ -18,11 +18,11 @@ using namespace meff::analytic;
 namespace
 {
 
-World MakeColoredWorld(bool colored, Vec2 gravity = {0, -10})
+World MakeColourWorld(bool coloured, Vec2 gravity = {0, -10})
 {
     WorldDef def;
     def.gravity = gravity;
-    def.solver.graphColoring = colored;
+    def.solver.kind = coloured ? SolverKind::Colour : SolverKind::Box2D;
     return World{def};
 }
 
@@ -34,39 +34,40 @@ BodyId AddBob(World& world, Vec2 position, Real density = 1)
 
 } // namespace
 
-TEST_CASE("Graph colouring: a pendulum in a lane swings as in island order", "[coloring][joints]")
+TEST_CASE("Graph colouring: a pendulum in a lane swings as in island order", "[colouring][joints]")
 {
     // One joint: its lane solves the same block row with the same K as the scalar code, so
     // the two worlds differ only by the position pass's SIMD sine and cosine (≤ 2 ulp).
-    const auto build = [](bool colored)
+    const auto build = [](bool coloured)
     {
-        World world = MakeColoredWorld(colored);
+        World world = MakeColourWorld(coloured);
         const BodyId pivot = AddAnchor(world, {0, 0});
         const BodyId bob = AddBob(world, {1, 0});
         world.CreateJoint(world.MakeRevoluteJointDef(pivot, bob, {0, 0}));
         return std::pair{std::move(world), bob};
     };
-    auto [colored, coloredBob] = build(true);
+    auto [coloured, colouredBob] = build(true);
     auto [ordered, orderedBob] = build(false);
     for (int step = 0; step < 240; ++step)
     {
-        colored.Step(kDt);
+        coloured.Step(kDt);
         ordered.Step(kDt);
         INFO("step " << step);
         // Ulp-level differences (2.4e-7 relative on a 1 m arm) grow at most linearly in a
         // regular swing: 240 steps of them stay under 1e-4 m, yet a lane solving the wrong row
         // (or none) is off by centimetres within a few steps.
-        REQUIRE(Distance(colored.GetPosition(coloredBob), ordered.GetPosition(orderedBob)) < 1e-4);
+        REQUIRE(Distance(coloured.GetPosition(colouredBob), ordered.GetPosition(orderedBob)) <
+                1e-4);
     }
 }
 
 TEST_CASE("Graph colouring: a hanging chain's joints carry the weight below them",
-          "[coloring][joints][analytic]")
+          "[colouring][joints][analytic]")
 {
     // A straight vertical chain at rest: joint k (from the top) holds the n − k links below it,
     // F = (n − k)·m·g. The chain's joints alternate between two colours.
     constexpr int kLinks = 10;
-    World world = MakeColoredWorld(true);
+    World world = MakeColourWorld(true);
     BodyId above = AddAnchor(world, {0, 0});
     std::vector<JointId> joints;
     std::vector<BodyId> links;
@@ -99,13 +100,13 @@ TEST_CASE("Graph colouring: a hanging chain's joints carry the weight below them
 }
 
 TEST_CASE("Graph colouring: a body with more joints than colours overflows and still holds",
-          "[coloring][joints][analytic]")
+          "[colouring][joints][analytic]")
 {
     // A dynamic bar pinned at both ends carries 70 pendulums, so 72 joints share the bar: the
     // colouring has 64 colours, the remaining joints go to the overflow, which is solved one
     // by one after the lanes. Every pendulum hangs at rest, so each joint carries m·g.
     constexpr int kPendulums = 70;
-    World world = MakeColoredWorld(true);
+    World world = MakeColourWorld(true);
     const BodyId left = AddAnchor(world, {0, 0});
     const BodyId right = AddAnchor(world, {Real(kPendulums + 1), 0});
     const BodyId bar = AddBox(world, BodyType::Dynamic, {Real(kPendulums + 1) / 2, 0}, 0,
@@ -139,7 +140,7 @@ TEST_CASE("Graph colouring: a body with more joints than colours overflows and s
 }
 
 TEST_CASE("Graph colouring: a hanging net stretches no more than in Box2D's order",
-          "[coloring][joints]")
+          "[colouring][joints]")
 {
     // joint_grid in small: a 24×24 net of circles (not colliding) joined to the neighbour above
     // and to the left, hung from three static bodies of the top row. Eight iterations cannot
@@ -148,9 +149,9 @@ TEST_CASE("Graph colouring: a hanging net stretches no more than in Box2D's orde
     // depth-first path, colours carry them evenly over the net; the mean anchor gap by colour
     // must not exceed island order's.
     constexpr int kSide = 24;
-    const auto run = [](bool colored)
+    const auto run = [](bool coloured)
     {
-        World world = MakeColoredWorld(colored);
+        World world = MakeColourWorld(coloured);
         std::vector<BodyId> grid(kSide * kSide);
         std::vector<JointId> joints;
         ShapeDef material = Material(1, 0);
@@ -189,9 +190,9 @@ TEST_CASE("Graph colouring: a hanging net stretches no more than in Box2D's orde
         }
         return sum / double(joints.size());
     };
-    const double colored = run(true);
+    const double coloured = run(true);
     const double ordered = run(false);
-    INFO("mean anchor gap: by colour " << colored << " m, island order " << ordered << " m");
-    CHECK(colored <= ordered);
-    CHECK(colored > 0); // a net this size cannot be held exactly
+    INFO("mean anchor gap: by colour " << coloured << " m, island order " << ordered << " m");
+    CHECK(coloured <= ordered);
+    CHECK(coloured > 0); // a net this size cannot be held exactly
 }

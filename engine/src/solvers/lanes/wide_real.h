@@ -2,7 +2,7 @@
 // stream (SIMD). Written with GCC's vector extensions (also understood by Clang): SSE2 on
 // x86-64, NEON on ARM, scalar code elsewhere — no intrinsics, no extra dependency. Every lane
 // does exactly the operations the scalar solver does, in the same order; only which
-// constraints run together changes (see graph_coloring.h).
+// constraints run together changes (see graph_colouring.h).
 #pragma once
 
 #include "meff/math.h"

@@ -8,6 +8,7 @@
 #include "dynamics/solver_types.h"
 #include "meff/collision.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -80,6 +81,18 @@ struct PositionMasses
 {
     Real mA, mB, iA, iB;
 };
+
+/// Box2D's b2ContactSolver constructor and InitializeVelocityConstraints for the island's
+/// contact k: its velocity rows `vc` and position constraint `pc`. Returns whether the contact
+/// has a shape that asked for hit events.
+bool PrepareContactConstraint(const IslandContacts& island, std::size_t k, const SolverData& data,
+                              ContactVelocityConstraint& vc, ContactPositionConstraint& pc);
+
+/// Applies one contact's accumulated impulses of last step (scaled in the preparation).
+void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velocities);
+
+/// What the rest of the step reads of one solved contact.
+void CollectContactResult(const ContactVelocityConstraint& vc, SolvedContact& solved);
 
 /// One contact's sequential-impulse update: friction rows, then the normal rows one by one or,
 /// for a two-point manifold with `blockSolver`, as Box2D's 2×2 block.

@@ -1,4 +1,4 @@
-#include "dynamics/contact_solver.h"
+#include "solvers/box2d/contact_solver.h"
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
@@ -32,6 +32,39 @@ Transform TransformFromCenter(Vec2 c, Rot q, Vec2 localCenter)
     return xf;
 }
 
+/// A constraint's two bodies: their solver indices, inverse masses (1/kg) and inverse
+/// inertias (1/(kg·m²)). The velocity and position constraints name these members alike.
+template <typename Constraint>
+void SetBodies(Constraint& c, const Body& bodyA, const Body& bodyB)
+{
+    c.indexA = bodyA.islandIndex;
+    c.indexB = bodyB.islandIndex;
+    c.invMassA = bodyA.invMass;
+    c.invMassB = bodyB.invMass;
+    c.invIA = bodyA.invI;
+    c.invIB = bodyB.invI;
+}
+
+} // namespace
+
+void ContactSolver::Prepare(const IslandContacts& island, SolverData& data)
+{
+    m_count = island.contactIndices.size();
+    if (m_velocity.size() < m_count)
+    {
+        m_velocity.resize(m_count);
+        m_position.resize(m_count);
+        m_solved.resize(m_count);
+    }
+    m_anyHitEvents = false;
+    for (std::size_t k = 0; k < m_count; ++k)
+    {
+        const bool hitEvents =
+            PrepareContactConstraint(island, k, data, m_velocity[k], m_position[k]);
+        m_anyHitEvents = m_anyHitEvents || hitEvents;
+    }
+}
+
 /// Applies one contact's accumulated impulses of last step (scaled in Prepare).
 void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velocities)
 {
@@ -55,65 +88,17 @@ void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velociti
     b.w = wB;
 }
 
-/// A constraint's two bodies: their solver indices, inverse masses (1/kg) and inverse
-/// inertias (1/(kg·m²)). The velocity and position constraints name these members alike.
-template <typename Constraint>
-void SetBodies(Constraint& c, const Body& bodyA, const Body& bodyB)
-{
-    c.indexA = bodyA.islandIndex;
-    c.indexB = bodyB.islandIndex;
-    c.invMassA = bodyA.invMass;
-    c.invMassB = bodyB.invMass;
-    c.invIA = bodyA.invI;
-    c.invIB = bodyB.invI;
-}
-
-} // namespace
-
-void ContactSolver::Prepare(std::span<const std::int32_t> contactIndices,
-                            std::span<const Contact> contacts, std::span<const Body> bodies,
-                            SolverData& data)
-{
-    m_count = contactIndices.size();
-    if (m_velocity.size() < m_count)
-    {
-        m_velocity.resize(m_count);
-        m_position.resize(m_count);
-        m_solved.resize(m_count);
-    }
-    m_anyHitEvents = false;
-    const IslandContacts island{contactIndices, contacts, bodies};
-    // An island without contacts (a body in free fall) skips the colouring's fixed cost; lanes
-    // need the island's discard slot (SolverData::discardIndex).
-    m_colored = data.step.solver.graphColoring && m_count > 0 && data.discardIndex >= 0;
-    if (!m_colored)
-    {
-        for (std::size_t k = 0; k < m_count; ++k)
-        {
-            PrepareConstraint(island, k, data);
-        }
-        return;
-    }
-    m_anyHitEvents = m_coloredSolver.Prepare(island, {m_solved.data(), m_count}, data);
-    for (const std::int32_t k : m_coloredSolver.Coloring().overflow)
-    {
-        PrepareConstraint(island, static_cast<std::size_t>(k), data);
-    }
-}
-
-void ContactSolver::PrepareConstraint(const IslandContacts& island, std::size_t k,
-                                      const SolverData& data)
+bool PrepareContactConstraint(const IslandContacts& island, std::size_t k, const SolverData& data,
+                              ContactVelocityConstraint& vc, ContactPositionConstraint& pc)
 {
     const bool warmStarting = data.step.solver.warmStarting;
     const bool blockSolver = data.step.solver.blockSolver;
     const std::int32_t contactIndex = island.contactIndices[k];
     const Contact& contact = island.contacts[contactIndex];
-    m_anyHitEvents = m_anyHitEvents || (contact.flags & Contact::HitEvents) != 0;
     const Body& bodyA = island.bodies[contact.bodyA];
     const Body& bodyB = island.bodies[contact.bodyB];
     const Manifold& manifold = contact.manifold;
 
-    ContactVelocityConstraint& vc = m_velocity[k];
     vc.friction = contact.friction;
     vc.restitution = contact.restitution;
     vc.threshold = contact.restitutionThreshold;
@@ -123,7 +108,6 @@ void ContactSolver::PrepareConstraint(const IslandContacts& island, std::size_t 
     vc.K = Mat22{{0, 0}, {0, 0}};
     vc.normalMass = Mat22{{0, 0}, {0, 0}};
 
-    ContactPositionConstraint& pc = m_position[k];
     SetBodies(pc, bodyA, bodyB);
     pc.localCenterA = bodyA.sweep.localCenter;
     pc.localCenterB = bodyB.sweep.localCenter;
@@ -207,20 +191,12 @@ void ContactSolver::PrepareConstraint(const IslandContacts& island, std::size_t 
             vc.pointCount = 1;
         }
     }
+    return (contact.flags & Contact::HitEvents) != 0;
 }
 
 void ContactSolver::WarmStart(SolverData& data)
 {
-    if (!m_colored)
-    {
-        for (std::size_t k = 0; k < m_count; ++k)
-        {
-            WarmStartConstraint(m_velocity[k], data.velocities);
-        }
-        return;
-    }
-    m_coloredSolver.WarmStart(data);
-    for (const std::int32_t k : m_coloredSolver.Coloring().overflow)
+    for (std::size_t k = 0; k < m_count; ++k)
     {
         WarmStartConstraint(m_velocity[k], data.velocities);
     }
@@ -295,11 +271,6 @@ void SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Real& wA, Vec2& v
 
 void ContactSolver::SolveVelocities(SolverData& data)
 {
-    if (m_colored)
-    {
-        m_coloredSolver.SolveVelocities({m_velocity.data(), m_count}, data);
-        return;
-    }
     const bool blockSolver = data.step.solver.blockSolver;
     for (std::size_t i = 0; i < m_count; ++i)
     {
@@ -368,45 +339,21 @@ void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities
 
 void ContactSolver::CollectResults()
 {
-    const auto collect = [&](std::size_t k)
+    for (std::size_t k = 0; k < m_count; ++k)
     {
-        const ContactVelocityConstraint& vc = m_velocity[k];
-        SolvedContact& solved = m_solved[k];
-        solved.contactIndex = vc.contactIndex;
-        solved.pointCount = vc.pointCount;
-        for (int j = 0; j < vc.pointCount; ++j)
-        {
-            solved.normalImpulse[j] = vc.points[j].normalImpulse;
-            solved.tangentImpulse[j] = vc.points[j].tangentImpulse;
-            solved.normalVelocity[j] = vc.points[j].normalVelocity;
-        }
-    };
-    if (!m_colored)
-    {
-        for (std::size_t k = 0; k < m_count; ++k)
-        {
-            collect(k);
-        }
-        return;
-    }
-    m_coloredSolver.CollectResults({m_solved.data(), m_count});
-    for (const std::int32_t k : m_coloredSolver.Coloring().overflow)
-    {
-        collect(static_cast<std::size_t>(k));
+        CollectContactResult(m_velocity[k], m_solved[k]);
     }
 }
 
-void ContactSolver::StoreImpulses(std::span<Contact> contacts)
+void CollectContactResult(const ContactVelocityConstraint& vc, SolvedContact& solved)
 {
-    CollectResults();
-    for (const SolvedContact& solved : SolvedContacts())
+    solved.contactIndex = vc.contactIndex;
+    solved.pointCount = vc.pointCount;
+    for (int j = 0; j < vc.pointCount; ++j)
     {
-        Manifold& manifold = contacts[solved.contactIndex].manifold;
-        for (int j = 0; j < solved.pointCount; ++j)
-        {
-            manifold.points[j].normalImpulse = solved.normalImpulse[j];
-            manifold.points[j].tangentImpulse = solved.tangentImpulse[j];
-        }
+        solved.normalImpulse[j] = vc.points[j].normalImpulse;
+        solved.tangentImpulse[j] = vc.points[j].tangentImpulse;
+        solved.normalVelocity[j] = vc.points[j].normalVelocity;
     }
 }
 
@@ -522,10 +469,6 @@ Real SolvePositionConstraint(const ContactPositionConstraint& pc, Position* posi
 
 bool ContactSolver::SolvePositions(SolverData& data)
 {
-    if (m_colored)
-    {
-        return m_coloredSolver.SolvePositions({m_position.data(), m_count}, data);
-    }
     const Tolerances& tol = data.step.tolerances;
     const Real minSeparation =
         SolvePositionSweep({m_position.data(), m_count}, data.positions, tol, tol.baumgarte,

@@ -1,7 +1,7 @@
-#include "dynamics/colored_joint_solver.h"
+#include "solvers/colour/revolute_lanes.h"
 
-#include "dynamics/lane_bodies.h"
 #include "joints/joint.h"
+#include "solvers/lanes/lane_bodies.h"
 
 #include <algorithm>
 #include <cmath>
@@ -108,20 +108,20 @@ RealW SolvePositionGroup(const RevoluteJointGroup& g, Position* positions)
 
 } // namespace
 
-void ColoredJointSolver::Prepare(std::span<RevoluteJoint* const> joints,
-                                 std::span<const ConstraintBodies> bodies, const SolverData& data)
+void RevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
+                            std::span<const ConstraintBodies> bodies, const SolverData& data)
 {
     // The island's bodies are the solver indices below the discard slot.
     const std::int32_t discardIndex = data.discardIndex;
-    ColorConstraints(
+    ColourConstraints(
         joints.size(), static_cast<std::size_t>(discardIndex),
-        [&](std::size_t i) { return bodies[i]; }, m_coloring);
+        [&](std::size_t i) { return bodies[i]; }, m_colouring);
     m_groups.clear();
     m_sources.clear();
-    for (int color = 0; color < m_coloring.ColorCount(); ++color)
+    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
     {
-        const std::int32_t begin = m_coloring.colorStarts[color];
-        const std::int32_t end = m_coloring.colorStarts[color + 1];
+        const std::int32_t begin = m_colouring.colourStarts[colour];
+        const std::int32_t end = m_colouring.colourStarts[colour + 1];
         for (std::int32_t first = begin; first < end; first += kLanes)
         {
             // Empty lanes read body 0 and write the discard slot; all their masses are zero.
@@ -131,7 +131,7 @@ void ColoredJointSolver::Prepare(std::span<RevoluteJoint* const> joints,
             for (int l = 0; l < kLanes; ++l)
             {
                 RevoluteJoint* joint =
-                    first + l < end ? joints[m_coloring.order[first + l]] : nullptr;
+                    first + l < end ? joints[m_colouring.order[first + l]] : nullptr;
                 m_sources.push_back(joint);
                 if (joint != nullptr)
                 {
@@ -143,7 +143,7 @@ void ColoredJointSolver::Prepare(std::span<RevoluteJoint* const> joints,
     }
 }
 
-void ColoredJointSolver::SolveVelocities(Velocity* velocities)
+void RevoluteLanes::SolveVelocities(Velocity* velocities)
 {
     for (RevoluteJointGroup& group : m_groups)
     {
@@ -151,7 +151,7 @@ void ColoredJointSolver::SolveVelocities(Velocity* velocities)
     }
 }
 
-void ColoredJointSolver::StoreImpulses() const
+void RevoluteLanes::StoreImpulses() const
 {
     for (std::size_t i = 0; i < m_sources.size(); ++i)
     {
@@ -164,7 +164,7 @@ void ColoredJointSolver::StoreImpulses() const
     }
 }
 
-bool ColoredJointSolver::SolvePositions(Position* positions, const Tolerances& tolerances)
+bool RevoluteLanes::SolvePositions(Position* positions, const Tolerances& tolerances)
 {
     RealW largestSquared = Splat(0);
     for (const RevoluteJointGroup& group : m_groups)

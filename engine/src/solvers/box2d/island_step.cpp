@@ -1,0 +1,138 @@
+#include "solvers/box2d/island_step.h"
+
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
+#include "dynamics/joint_slot.h"
+
+#include <cmath>
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// The position pass; true when it converged (Box2D's positionSolved).
+bool CorrectPositions(ContactStage& contacts, JointStage& joints, SolverData& data)
+{
+    for (int i = 0; i < data.step.solver.positionIterations; ++i)
+    {
+        const bool contactsOkay = contacts.SolvePositions(data);
+        const bool jointsOkay = joints.SolvePositions(data);
+        if (contactsOkay && jointsOkay)
+        {
+            return true; // every constraint within tolerance: later sweeps would only add drift
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
+                 ContactStage& contacts, JointStage& joints)
+{
+    IntegrateVelocities(world, island, step);
+    SolverData data{step, island.positions.data(), island.velocities.data(),
+                    static_cast<std::int32_t>(island.bodies.size())};
+
+    contacts.Prepare({island.contacts, world.contacts, world.bodies}, data);
+    if (step.solver.warmStarting)
+    {
+        contacts.WarmStart(data);
+    }
+    joints.Prepare(island.joints, world.joints, world.bodies, data);
+
+    for (int i = 0; i < step.solver.velocityIterations; ++i)
+    {
+        joints.SolveVelocities(data);
+        contacts.SolveVelocities(data);
+    }
+    contacts.CollectResults();
+    StoreContactImpulses(contacts.SolvedContacts(), world.contacts);
+    joints.StoreImpulses();
+
+    IntegratePositions(island, step);
+    const bool positionSolved = CorrectPositions(contacts, joints, data);
+    FinishBodies(world, island);
+    world.solvedContacts.Record(contacts.SolvedContacts(), contacts.AnyHitEvents(), step);
+    if (world.allowSleep)
+    {
+        UpdateSleep(world, island, step, positionSolved);
+    }
+}
+
+void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step)
+{
+    const std::size_t count = island.bodies.size();
+    // One slot more than the island's bodies: SolverData::discardIndex.
+    island.positions.resize(count + 1);
+    island.velocities.resize(count + 1);
+    const Real h = step.dt;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        Body& body = world.bodies[island.bodies[i]];
+        Vec2 v = body.linearVelocity;
+        Real w = body.angularVelocity;
+        body.sweep.c0 = body.sweep.c;
+        body.sweep.a0 = body.sweep.a;
+        if (body.type == BodyType::Dynamic)
+        {
+            // Semi-implicit Euler: v += h·(g + F/m), then the damping ODE dv/dt = −c·v solved
+            // implicitly (stable for any c·h).
+            v += h * body.invMass * (body.gravityScale * body.mass * world.gravity + body.force);
+            w += h * body.invI * body.torque;
+            v *= Real(1) / (Real(1) + h * body.linearDamping);
+            w *= Real(1) / (Real(1) + h * body.angularDamping);
+        }
+        island.positions[i] = {body.sweep.c, body.sweep.a};
+        island.velocities[i] = {v, w};
+    }
+}
+
+void IntegratePositions(Island& island, const StepContext& step)
+{
+    const Real h = step.dt;
+    const Tolerances& tol = step.tolerances;
+    const Real maxTranslationSquared = tol.maxTranslation * tol.maxTranslation;
+    const Real maxRotationSquared = tol.maxRotation * tol.maxRotation;
+    for (std::size_t i = 0; i < island.bodies.size(); ++i)
+    {
+        Vec2 c = island.positions[i].c;
+        Real a = island.positions[i].a;
+        Vec2 v = island.velocities[i].v;
+        Real w = island.velocities[i].w;
+
+        // Clamp the motion of one step: a body cannot outrun the broad phase's margins.
+        const Vec2 translation = h * v;
+        if (Dot(translation, translation) > maxTranslationSquared)
+        {
+            v *= tol.maxTranslation / translation.Length();
+        }
+        const Real rotation = h * w;
+        if (rotation * rotation > maxRotationSquared)
+        {
+            w *= tol.maxRotation / std::abs(rotation);
+        }
+
+        c += h * v;
+        a += h * w;
+        island.positions[i] = {c, a};
+        island.velocities[i] = {v, w};
+    }
+}
+
+void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts)
+{
+    for (const SolvedContact& s : solved)
+    {
+        Manifold& manifold = contacts[s.contactIndex].manifold;
+        for (int j = 0; j < s.pointCount; ++j)
+        {
+            manifold.points[j].normalImpulse = s.normalImpulse[j];
+            manifold.points[j].tangentImpulse = s.tangentImpulse[j];
+        }
+    }
+}
+
+} // namespace meff::detail

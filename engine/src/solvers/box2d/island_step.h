@@ -1,0 +1,80 @@
+// Box2D 2.4.1's step of one island (b2Island::Solve), with the contact rows and the joint rows
+// as stages: the Box2D back end passes its island-order solvers (ContactSolver, JointSolver),
+// the colour back end its lanes (colour/), and the step is the same:
+//
+//   integrate velocities → prepare contacts → warm start contacts → prepare joints (with their
+//   warm start) → velocity sweeps (joints, then contacts) → store impulses → integrate
+//   positions → correct positions (contacts, then joints; stop once within tolerance) → finish
+//   bodies → report solved contacts → sleep
+#pragma once
+
+#include "dynamics/solver_types.h"
+#include "solvers/box2d/contact_constraint.h"
+#include "solvers/island.h"
+#include "solvers/solver.h"
+
+#include <cstdint>
+#include <span>
+
+namespace meff::detail
+{
+
+struct Contact;
+struct JointSlot;
+
+/// The contact rows of one island (ContactSolver in island order, ColourContactSolver by colour).
+class ContactStage
+{
+  public:
+    /// Builds the rows of the island's contacts. Bodies' islandIndex must be set.
+    virtual void Prepare(const IslandContacts& island, SolverData& data) = 0;
+    /// Applies last step's accumulated impulses (scaled in Prepare).
+    virtual void WarmStart(SolverData& data) = 0;
+    /// One velocity sweep: each contact's friction rows, then its normal rows.
+    virtual void SolveVelocities(SolverData& data) = 0;
+    /// Gathers what the rest of the step reads of the solved contacts into SolvedContacts().
+    virtual void CollectResults() = 0;
+    /// One non-linear Gauss-Seidel sweep; true when no point overlaps more than 3·slop.
+    virtual bool SolvePositions(SolverData& data) = 0;
+    /// The island's contacts in island order, after CollectResults.
+    virtual std::span<const SolvedContact> SolvedContacts() const = 0;
+    /// Whether any of the island's contacts has a shape that asked for hit events.
+    virtual bool AnyHitEvents() const = 0;
+
+  protected:
+    ~ContactStage() = default;
+};
+
+/// The joint rows of one island (JointSolver in island order, ColourJointSolver by colour).
+class JointStage
+{
+  public:
+    /// Prepares the island's joints and applies their warm start (InitVelocityConstraints).
+    /// Bodies' islandIndex must be set.
+    virtual void Prepare(std::span<const std::int32_t> jointIndices, std::span<JointSlot> joints,
+                         std::span<const Body> bodies, SolverData& data) = 0;
+    /// One velocity sweep.
+    virtual void SolveVelocities(SolverData& data) = 0;
+    /// Leaves every joint's accumulated impulses in the joint (reactions, next warm start).
+    virtual void StoreImpulses() = 0;
+    /// One non-linear Gauss-Seidel sweep; true when every joint is within tolerance.
+    virtual bool SolvePositions(SolverData& data) = 0;
+
+  protected:
+    ~JointStage() = default;
+};
+
+/// Solves one island for one step with the given contact and joint stages.
+void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
+                 ContactStage& contacts, JointStage& joints);
+
+/// Copies the island's bodies into island.positions/velocities (one slot more for the lanes'
+/// discard, SolverData::discardIndex) and adds gravity, forces and damping to the velocities.
+void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step);
+/// Moves every body of the island by h·v (its motion clamped to Tolerances::maxTranslation
+/// and maxRotation per step).
+void IntegratePositions(Island& island, const StepContext& step);
+/// Writes each solved contact's accumulated impulses into its manifold: next step's warm start.
+void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts);
+
+} // namespace meff::detail

@@ -1,0 +1,62 @@
+#include "solvers/box2d/joint_solver.h"
+
+#include "dynamics/body.h"
+#include "dynamics/joint_slot.h"
+#include "joints/joint.h"
+
+namespace meff::detail
+{
+
+JointBody JointBodyOf(const Body& body)
+{
+    return JointBody{body.islandIndex, body.sweep.localCenter, body.invMass, body.invI};
+}
+
+void PrepareSequentialJoint(Joint& joint, std::span<const Body> bodies, SolverData& data)
+{
+    InitJointVelocityConstraints(joint, JointBodyOf(bodies[joint.bodyA]),
+                                 JointBodyOf(bodies[joint.bodyB]), data);
+}
+
+void SolveSequentialVelocities(std::span<Joint* const> joints, SolverData& data)
+{
+    for (Joint* joint : joints)
+    {
+        SolveJointVelocityConstraints(*joint, data);
+    }
+}
+
+bool SolveSequentialPositions(std::span<Joint* const> joints, SolverData& data)
+{
+    bool okay = true;
+    for (Joint* joint : joints)
+    {
+        const bool jointOkay = SolveJointPositionConstraints(*joint, data);
+        okay = okay && jointOkay;
+    }
+    return okay;
+}
+
+void JointSolver::Prepare(std::span<const std::int32_t> jointIndices, std::span<JointSlot> joints,
+                          std::span<const Body> bodies, SolverData& data)
+{
+    m_joints.clear();
+    for (const std::int32_t j : jointIndices)
+    {
+        Joint& joint = joints[j].joint;
+        PrepareSequentialJoint(joint, bodies, data);
+        m_joints.push_back(&joint);
+    }
+}
+
+void JointSolver::SolveVelocities(SolverData& data)
+{
+    SolveSequentialVelocities(m_joints, data);
+}
+
+bool JointSolver::SolvePositions(SolverData& data)
+{
+    return SolveSequentialPositions(m_joints, data);
+}
+
+} // namespace meff::detail

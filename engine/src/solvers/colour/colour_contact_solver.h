@@ -1,0 +1,43 @@
+// The contact rows of an island by colour (SolverKind::Colour): the coloured contacts in SIMD
+// lanes (contact_lanes.h), then the contacts no colour had room for one by one in island order,
+// with Box2D's scalar rows (box2d/contact_constraint.h).
+#pragma once
+
+#include "solvers/box2d/island_step.h"
+#include "solvers/colour/contact_lanes.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace meff::detail
+{
+
+class ColourContactSolver final : public ContactStage
+{
+  public:
+    void Prepare(const IslandContacts& island, SolverData& data) override;
+    void WarmStart(SolverData& data) override;
+    void SolveVelocities(SolverData& data) override;
+    void CollectResults() override;
+    bool SolvePositions(SolverData& data) override;
+    std::span<const SolvedContact> SolvedContacts() const override
+    {
+        return {m_solved.data(), m_count};
+    }
+    bool AnyHitEvents() const override { return m_anyHitEvents; }
+
+  private:
+    std::span<const std::int32_t> Overflow() const { return m_lanes.Colouring().overflow; }
+
+    ContactLanes m_lanes;
+    /// The overflow's rows, at the contact's island position k (other slots unused).
+    std::vector<ContactVelocityConstraint> m_velocity;
+    std::vector<ContactPositionConstraint> m_position;
+    std::vector<SolvedContact> m_solved; ///< island order
+    std::size_t m_count = 0;
+    bool m_anyHitEvents = false;
+    bool m_blockSolver = true;
+};
+
+} // namespace meff::detail

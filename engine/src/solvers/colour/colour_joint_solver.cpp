@@ -1,0 +1,99 @@
+#include "solvers/colour/colour_joint_solver.h"
+
+#include "dynamics/body.h"
+#include "dynamics/joint_slot.h"
+#include "joints/joint.h"
+#include "solvers/box2d/joint_solver.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// A revolute joint whose only rows are the point block: what the SIMD lanes solve.
+RevoluteJoint* LaneRevolute(Joint& joint, const SolverSettings& solver)
+{
+    auto* revolute = std::get_if<RevoluteJoint>(&joint.data);
+    if (revolute == nullptr || revolute->enableLimit || revolute->enableMotor ||
+        !solver.blockJoints)
+    {
+        return nullptr;
+    }
+    return revolute;
+}
+
+} // namespace
+
+void ColourJointSolver::Prepare(std::span<const std::int32_t> jointIndices,
+                                std::span<JointSlot> joints, std::span<const Body> bodies,
+                                SolverData& data)
+{
+    m_sequential.clear();
+    m_candidates.clear();
+    m_candidateRevolutes.clear();
+    m_candidateBodies.clear();
+    for (const std::int32_t j : jointIndices)
+    {
+        Joint& joint = joints[j].joint;
+        if (RevoluteJoint* revolute = LaneRevolute(joint, data.step.solver))
+        {
+            // The lanes prepare the rest, four joints at a time.
+            const JointBody a = JointBodyOf(bodies[joint.bodyA]);
+            const JointBody b = JointBodyOf(bodies[joint.bodyB]);
+            StoreJointBodies(*revolute, a, b);
+            m_candidates.push_back(&joint);
+            m_candidateRevolutes.push_back(revolute);
+            m_candidateBodies.push_back({a.solverIndex, b.solverIndex,
+                                         SolverMoves(a.invMass, a.invI),
+                                         SolverMoves(b.invMass, b.invI)});
+        }
+        else
+        {
+            PrepareSequentialJoint(joint, bodies, data);
+            m_sequential.push_back(&joint);
+        }
+    }
+    // An island without lane joints (most islands of a contact scene) skips the colouring.
+    m_lanesInUse = !m_candidates.empty();
+    if (m_lanesInUse)
+    {
+        m_lanes.Prepare(m_candidateRevolutes, m_candidateBodies, data);
+        for (const std::int32_t i : m_lanes.Overflow())
+        {
+            Joint& joint = *m_candidates[i];
+            PrepareSequentialJoint(joint, bodies, data);
+            m_sequential.push_back(&joint);
+        }
+    }
+}
+
+void ColourJointSolver::SolveVelocities(SolverData& data)
+{
+    if (m_lanesInUse)
+    {
+        m_lanes.SolveVelocities(data.velocities);
+    }
+    SolveSequentialVelocities(m_sequential, data);
+}
+
+void ColourJointSolver::StoreImpulses()
+{
+    if (m_lanesInUse)
+    {
+        m_lanes.StoreImpulses();
+    }
+}
+
+bool ColourJointSolver::SolvePositions(SolverData& data)
+{
+    bool okay = true;
+    if (m_lanesInUse)
+    {
+        okay = m_lanes.SolvePositions(data.positions, data.step.tolerances);
+    }
+    const bool sequentialOkay = SolveSequentialPositions(m_sequential, data);
+    return okay && sequentialOkay;
+}
+
+} // namespace meff::detail

@@ -1,0 +1,39 @@
+// The joint rows of an island by colour (SolverKind::Colour): revolute joints whose only rows
+// are the point block (no limit, no motor, blockJoints on) go by colour in SIMD lanes
+// (revolute_lanes.h); every other joint, and the lane joints no colour had room for, are solved
+// one by one in island order after the lanes, with their own rows (box2d/joint_solver.h).
+#pragma once
+
+#include "solvers/box2d/island_step.h"
+#include "solvers/colour/revolute_lanes.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace meff::detail
+{
+
+struct Joint;
+struct RevoluteJoint;
+
+class ColourJointSolver final : public JointStage
+{
+  public:
+    void Prepare(std::span<const std::int32_t> jointIndices, std::span<JointSlot> joints,
+                 std::span<const Body> bodies, SolverData& data) override;
+    void SolveVelocities(SolverData& data) override;
+    void StoreImpulses() override;
+    bool SolvePositions(SolverData& data) override;
+
+  private:
+    std::vector<Joint*> m_sequential; ///< solved one by one, in island order
+    /// The joints the lanes can take, as joints and as revolute joints.
+    std::vector<Joint*> m_candidates;
+    std::vector<RevoluteJoint*> m_candidateRevolutes;
+    std::vector<ConstraintBodies> m_candidateBodies;
+    bool m_lanesInUse = false;
+    RevoluteLanes m_lanes;
+};
+
+} // namespace meff::detail

@@ -1,0 +1,46 @@
+#include "solvers/solver.h"
+
+#include "solvers/box2d/box2d_solver.h"
+#include "solvers/colour/colour_solver.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+std::unique_ptr<Solver> MakeSolver(SolverKind kind)
+{
+    switch (kind)
+    {
+    case SolverKind::Box2D:
+        return std::make_unique<Box2DSolver>();
+    case SolverKind::Colour:
+        return std::make_unique<ColourSolver>();
+    }
+    return nullptr;
+}
+
+} // namespace
+
+SolverSet::SolverSet() = default;
+SolverSet::~SolverSet() = default;
+SolverSet::SolverSet(const SolverSet&) {}
+SolverSet& SolverSet::operator=(const SolverSet&)
+{
+    return *this;
+}
+SolverSet::SolverSet(SolverSet&&) noexcept = default;
+SolverSet& SolverSet::operator=(SolverSet&&) noexcept = default;
+
+Solver& SolverSet::For(SolverKind kind)
+{
+    std::unique_ptr<Solver>& solver = m_solvers[static_cast<int>(kind)];
+    if (!solver)
+    {
+        solver = MakeSolver(kind);
+    }
+    return *solver;
+}
+
+} // namespace meff::detail

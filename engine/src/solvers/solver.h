@@ -1,0 +1,88 @@
+// The seam between the world's step and its solver back ends (SolverKind). World::Step runs
+// the stages every back end shares — find new contacts, the narrow phase, synchronize the broad
+// phase, continuous collision — and hands the solving of the awake bodies to the back end the
+// settings choose. A back end lives in its own folder (box2d/, colour/) and owns its
+// integration, its rows and its scratch memory; what it may read and write of the world is
+// SolverWorld, and the contacts it solved it hands back through SolvedContactSink.
+#pragma once
+
+#include "dynamics/solver_types.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace meff::detail
+{
+
+struct Body;
+struct Contact;
+struct JointSlot;
+struct SolvedContact;
+
+/// Where a back end hands the contacts it has just solved (an island, or a time-of-impact
+/// sub-step): the world records them for the contact reports and turns them into hit events.
+class SolvedContactSink
+{
+  public:
+    /// `anyHitEvents`: whether any of them has a shape that asked for hit events.
+    virtual void Record(std::span<const SolvedContact> solved, bool anyHitEvents,
+                        const StepContext& step) = 0;
+
+  protected:
+    ~SolvedContactSink() = default;
+};
+
+/// What a back end reads and writes of the world in one step.
+struct SolverWorld
+{
+    /// Read: mass, damping, forces, state, sleep flags. Written: centre of mass, angle,
+    /// transform and velocities of the bodies it solved, their sweeps' start (c0, a0), island
+    /// flags and solver indices, rest times and sleep.
+    std::vector<Body>& bodies;
+    /// Read: manifolds, materials and flags of touching contacts. Written: the manifold
+    /// points' accumulated impulses (next step's warm start) and island flags.
+    std::vector<Contact>& contacts;
+    /// Read: definitions. Written: accumulated impulses, solver temporaries, island flags.
+    std::vector<JointSlot>& joints;
+    std::int32_t bodyList; ///< newest first: the order the island search takes its seeds in
+    Vec2 gravity;          ///< m/s²
+    bool allowSleep;
+    std::uint64_t stepCount; ///< steps taken so far, for error messages
+    SolvedContactSink& solvedContacts;
+};
+
+/// One solver back end.
+class Solver
+{
+  public:
+    virtual ~Solver() = default;
+    /// Advances every awake body by one step: integrates forces and gravity, solves contacts
+    /// and joints, writes the bodies back (throwing SimulationError, with the bodies left at
+    /// their last good state, when one became non-finite), reports the solved contacts, and
+    /// with allowSleep puts resting islands to sleep. Sets Body::islandFlag on every body it
+    /// moved, which the broad-phase synchronization reads.
+    virtual void Step(SolverWorld& world, const StepContext& step) = 0;
+};
+
+/// The world's back ends, each made when first used (a world pays for the one it runs).
+/// Copying a world (a snapshot) does not copy them: they hold only memory that every step
+/// rebuilds, so a copy starts with none.
+class SolverSet
+{
+  public:
+    SolverSet();
+    ~SolverSet();
+    SolverSet(const SolverSet&);
+    SolverSet& operator=(const SolverSet&);
+    SolverSet(SolverSet&&) noexcept;
+    SolverSet& operator=(SolverSet&&) noexcept;
+
+    Solver& For(SolverKind kind);
+
+  private:
+    std::unique_ptr<Solver> m_solvers[2]; ///< by SolverKind
+};
+
+} // namespace meff::detail
