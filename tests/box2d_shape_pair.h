@@ -1,5 +1,5 @@
-// Random shapes built identically in meff and in Box2D 2.4.1, for golden tests that compare
-// distance, shape cast and time of impact between the engines.
+// Random shapes and poses built identically in meff and in Box2D 2.4.1, for golden tests that
+// compare distance, shape cast, time of impact and manifolds between the engines.
 #pragma once
 
 #ifndef MEFF_DOUBLE
@@ -9,6 +9,7 @@
 #include "meff/error.h"
 
 #include <box2d/b2_circle_shape.h>
+#include <box2d/b2_collision.h>
 #include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
 
@@ -115,6 +116,47 @@ inline ShapePair RandomShape(Random& rng, const ShapeSizes& sizes)
     }
     }
     return pair;
+}
+
+/// One pose in both engines.
+struct Pose
+{
+    Transform meff;
+    b2Transform box2d;
+};
+
+/// Position within ±range of the origin (m), angle within ±angleRange (rad).
+inline Pose RandomPose(Random& rng, float range, float angleRange = 4)
+{
+    const Vec2 p{rng.Uniform(-range, range), rng.Uniform(-range, range)};
+    const float angle = rng.Uniform(-angleRange, angleRange);
+    Pose pose;
+    pose.meff.Set(p, angle);
+    pose.box2d.Set(b2Vec2(p.x, p.y), angle);
+    return pose;
+}
+
+/// The manifold equals Box2D's bit for bit: type, normal, reference point, every point and its
+/// feature key. Returns whether it has points.
+inline bool RequireSameManifold(const Manifold& m, const b2Manifold& expected)
+{
+    REQUIRE(m.pointCount == expected.pointCount);
+    if (m.pointCount == 0)
+    {
+        return false;
+    }
+    REQUIRE(static_cast<int>(m.type) == static_cast<int>(expected.type));
+    REQUIRE(m.localNormal.x == expected.localNormal.x);
+    REQUIRE(m.localNormal.y == expected.localNormal.y);
+    REQUIRE(m.localPoint.x == expected.localPoint.x);
+    REQUIRE(m.localPoint.y == expected.localPoint.y);
+    for (int i = 0; i < m.pointCount; ++i)
+    {
+        REQUIRE(m.points[i].localPoint.x == expected.points[i].localPoint.x);
+        REQUIRE(m.points[i].localPoint.y == expected.points[i].localPoint.y);
+        REQUIRE(m.points[i].id.Key() == expected.points[i].id.key);
+    }
+    return true;
 }
 
 } // namespace meff::test

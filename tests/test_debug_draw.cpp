@@ -174,3 +174,28 @@ TEST_CASE("DrawArrow draws a shaft and a two-stroke head, nothing when empty", "
     DrawArrow(empty, {1, 1}, {1, 1}, Real(0.3), DrawColor{});
     CHECK(empty.calls.empty());
 }
+
+TEST_CASE("World::Draw draws a chain's segments with a tick on their solid side", "[debug_draw]")
+{
+    World world{WorldDef{}};
+    const BodyId ground = world.CreateBody(BodyDef{});
+    // Listed right to left: solid side up.
+    const std::vector<Vec2> points{{4, 0}, {0, 0}, {-4, 0}};
+    world.CreateChain(ground, ShapeDef{}, Chain{.points = points});
+    RecordingDraw draw;
+    world.Draw(draw, DrawFlags{});
+    // Each segment, then a tick from its middle along the normal: 0.1 of its length, at most
+    // 0.25 m, so 0.25 m up for these 4 m segments.
+    REQUIRE(draw.calls == std::vector<std::string>{"segment", "segment", "segment", "segment"});
+    for (int k = 0; k < 2; ++k)
+    {
+        const auto [p1, p2] = draw.segments[std::size_t(2 * k)];
+        const auto [tail, tip] = draw.segments[std::size_t(2 * k + 1)];
+        CHECK(double(p1.y) == 0);
+        CHECK(double(p2.y) == 0);
+        CHECK(double(tail.x) == Approx(0.5 * (p1.x + p2.x)));
+        CHECK(double(tail.y) == 0);
+        CHECK(double(tip.x) == Approx(tail.x));
+        CHECK(double(tip.y) == Approx(0.25));
+    }
+}

@@ -137,21 +137,8 @@ ShapePair RandomShape(Random& rng)
     return meff::test::RandomShape(rng, {0.5f, 0.05f, 1.0f, 1.0f});
 }
 
-struct Pose
-{
-    Transform meff;
-    b2Transform box2d;
-};
-
-Pose RandomPose(Random& rng, float range)
-{
-    const Vec2 p{rng.Uniform(-range, range), rng.Uniform(-range, range)};
-    const float angle = rng.Uniform(-4, 4);
-    Pose pose;
-    pose.meff.Set(p, angle);
-    pose.box2d.Set(b2Vec2(p.x, p.y), angle);
-    return pose;
-}
+using meff::test::Pose;
+using meff::test::RandomPose;
 
 b2Vec2 ToB2(Vec2 v)
 {

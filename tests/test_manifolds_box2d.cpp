@@ -86,26 +86,14 @@ TEST_CASE("CollidePolygons and WorldManifold agree bit for bit with Box2D 2.4.1"
         CollidePolygons(m, a.polygon, xfA, b.polygon, xfB);
 
         INFO("trial " << trial << ": counts " << a.polygon.count << ", " << b.polygon.count);
-        REQUIRE(m.pointCount == expected.pointCount);
         smallPairs += a.polygon.count <= 4 && b.polygon.count <= 4 ? 1 : 0;
         triangles += a.polygon.count == 3 || b.polygon.count == 3 ? 1 : 0;
-        if (m.pointCount == 0)
+        if (!meff::test::RequireSameManifold(m, expected))
         {
             continue;
         }
         ++touching;
-        REQUIRE(static_cast<int>(m.type) == static_cast<int>(expected.type));
         flipped += m.type == Manifold::Type::FaceB ? 1 : 0;
-        REQUIRE(m.localNormal.x == expected.localNormal.x);
-        REQUIRE(m.localNormal.y == expected.localNormal.y);
-        REQUIRE(m.localPoint.x == expected.localPoint.x);
-        REQUIRE(m.localPoint.y == expected.localPoint.y);
-        for (int i = 0; i < m.pointCount; ++i)
-        {
-            REQUIRE(m.points[i].localPoint.x == expected.points[i].localPoint.x);
-            REQUIRE(m.points[i].localPoint.y == expected.points[i].localPoint.y);
-            REQUIRE(m.points[i].id.Key() == expected.points[i].id.key);
-        }
 
         const Real radiusA = a.polygon.radius, radiusB = b.polygon.radius;
         b2WorldManifold expectedWorld;

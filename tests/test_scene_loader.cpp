@@ -4,29 +4,18 @@
 
 #include <catch2/catch.hpp>
 
+#include "scene_errors.h"
+
 #include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 using namespace meff;
+using meff::test::ErrorsOf;
 
 namespace
 {
-
-/// The messages ParseScene throws for `text`, or an empty list when it loads.
-std::vector<std::string> ErrorsOf(const std::string& text)
-{
-    try
-    {
-        ParseScene(text, "x.json");
-    }
-    catch (const SceneError& error)
-    {
-        return error.messages();
-    }
-    return {};
-}
 
 /// A valid scene with one dynamic body whose single shape is `shape` (JSON text).
 std::string SceneWithShape(const std::string& shape)

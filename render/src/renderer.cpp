@@ -246,6 +246,9 @@ Camera FitCamera(const World& world, int width, int height)
             case ShapeType::Segment:
                 box = ComputeAABB(world.GetSegment(shape), xf);
                 break;
+            case ShapeType::ChainSegment:
+                box = ComputeAABB(world.GetChainSegment(shape), xf);
+                break;
             }
             bounds = any ? Combine(bounds, box) : box;
             any = true;

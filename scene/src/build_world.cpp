@@ -65,6 +65,29 @@ ShapeDef MakeShapeDef(const SceneShape& shape)
     return def;
 }
 
+/// The chain of a "chain" shape, the file's points and resolved ghosts.
+ChainId CreateChain(World& world, BodyId body, const SceneShape& shape)
+{
+    std::vector<Vec2> points;
+    points.reserve(shape.points.size());
+    for (const SceneVec2& point : shape.points)
+    {
+        points.push_back(ToVec2(point));
+    }
+    Chain chain;
+    chain.points = points;
+    chain.loop = shape.loop;
+    if (shape.prev)
+    {
+        chain.prev = ToVec2(*shape.prev);
+    }
+    if (shape.next)
+    {
+        chain.next = ToVec2(*shape.next);
+    }
+    return world.CreateChain(body, MakeShapeDef(shape), chain);
+}
+
 ShapeId CreateShape(World& world, BodyId body, const SceneShape& shape)
 {
     const ShapeDef def = MakeShapeDef(shape);
@@ -96,8 +119,17 @@ ShapeId CreateShape(World& world, BodyId body, const SceneShape& shape)
         Segment segment;
         segment.point1 = ToVec2(shape.point1);
         segment.point2 = ToVec2(shape.point2);
+        if (shape.oneSided)
+        {
+            return world.CreateShape(body, def,
+                                     ChainSegment{ToVec2(shape.prev.value_or(shape.point1)),
+                                                  segment,
+                                                  ToVec2(shape.next.value_or(shape.point2))});
+        }
         return world.CreateShape(body, def, segment);
     }
+    case SceneShapeType::Chain:
+        return world.GetChainSegments(CreateChain(world, body, shape)).front();
     }
     throw InvalidArgument("unknown shape type");
 }
@@ -233,11 +265,13 @@ BuiltScene BuildWorld(const Scene& scene)
         built.sceneIndexByPoolIndex[std::size_t(id.index)] = std::ptrdiff_t(i);
 
         std::vector<ShapeId>& shapes = built.shapes.emplace_back();
+        std::vector<ChainId>& chains = built.chains.emplace_back();
         for (std::size_t k = 0; k < body.shapes.size(); ++k)
         {
             try
             {
                 shapes.push_back(CreateShape(built.world, id, body.shapes[k]));
+                chains.push_back(built.world.GetChain(shapes.back()));
             }
             catch (const InvalidArgument& error)
             {

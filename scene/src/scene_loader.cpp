@@ -221,41 +221,158 @@ void ReadPolygonVertices(ObjectReader& reader, SceneShape& shape)
     shape.vertices = *vertices;
 }
 
-void ReadSegmentPoints(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
+/// The ghost vertex `key` ("prev" or "next") of a one-sided segment or open chain, next to
+/// the end point `end` whose segment runs from `inner`: the file's, or the segment continued
+/// in a straight line beyond `end` (computed here in double, so both engines get one number).
+std::optional<SceneVec2> ReadGhost(ObjectReader& reader, std::string_view key, SceneVec2 end,
+                                   SceneVec2 inner)
+{
+    if (reader.Find(key) == nullptr)
+    {
+        return SceneVec2{end.x + (end.x - inner.x), end.y + (end.y - inner.y)};
+    }
+    const std::optional<SceneVec2> ghost = reader.Vector(key, std::nullopt);
+    if (ghost && !(Distance(ToEngine(*ghost), ToEngine(end)) > Tolerances{}.linearSlop))
+    {
+        reader.Fail(key, "must be more than " + scene_detail::FormatReal(Tolerances{}.linearSlop) +
+                             " m from the end point it precedes or follows");
+        return std::nullopt;
+    }
+    return ghost;
+}
+
+/// Segments and chains have no area and so no mass, and the engine does not collide two of
+/// them: they are meant for ground and walls.
+void RefuseOnDynamicBody(ObjectReader& reader, BodyType bodyType, const char* type)
+{
+    if (bodyType == BodyType::Dynamic)
+    {
+        reader.Fail("type", "must not be \"" + std::string(type) + "\" on a dynamic body (" + type +
+                                "s have no mass; use them for static or kinematic bodies)");
+    }
+}
+
+/// Returns whether the two points are usable (the ghosts are measured from them).
+bool ReadSegmentPoints(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
 {
     const std::optional<std::vector<SceneVec2>> points = reader.VectorList("points");
     if (!points)
     {
-        return;
+        return false;
     }
     if (points->size() != 2)
     {
         reader.Fail("points", "must be two points [[x1, y1], [x2, y2]]");
-        return;
+        return false;
     }
     const Real minimumLength = Tolerances{}.linearSlop;
     if (!(Distance(ToEngine((*points)[0]), ToEngine((*points)[1])) > minimumLength))
     {
         reader.Fail("points",
                     "must be more than " + scene_detail::FormatReal(minimumLength) + " m apart");
-        return;
+        return false;
     }
-    // A segment has no area and so no mass, and the engine does not collide two segments:
-    // it is meant for ground and walls.
-    if (bodyType == BodyType::Dynamic)
-    {
-        reader.Fail("type", "must not be \"segment\" on a dynamic body (segments have no mass; "
-                            "use them for static or kinematic bodies)");
-        return;
-    }
+    RefuseOnDynamicBody(reader, bodyType, "segment");
     shape.point1 = (*points)[0];
     shape.point2 = (*points)[1];
+    return true;
+}
+
+/// A segment's optional "one_sided" with its ghosts "prev" and "next" (only when one-sided;
+/// checked only against usable points).
+void ReadSegmentSides(ObjectReader& reader, bool pointsRead, SceneShape& shape)
+{
+    Assign(shape.oneSided, reader.Boolean("one_sided", false));
+    if (!shape.oneSided)
+    {
+        for (const char* key : {"prev", "next"})
+        {
+            if (reader.Find(key) != nullptr)
+            {
+                reader.Fail(key, "is only for a one-sided segment (\"one_sided\": true)");
+            }
+        }
+    }
+    else if (pointsRead)
+    {
+        shape.prev = ReadGhost(reader, "prev", shape.point1, shape.point2);
+        shape.next = ReadGhost(reader, "next", shape.point2, shape.point1);
+    }
+    else
+    {
+        reader.Find("prev");
+        reader.Find("next");
+    }
+}
+
+/// A chain's points: at least 2 (3 for a loop), consecutive ones (a loop's last and first
+/// too) more than the linear slop apart. Returns whether they are usable.
+bool ReadChainPoints(ObjectReader& reader, SceneShape& shape)
+{
+    const std::optional<std::vector<SceneVec2>> points = reader.VectorList("points");
+    if (!points)
+    {
+        return false;
+    }
+    const std::size_t minimum = shape.loop ? 3 : 2;
+    if (points->size() < minimum)
+    {
+        reader.Fail("points", std::string("must list at least ") + std::to_string(minimum) +
+                                  " points for " + (shape.loop ? "a loop" : "an open chain"));
+        return false;
+    }
+    const Real minimumLength = Tolerances{}.linearSlop;
+    const std::size_t n = points->size();
+    for (std::size_t i = shape.loop ? 0 : 1; i < n; ++i)
+    {
+        const std::size_t before = (i + n - 1) % n;
+        if (!(Distance(ToEngine((*points)[before]), ToEngine((*points)[i])) > minimumLength))
+        {
+            reader.Fail("points", "consecutive points " + std::to_string(before) + " and " +
+                                      std::to_string(i) + " must be more than " +
+                                      scene_detail::FormatReal(minimumLength) + " m apart");
+            return false;
+        }
+    }
+    shape.points = *points;
+    return true;
+}
+
+void ReadChain(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
+{
+    Assign(shape.loop, reader.Boolean("loop", false));
+    const bool pointsRead = ReadChainPoints(reader, shape);
+    if (pointsRead)
+    {
+        RefuseOnDynamicBody(reader, bodyType, "chain");
+    }
+    if (shape.loop)
+    {
+        for (const char* key : {"prev", "next"})
+        {
+            if (reader.Find(key) != nullptr)
+            {
+                reader.Fail(key, "must be left out for a loop (its ghosts are its own points)");
+            }
+        }
+    }
+    else if (pointsRead)
+    {
+        const std::vector<SceneVec2>& points = shape.points;
+        shape.prev = ReadGhost(reader, "prev", points.front(), points[1]);
+        shape.next = ReadGhost(reader, "next", points.back(), points[points.size() - 2]);
+    }
+    else
+    {
+        reader.Find("prev");
+        reader.Find("next");
+    }
 }
 
 void ReadShape(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
 {
     const std::optional<std::size_t> type =
-        ReadChoice(reader, "type", {"circle", "box", "polygon", "segment"});
+        ReadChoice(reader, "type", {"circle", "box", "polygon", "segment", "chain"});
     if (!type)
     {
         // Which other fields belong here depends on the type: say nothing more.
@@ -282,7 +399,10 @@ void ReadShape(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
         ReadPolygonVertices(reader, shape);
         break;
     case SceneShapeType::Segment:
-        ReadSegmentPoints(reader, bodyType, shape);
+        ReadSegmentSides(reader, ReadSegmentPoints(reader, bodyType, shape), shape);
+        break;
+    case SceneShapeType::Chain:
+        ReadChain(reader, bodyType, shape);
         break;
     }
     const SceneShape defaults;
@@ -355,7 +475,8 @@ void ReadBody(ObjectReader& reader, SceneBody& body)
             }
             ObjectReader shapeReader(reader.Diag(), entry, path);
             SceneShape& shape = body.shapes.emplace_back();
-            // Without a valid body type, segments are checked as if the body were static
+            // Without a valid body type, segments and chains are checked as if the body were
+            // static
             // rather than reported twice.
             ReadShape(shapeReader, type ? body.type : BodyType::Static, shape);
         }

@@ -21,6 +21,17 @@ b2Vec2 ToB2(SceneVec2 v)
     return {static_cast<float>(v.x), static_cast<float>(v.y)};
 }
 
+std::vector<b2Vec2> ToB2(const std::vector<SceneVec2>& points)
+{
+    std::vector<b2Vec2> converted;
+    converted.reserve(points.size());
+    for (const SceneVec2& point : points)
+    {
+        converted.push_back(ToB2(point));
+    }
+    return converted;
+}
+
 b2BodyType ToB2(BodyType type)
 {
     switch (type)
@@ -92,12 +103,7 @@ b2Fixture* CreateFixture(b2Body* body, const SceneShape& shape)
     }
     case SceneShapeType::Polygon:
     {
-        std::vector<b2Vec2> points;
-        points.reserve(shape.vertices.size());
-        for (const SceneVec2& vertex : shape.vertices)
-        {
-            points.push_back(ToB2(vertex));
-        }
+        const std::vector<b2Vec2> points = ToB2(shape.vertices);
         b2PolygonShape polygon;
         polygon.Set(points.data(), static_cast<int32>(points.size()));
         const b2FixtureDef def = MakeFixtureDef(shape, &polygon);
@@ -106,8 +112,32 @@ b2Fixture* CreateFixture(b2Body* body, const SceneShape& shape)
     case SceneShapeType::Segment:
     {
         b2EdgeShape edge;
-        edge.SetTwoSided(ToB2(shape.point1), ToB2(shape.point2));
+        if (shape.oneSided)
+        {
+            edge.SetOneSided(ToB2(shape.prev.value()), ToB2(shape.point1), ToB2(shape.point2),
+                             ToB2(shape.next.value()));
+        }
+        else
+        {
+            edge.SetTwoSided(ToB2(shape.point1), ToB2(shape.point2));
+        }
         const b2FixtureDef def = MakeFixtureDef(shape, &edge);
+        return body->CreateFixture(&def);
+    }
+    case SceneShapeType::Chain:
+    {
+        const std::vector<b2Vec2> points = ToB2(shape.points);
+        b2ChainShape chain;
+        if (shape.loop)
+        {
+            chain.CreateLoop(points.data(), static_cast<int32>(points.size()));
+        }
+        else
+        {
+            chain.CreateChain(points.data(), static_cast<int32>(points.size()),
+                              ToB2(shape.prev.value()), ToB2(shape.next.value()));
+        }
+        const b2FixtureDef def = MakeFixtureDef(shape, &chain);
         return body->CreateFixture(&def);
     }
     }
@@ -261,6 +291,8 @@ class Box2DMirror::Listener : public b2ContactListener
     {
         const b2Fixture* fixtureA = nullptr;
         const b2Fixture* fixtureB = nullptr;
+        int32 childA = 0; ///< a chain's segment (child index); 0 for other shapes
+        int32 childB = 0;
         std::uint32_t featureKey = 0;
         float normalImpulse = 0;
         float tangentImpulse = 0;
@@ -276,6 +308,8 @@ class Box2DMirror::Listener : public b2ContactListener
             Point point;
             point.fixtureA = contact->GetFixtureA();
             point.fixtureB = contact->GetFixtureB();
+            point.childA = contact->GetChildIndexA();
+            point.childB = contact->GetChildIndexB();
             point.featureKey = manifold->points[i].id.key;
             point.normalImpulse = impulse->normalImpulses[i];
             point.tangentImpulse = impulse->tangentImpulses[i];
@@ -359,7 +393,13 @@ FrameSample Box2DMirror::Sample() const
         const auto& [bodyA, shapeA] = m_shapeOf.at(point.fixtureA);
         const auto& [bodyB, shapeB] = m_shapeOf.at(point.fixtureB);
         ContactSample contact;
-        contact.key = {bodyA, shapeA, bodyB, shapeB, point.featureKey};
+        contact.key = {bodyA,
+                       shapeA,
+                       bodyB,
+                       shapeB,
+                       point.featureKey,
+                       static_cast<std::size_t>(point.childA),
+                       static_cast<std::size_t>(point.childB)};
         contact.normalImpulse = point.normalImpulse;
         contact.tangentImpulse = point.tangentImpulse;
         sample.contacts.push_back(contact);

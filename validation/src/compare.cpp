@@ -14,18 +14,20 @@ namespace meff::validation
 namespace
 {
 
+/// A shape (or a chain's segment): body, shape and child index.
+using ShapeKey = std::tuple<std::size_t, std::size_t, std::size_t>;
 /// The unordered shape pair plus the feature key: equal for the same point in both engines.
-using MatchKey = std::tuple<std::size_t, std::size_t, std::size_t, std::size_t, std::uint32_t>;
+using MatchKey = std::tuple<ShapeKey, ShapeKey, std::uint32_t>;
 
 MatchKey MatchKeyOf(const ContactKey& key)
 {
-    auto a = std::make_pair(key.bodyA, key.shapeA);
-    auto b = std::make_pair(key.bodyB, key.shapeB);
+    ShapeKey a{key.bodyA, key.shapeA, key.childA};
+    ShapeKey b{key.bodyB, key.shapeB, key.childB};
     if (b < a)
     {
         std::swap(a, b);
     }
-    return {a.first, a.second, b.first, b.second, key.featureKey};
+    return {a, b, key.featureKey};
 }
 
 double Allowance(const Tolerances& tolerances, double reference)
@@ -235,9 +237,16 @@ std::string DescribeContact(const Scene& scene, const ContactKey& key)
 {
     char featureKey[16];
     std::snprintf(featureKey, sizeof featureKey, "0x%x", static_cast<unsigned>(key.featureKey));
-    return DescribeBody(scene, static_cast<int>(key.bodyA)) + "[" + std::to_string(key.shapeA) +
-           "]/" + DescribeBody(scene, static_cast<int>(key.bodyB)) + "[" +
-           std::to_string(key.shapeB) + "] key " + featureKey;
+    // A chain's segment is named by its shape and child index: ground[0.3].
+    const auto shape = [&](std::size_t body, std::size_t index, std::size_t child)
+    {
+        const bool chain = body < scene.bodies.size() && index < scene.bodies[body].shapes.size() &&
+                           scene.bodies[body].shapes[index].type == SceneShapeType::Chain;
+        return DescribeBody(scene, static_cast<int>(body)) + "[" + std::to_string(index) +
+               (chain ? "." + std::to_string(child) : std::string()) + "]";
+    };
+    return shape(key.bodyA, key.shapeA, key.childA) + "/" +
+           shape(key.bodyB, key.shapeB, key.childB) + " key " + featureKey;
 }
 
 std::string DescribeJoint(const Scene& scene, int joint)

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <unordered_map>
 
 namespace meff::validation
@@ -22,7 +23,17 @@ class MeffSampler
         {
             for (std::size_t k = 0; k < built.shapes[i].size(); ++k)
             {
-                m_shapeOf.emplace(built.shapes[i][k].index, std::make_pair(i, k));
+                m_shapeOf.emplace(built.shapes[i][k].index, ShapeKey{i, k, 0});
+                // A chain's segments are its children, in order (Box2D's child index).
+                if (!built.chains[i][k].IsNull())
+                {
+                    const std::span<const ShapeId> segments =
+                        built.world.GetChainSegments(built.chains[i][k]);
+                    for (std::size_t child = 1; child < segments.size(); ++child)
+                    {
+                        m_shapeOf.emplace(segments[child].index, ShapeKey{i, k, child});
+                    }
+                }
             }
         }
     }
@@ -41,10 +52,10 @@ class MeffSampler
         }
         for (const ContactPointReport& report : world.GetContactReports())
         {
-            const auto& [bodyA, shapeA] = m_shapeOf.at(report.shapeA.index);
-            const auto& [bodyB, shapeB] = m_shapeOf.at(report.shapeB.index);
+            const ShapeKey& a = m_shapeOf.at(report.shapeA.index);
+            const ShapeKey& b = m_shapeOf.at(report.shapeB.index);
             ContactSample contact;
-            contact.key = {bodyA, shapeA, bodyB, shapeB, report.featureKey};
+            contact.key = {a.body, a.shape, b.body, b.shape, report.featureKey, a.child, b.child};
             contact.normalImpulse = report.normalImpulse;
             contact.tangentImpulse = report.tangentImpulse;
             sample.contacts.push_back(contact);
@@ -59,8 +70,16 @@ class MeffSampler
     }
 
   private:
+    /// Scene body index, shape index and chain child index of a shape.
+    struct ShapeKey
+    {
+        std::size_t body = 0;
+        std::size_t shape = 0;
+        std::size_t child = 0;
+    };
+
     const BuiltScene& m_built;
-    std::unordered_map<std::int32_t, std::pair<std::size_t, std::size_t>> m_shapeOf;
+    std::unordered_map<std::int32_t, ShapeKey> m_shapeOf;
 };
 
 void Track(RunMaximum& maximum, double value, int frame, const std::string& where)

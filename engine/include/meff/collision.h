@@ -7,6 +7,7 @@
 #include "meff/math.h"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace meff
@@ -20,6 +21,7 @@ enum class ShapeType : std::uint8_t
     Circle = 0,
     Segment = 1,
     Polygon = 2,
+    ChainSegment = 3, ///< a one-sided segment with ghost vertices, alone or in a chain
 };
 
 /// A solid circle.
@@ -35,6 +37,44 @@ struct Segment
     Vec2 point1{};   ///< first end in body coordinates (m)
     Vec2 point2{};   ///< second end in body coordinates (m)
     Real radius = 0; ///< collision skin (m); the world sets it to Tolerances::polygonSkin
+};
+
+/// A one-sided segment with ghost vertices: Box2D 2.4.1's b2EdgeShape after SetOneSided, and
+/// each child of a b2ChainShape (Box2D v3's b2ChainSegment). Only the side to the right of
+/// point1 → point2 collides (the outside of a counter-clockwise loop; the top of ground listed
+/// from right to left); a shape whose centre is behind it passes through. The ghosts are the
+/// neighbouring vertices of the chain it belongs to: a contact whose normal points into a
+/// neighbour's territory is skipped, or turned to the segment's own normal at a concave
+/// corner, so a box sliding over the joint between two segments does not catch on the vertex
+/// (https://box2d.org/posts/2020/06/ghost-collisions/).
+struct ChainSegment
+{
+    Vec2 ghost1{};     ///< the vertex before segment.point1 (m), Box2D's m_vertex0
+    Segment segment{}; ///< the solid part; its radius is set by the world (polygonSkin)
+    Vec2 ghost2{};     ///< the vertex after segment.point2 (m), Box2D's m_vertex3
+};
+
+/// A chain of one-sided segments through `points` (Box2D 2.4.1's b2ChainShape), for terrain:
+/// World::CreateChain makes one ChainSegment shape per pair of consecutive points, each with
+/// its neighbours as ghosts, so that shapes slide over the joints without catching. The solid
+/// side is to the right of the direction of travel: list ground from right to left, and a
+/// loop counter-clockwise to keep things out (clockwise to keep them in).
+struct Chain
+{
+    /// The vertices in body coordinates (m): at least 2 for an open chain, 3 for a loop;
+    /// consecutive points (and, for a loop, the last and the first) further apart than the
+    /// linear slop.
+    std::span<const Vec2> points{};
+    /// Close the chain: a segment also joins the last point to the first (Box2D's CreateLoop).
+    bool loop = false;
+    /// Open chains: the ghost vertex before points[0] (Box2D's prevVertex), which decides how
+    /// the first segment's start meets what lies beyond it. Unset: points[0] + (points[0] −
+    /// points[1]), the first segment continued in a straight line. Loops take their ghosts
+    /// from their own points and refuse these.
+    std::optional<Vec2> prev{};
+    /// Open chains: the ghost vertex after the last point (Box2D's nextVertex). Unset: the last
+    /// segment continued in a straight line.
+    std::optional<Vec2> next{};
 };
 
 /// A convex polygon with counter-clockwise vertices and outward unit normals.
@@ -75,6 +115,7 @@ MassData ComputeMass(const Polygon& polygon, Real density);
 AABB ComputeAABB(const Circle& circle, const Transform& xf);
 AABB ComputeAABB(const Segment& segment, const Transform& xf);
 AABB ComputeAABB(const Polygon& polygon, const Transform& xf);
+AABB ComputeAABB(const ChainSegment& segment, const Transform& xf);
 
 /// Which feature of each shape a contact point comes from, packed as Box2D 2.4.1's
 /// b2ContactFeature so that feature keys agree between the engines.
@@ -147,5 +188,14 @@ void CollideSegmentAndCircle(Manifold& manifold, const Segment& segmentA, const 
                              const Circle& circleB, const Transform& xfB);
 void CollideSegmentAndPolygon(Manifold& manifold, const Segment& segmentA, const Transform& xfA,
                               const Polygon& polygonB, const Transform& xfB);
+/// One-sided, with ghosts: b2CollideEdgeAndCircle and b2CollideEdgeAndPolygon of Box2D 2.4.1
+/// for an edge with m_oneSided (a circle or polygon whose centre is behind the segment gets no
+/// points; the ghosts skip or snap contacts at the ends).
+void CollideChainSegmentAndCircle(Manifold& manifold, const ChainSegment& segmentA,
+                                  const Transform& xfA, const Circle& circleB,
+                                  const Transform& xfB);
+void CollideChainSegmentAndPolygon(Manifold& manifold, const ChainSegment& segmentA,
+                                   const Transform& xfA, const Polygon& polygonB,
+                                   const Transform& xfB);
 
 } // namespace meff

@@ -45,6 +45,8 @@ struct DistanceProxy
 DistanceProxy MakeProxy(const Circle& circle);
 DistanceProxy MakeProxy(const Polygon& polygon);
 DistanceProxy MakeProxy(const Segment& segment);
+/// The segment's two ends (the ghosts take no part in distance, casts or time of impact).
+DistanceProxy MakeProxy(const ChainSegment& segment);
 
 /// The last simplex of a distance query, to warm-start the next query between the same two
 /// proxies (as the time-of-impact loop does). Start with count = 0.

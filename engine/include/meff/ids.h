@@ -20,8 +20,10 @@ struct Id
 struct BodyTag;
 struct ShapeTag;
 struct JointTag;
+struct ChainTag;
 using BodyId = Id<BodyTag>;
 using ShapeId = Id<ShapeTag>;
 using JointId = Id<JointTag>;
+using ChainId = Id<ChainTag>; ///< a chain of segment shapes (World::CreateChain)
 
 } // namespace meff

@@ -42,11 +42,18 @@ bool RayCast(const Polygon& polygon, const Transform& xf, const RayCastInput& in
 bool RayCast(const Segment& segment, const Transform& xf, const RayCastInput& input,
              RayCastOutput& output);
 
+/// The ray against the one-sided segment at `xf`, as b2EdgeShape::RayCast after SetOneSided:
+/// only a ray that starts on the solid side (right of point1 → point2) can hit it; the normal
+/// is the segment's. The ghosts play no part.
+bool RayCast(const ChainSegment& segment, const Transform& xf, const RayCastInput& input,
+             RayCastOutput& output);
+
 /// Is the world point inside or on the circle at `xf`?
 bool TestPoint(const Circle& circle, const Transform& xf, Vec2 point);
 /// Is the world point inside or on the polygon's outline at `xf`? The skin is not counted.
 bool TestPoint(const Polygon& polygon, const Transform& xf, Vec2 point);
 /// Always false: a segment has no inside (as Box2D's b2EdgeShape::TestPoint).
 bool TestPoint(const Segment& segment, const Transform& xf, Vec2 point);
+bool TestPoint(const ChainSegment& segment, const Transform& xf, Vec2 point);
 
 } // namespace meff

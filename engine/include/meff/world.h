@@ -298,7 +298,13 @@ class World
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Segment& segment);
-    /// Wakes the bodies of the contacts it was touching in (as Box2D 2.4.1 does).
+    /// A one-sided segment with ghost vertices, alone (Box2D 2.4.1's b2EdgeShape after
+    /// SetOneSided; see ChainSegment). Throws InvalidArgument for non-finite points, or ends
+    /// (or a ghost and its end) no further apart than the linear slop. Like segments, it has
+    /// no mass.
+    ShapeId CreateShape(BodyId body, const ShapeDef& def, const ChainSegment& segment);
+    /// Wakes the bodies of the contacts it was touching in (as Box2D 2.4.1 does). Throws
+    /// InvalidArgument for a segment of a chain (destroy the chain with DestroyChain).
     void DestroyShape(ShapeId id);
     bool IsValid(ShapeId id) const;
     BodyId GetBody(ShapeId id) const;
@@ -306,9 +312,35 @@ class World
     const Circle& GetCircle(ShapeId id) const;   ///< throws unless a circle
     const Polygon& GetPolygon(ShapeId id) const; ///< throws unless a polygon
     const Segment& GetSegment(ShapeId id) const; ///< throws unless a segment
+    /// Throws unless a chain segment (of a chain, or made alone).
+    const ChainSegment& GetChainSegment(ShapeId id) const;
     const ShapeDef& GetShapeDef(ShapeId id) const;
-    /// A body's shapes, newest first (Box2D's fixture-list order).
+    /// A body's shapes, newest first (Box2D's fixture-list order); a chain's segments are
+    /// listed together, in order along the chain.
     std::span<const ShapeId> GetShapes(BodyId body) const;
+
+    // Chains (world_chain.cpp)
+    /// Makes a chain of one-sided segments (Box2D 2.4.1's b2ChainShape; see Chain): one
+    /// ChainSegment shape per link, created in order along the chain and each given `def`,
+    /// with its neighbours as ghosts (an open chain's ends get Chain::prev and Chain::next).
+    /// Contacts, events and queries name the segment shapes; GetChain maps one back to its
+    /// chain. As Box2D 2.4.1, a ray hits a chain's segments from both sides (shapes collide
+    /// with the solid side only), and chains have no mass. Throws InvalidArgument for fewer
+    /// than 2 points (3 for a loop), non-finite points, consecutive points (a loop's last and
+    /// first too) no further apart than the linear slop, ghosts given for a loop, or an open
+    /// chain's ghost within the linear slop of its end point.
+    ChainId CreateChain(BodyId body, const ShapeDef& def, const Chain& chain);
+    /// Destroys the chain's segments, their contacts (waking the bodies they touched, as
+    /// DestroyShape) and their broad-phase proxies, in order along the chain (as
+    /// b2Body::DestroyFixture does for a chain).
+    void DestroyChain(ChainId id);
+    bool IsValid(ChainId id) const;
+    /// The chain's segment shapes in order along the chain (for a loop, the closing segment,
+    /// last point to first, is the last).
+    std::span<const ShapeId> GetChainSegments(ChainId id) const;
+    /// The chain a shape belongs to; null for any other shape (a one-sided segment made alone
+    /// included).
+    ChainId GetChain(ShapeId id) const;
 
     // Joints. Creating or destroying a joint wakes both bodies (Box2D 2.4.1 wakes them only
     // on destruction; meff also on creation, so a new joint acts at once).

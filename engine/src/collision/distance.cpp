@@ -39,6 +39,11 @@ DistanceProxy MakeProxy(const Segment& segment)
     return proxy;
 }
 
+DistanceProxy MakeProxy(const ChainSegment& segment)
+{
+    return MakeProxy(segment.segment);
+}
+
 namespace detail
 {
 
@@ -52,6 +57,8 @@ DistanceProxy MakeProxy(const Shape& shape)
         return meff::MakeProxy(shape.polygon);
     case ShapeType::Segment:
         return meff::MakeProxy(shape.segment);
+    case ShapeType::ChainSegment:
+        return meff::MakeProxy(shape.chainSegment);
     }
     return {};
 }

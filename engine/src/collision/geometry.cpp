@@ -366,4 +366,10 @@ AABB ComputeAABB(const Polygon& polygon, const Transform& xf)
     return aabb;
 }
 
+AABB ComputeAABB(const ChainSegment& segment, const Transform& xf)
+{
+    // The ghosts do not collide: the box is the solid part's (b2ChainShape::ComputeAABB).
+    return ComputeAABB(segment.segment, xf);
+}
+
 } // namespace meff

@@ -1,32 +1,62 @@
-// Contact manifolds of a two-sided segment against a circle and against a polygon, following
-// b2CollideEdgeAndCircle and b2CollideEdgeAndPolygon of Box2D 2.4.1 for an edge with
-// m_oneSided == false (no ghost vertices, no one-sided culling).
+// Contact manifolds of a segment against a circle and against a polygon, following
+// b2CollideEdgeAndCircle and b2CollideEdgeAndPolygon of Box2D 2.4.1: a two-sided segment
+// (m_oneSided == false), or a one-sided segment with ghost vertices (a chain's segment), whose
+// back side is culled and whose contacts at the ends are skipped or snapped by the ghosts.
 #include "collision/manifold_internal.h"
 
 namespace meff
 {
 
-void CollideSegmentAndCircle(Manifold& manifold, const Segment& segmentA, const Transform& xfA,
-                             const Circle& circleB, const Transform& xfB)
+namespace
+{
+
+/// A segment as b2EdgeShape sees it: two-sided, or one-sided between its ghosts.
+struct Edge
+{
+    Vec2 v1, v2;
+    Real radius = 0;
+    bool oneSided = false;
+    Vec2 ghost1, ghost2; ///< the neighbours before v1 and after v2 (one-sided only)
+};
+
+Edge TwoSided(const Segment& segment)
+{
+    return {segment.point1, segment.point2, segment.radius, false, {}, {}};
+}
+
+Edge OneSided(const ChainSegment& chainSegment)
+{
+    const Segment& segment = chainSegment.segment;
+    return {segment.point1, segment.point2,      segment.radius,
+            true,           chainSegment.ghost1, chainSegment.ghost2};
+}
+
+void CollideEdgeAndCircle(Manifold& manifold, const Edge& edgeA, const Transform& xfA,
+                          const Circle& circleB, const Transform& xfB)
 {
     manifold.pointCount = 0;
 
     // The circle's centre in the segment's frame.
     const Vec2 q = MulT(xfA, Mul(xfB, circleB.center));
 
-    const Vec2 a = segmentA.point1;
-    const Vec2 b = segmentA.point2;
+    const Vec2 a = edgeA.v1;
+    const Vec2 b = edgeA.v2;
     const Vec2 e = b - a;
 
-    // Right-hand normal of a -> b; only its sign relative to q matters for a two-sided segment.
+    // Right-hand normal of a -> b: the solid side of a one-sided segment. A two-sided one
+    // only needs its sign relative to q.
     Vec2 n(e.y, -e.x);
     const Real offset = Dot(n, q - a);
+    if (edgeA.oneSided && offset < 0)
+    {
+        return;
+    }
 
     // Barycentric coordinates of q's projection on the segment (unnormalized).
     const Real u = Dot(e, b - q);
     const Real v = Dot(e, q - a);
 
-    const Real radius = segmentA.radius + circleB.radius;
+    const Real radius = edgeA.radius + circleB.radius;
 
     ContactFeature feature;
     feature.indexB = 0;
@@ -39,6 +69,11 @@ void CollideSegmentAndCircle(Manifold& manifold, const Segment& segmentA, const 
     {
         const Vec2 d = q - a;
         if (Dot(d, d) > radius * radius)
+        {
+            return;
+        }
+        // A circle over the previous segment's interior is that segment's contact.
+        if (edgeA.oneSided && Dot(a - edgeA.ghost1, a - q) > 0)
         {
             return;
         }
@@ -60,6 +95,11 @@ void CollideSegmentAndCircle(Manifold& manifold, const Segment& segmentA, const 
     {
         const Vec2 d = q - b;
         if (Dot(d, d) > radius * radius)
+        {
+            return;
+        }
+        // Likewise over the next segment's interior.
+        if (edgeA.oneSided && Dot(edgeA.ghost2 - b, q - b) > 0)
         {
             return;
         }
@@ -102,9 +142,6 @@ void CollideSegmentAndCircle(Manifold& manifold, const Segment& segmentA, const 
     point.normalImpulse = 0;
     point.tangentImpulse = 0;
 }
-
-namespace
-{
 
 /// A candidate separating axis (b2EPAxis).
 struct SeparatingAxis
@@ -201,24 +238,62 @@ SeparatingAxis ComputePolygonSeparation(const PolygonInFrameA& polygonB, Vec2 v1
     return axis;
 }
 
-} // namespace
+/// Box2D 2.4.1's smooth collision of a one-sided segment (the Gauss map test): a contact
+/// whose normal lies in a convex neighbour's range of normals belongs to that neighbour and is
+/// skipped (false); at a concave corner it is snapped to the segment's own face.
+bool ApplyGhosts(const Edge& edgeA, Vec2 edge1, const SeparatingAxis& segmentAxis,
+                 SeparatingAxis& primaryAxis)
+{
+    Vec2 edge0 = edgeA.v1 - edgeA.ghost1;
+    edge0.Normalize();
+    const Vec2 normal0(edge0.y, -edge0.x);
+    const bool convex1 = Cross(edge0, edge1) >= 0;
 
-void CollideSegmentAndPolygon(Manifold& manifold, const Segment& segmentA, const Transform& xfA,
-                              const Polygon& polygonB, const Transform& xfB)
+    Vec2 edge2 = edgeA.ghost2 - edgeA.v2;
+    edge2.Normalize();
+    const Vec2 normal2(edge2.y, -edge2.x);
+    const bool convex2 = Cross(edge1, edge2) >= 0;
+
+    // Box2D's sinTol: how far (as a sine) a normal may lean past the neighbour's.
+    constexpr Real kSinTolerance = Real(0.1);
+    const bool side1 = Dot(primaryAxis.normal, edge1) <= 0;
+    if (side1)
+    {
+        if (!convex1)
+        {
+            primaryAxis = segmentAxis;
+            return true;
+        }
+        return !(Cross(primaryAxis.normal, normal0) > kSinTolerance);
+    }
+    if (!convex2)
+    {
+        primaryAxis = segmentAxis;
+        return true;
+    }
+    return !(Cross(normal2, primaryAxis.normal) > kSinTolerance);
+}
+
+void CollideEdgeAndPolygon(Manifold& manifold, const Edge& edgeA, const Transform& xfA,
+                           const Polygon& polygonB, const Transform& xfB)
 {
     manifold.pointCount = 0;
 
     const Transform xf = MulT(xfA, xfB);
 
-    const Vec2 v1 = segmentA.point1;
-    const Vec2 v2 = segmentA.point2;
+    const Vec2 v1 = edgeA.v1;
+    const Vec2 v2 = edgeA.v2;
 
     Vec2 edge1 = v2 - v1;
     edge1.Normalize();
 
-    // Right-hand normal of v1 -> v2. (Box2D also measures the polygon centroid's offset along
-    // it here, but only a one-sided edge uses that, so it is not computed.)
+    // Right-hand normal of v1 -> v2: a one-sided segment ignores polygons whose centroid is
+    // behind it.
     const Vec2 normal1(edge1.y, -edge1.x);
+    if (edgeA.oneSided && Dot(normal1, Mul(xf, polygonB.centroid) - v1) < 0)
+    {
+        return;
+    }
 
     PolygonInFrameA tempPolygonB;
     tempPolygonB.count = polygonB.count;
@@ -228,7 +303,7 @@ void CollideSegmentAndPolygon(Manifold& manifold, const Segment& segmentA, const
         tempPolygonB.normals[i] = Mul(xf.q, polygonB.normals[i]);
     }
 
-    const Real radius = polygonB.radius + segmentA.radius;
+    const Real radius = polygonB.radius + edgeA.radius;
 
     const SeparatingAxis segmentAxis = ComputeSegmentSeparation(tempPolygonB, v1, normal1);
     if (segmentAxis.separation > radius)
@@ -256,6 +331,10 @@ void CollideSegmentAndPolygon(Manifold& manifold, const Segment& segmentA, const
     else
     {
         primaryAxis = segmentAxis;
+    }
+    if (edgeA.oneSided && !ApplyGhosts(edgeA, edge1, segmentAxis, primaryAxis))
+    {
+        return;
     }
 
     detail::ClipVertex clipPoints[2];
@@ -387,6 +466,33 @@ void CollideSegmentAndPolygon(Manifold& manifold, const Segment& segmentA, const
     }
 
     manifold.pointCount = pointCount;
+}
+
+} // namespace
+
+void CollideSegmentAndCircle(Manifold& manifold, const Segment& segmentA, const Transform& xfA,
+                             const Circle& circleB, const Transform& xfB)
+{
+    CollideEdgeAndCircle(manifold, TwoSided(segmentA), xfA, circleB, xfB);
+}
+
+void CollideSegmentAndPolygon(Manifold& manifold, const Segment& segmentA, const Transform& xfA,
+                              const Polygon& polygonB, const Transform& xfB)
+{
+    CollideEdgeAndPolygon(manifold, TwoSided(segmentA), xfA, polygonB, xfB);
+}
+
+void CollideChainSegmentAndCircle(Manifold& manifold, const ChainSegment& segmentA,
+                                  const Transform& xfA, const Circle& circleB, const Transform& xfB)
+{
+    CollideEdgeAndCircle(manifold, OneSided(segmentA), xfA, circleB, xfB);
+}
+
+void CollideChainSegmentAndPolygon(Manifold& manifold, const ChainSegment& segmentA,
+                                   const Transform& xfA, const Polygon& polygonB,
+                                   const Transform& xfB)
+{
+    CollideEdgeAndPolygon(manifold, OneSided(segmentA), xfA, polygonB, xfB);
 }
 
 } // namespace meff

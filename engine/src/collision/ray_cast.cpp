@@ -1,6 +1,6 @@
 // Ray casts against single shapes and point containment: Box2D 2.4.1's b2CircleShape,
-// b2PolygonShape and b2EdgeShape RayCast and TestPoint, with the same floating-point operation
-// order so that World::CastRay agrees with b2World::RayCast bit for bit.
+// b2PolygonShape and b2EdgeShape (two-sided and one-sided) RayCast and TestPoint, with the same
+// floating-point operation order so that World::CastRay agrees with b2World::RayCast bit for bit.
 #include "meff/ray_cast.h"
 
 #include "meff/collision.h"
@@ -102,8 +102,12 @@ bool RayCast(const Polygon& polygon, const Transform& xf, const RayCastInput& in
     return false;
 }
 
-bool RayCast(const Segment& segment, const Transform& xf, const RayCastInput& input,
-             RayCastOutput& output)
+namespace
+{
+
+/// b2EdgeShape::RayCast: two-sided, or one-sided (only from the right of point1 → point2).
+bool RayCastEdge(const Segment& segment, bool oneSided, const Transform& xf,
+                 const RayCastInput& input, RayCastOutput& output)
 {
     // In the segment's frame: the ray p1 + t·d meets the segment's line where
     // n·(p1 + t·d − v1) = 0, and the segment itself where the point's projection on the
@@ -120,8 +124,13 @@ bool RayCast(const Segment& segment, const Transform& xf, const RayCastInput& in
     Vec2 normal(e.y, -e.x);
     normal.Normalize();
 
-    // Two-sided, so both signs of the numerator are accepted; it tells the side p1 is on.
+    // The numerator's sign tells the side p1 is on: positive is the left, the back of a
+    // one-sided segment, which such a ray cannot hit.
     const Real numerator = Dot(normal, v1 - p1);
+    if (oneSided && numerator > Real(0))
+    {
+        return false;
+    }
     const Real denominator = Dot(normal, d);
     if (denominator == Real(0))
     {
@@ -153,6 +162,20 @@ bool RayCast(const Segment& segment, const Transform& xf, const RayCastInput& in
     return true;
 }
 
+} // namespace
+
+bool RayCast(const Segment& segment, const Transform& xf, const RayCastInput& input,
+             RayCastOutput& output)
+{
+    return RayCastEdge(segment, false, xf, input, output);
+}
+
+bool RayCast(const ChainSegment& segment, const Transform& xf, const RayCastInput& input,
+             RayCastOutput& output)
+{
+    return RayCastEdge(segment.segment, true, xf, input, output);
+}
+
 bool TestPoint(const Circle& circle, const Transform& xf, Vec2 point)
 {
     const Vec2 center = xf.p + Mul(xf.q, circle.center);
@@ -175,6 +198,11 @@ bool TestPoint(const Polygon& polygon, const Transform& xf, Vec2 point)
 }
 
 bool TestPoint(const Segment& /*segment*/, const Transform& /*xf*/, Vec2 /*point*/)
+{
+    return false;
+}
+
+bool TestPoint(const ChainSegment& /*segment*/, const Transform& /*xf*/, Vec2 /*point*/)
 {
     return false;
 }

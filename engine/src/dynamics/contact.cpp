@@ -8,13 +8,14 @@ namespace meff::detail
 
 bool ContactOrder(ShapeType typeA, ShapeType typeB, bool& swap)
 {
-    // Shape type values rank the "primary" shape of a pair: segment (1) and polygon (2) come
-    // before circle (0) as shape A, a segment before a polygon.
+    // Shape type values rank the "primary" shape of a pair: segments (1, and chain segments,
+    // 3) and polygons (2) come before circles (0) as shape A, a segment before a polygon.
     const auto rank = [](ShapeType t)
     {
         switch (t)
         {
         case ShapeType::Segment:
+        case ShapeType::ChainSegment:
             return 0;
         case ShapeType::Polygon:
             return 1;
@@ -23,7 +24,10 @@ bool ContactOrder(ShapeType typeA, ShapeType typeB, bool& swap)
         }
         return 3;
     };
-    if (typeA == ShapeType::Segment && typeB == ShapeType::Segment)
+    // Box2D registers no contact between edges and chains in any combination.
+    const auto isSegment = [](ShapeType t)
+    { return t == ShapeType::Segment || t == ShapeType::ChainSegment; };
+    if (isSegment(typeA) && isSegment(typeB))
     {
         return false;
     }
@@ -57,6 +61,16 @@ static void Evaluate(Manifold& manifold, const Shape& a, const Transform& xfA, c
         else
         {
             CollideSegmentAndPolygon(manifold, a.segment, xfA, b.polygon, xfB);
+        }
+        return;
+    case ShapeType::ChainSegment:
+        if (b.type == ShapeType::Circle)
+        {
+            CollideChainSegmentAndCircle(manifold, a.chainSegment, xfA, b.circle, xfB);
+        }
+        else
+        {
+            CollideChainSegmentAndPolygon(manifold, a.chainSegment, xfA, b.polygon, xfB);
         }
         return;
     }

@@ -102,7 +102,8 @@ bool UpdateSensorOverlap(Contact& contact, const Shape& shapeA, const Transform&
                          const Shape& shapeB, const Transform& xfB);
 
 /// Does the pair of shape types produce contacts, and which one is A? Box2D puts the polygon
-/// before the circle and the segment before anything; two segments never collide.
+/// before the circle and the segment (or chain segment) before anything; two segments (of any
+/// kind) never collide.
 bool ContactOrder(ShapeType typeA, ShapeType typeB, bool& swap);
 
 } // namespace meff::detail

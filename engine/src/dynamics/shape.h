@@ -15,14 +15,19 @@ struct Shape
     bool alive = false;
     std::int32_t body = -1;
     ShapeType type = ShapeType::Circle;
-    Circle circle;   ///< valid when type == Circle
-    Polygon polygon; ///< valid when type == Polygon
-    Segment segment; ///< valid when type == Segment
+    Circle circle;             ///< valid when type == Circle
+    Polygon polygon;           ///< valid when type == Polygon
+    Segment segment;           ///< valid when type == Segment
+    ChainSegment chainSegment; ///< valid when type == ChainSegment
+    /// The chain (index into WorldState::chains) a ChainSegment belongs to, or −1 for a
+    /// one-sided segment made alone. Box2D 2.4.1 casts rays at a chain's segments from both
+    /// sides, and at a lone one-sided edge from its front only.
+    std::int32_t chain = -1;
     ShapeDef def;
     std::int32_t proxyId = -1;
     AABB aabb; ///< the box last given to the broad phase (swept over the step)
 
-    /// Collision radius: the circle's radius, or the skin of a polygon or segment.
+    /// Collision radius: the circle's radius, or the skin of a polygon or (chain) segment.
     Real Radius() const
     {
         switch (type)
@@ -33,6 +38,8 @@ struct Shape
             return polygon.radius;
         case ShapeType::Segment:
             return segment.radius;
+        case ShapeType::ChainSegment:
+            return chainSegment.segment.radius;
         }
         return 0;
     }
@@ -46,6 +53,8 @@ struct Shape
             return meff::ComputeAABB(polygon, xf);
         case ShapeType::Segment:
             return meff::ComputeAABB(segment, xf);
+        case ShapeType::ChainSegment:
+            return meff::ComputeAABB(chainSegment, xf);
         }
         return {};
     }

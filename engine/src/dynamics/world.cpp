@@ -104,7 +104,8 @@ void ResetMassData(WorldState& world, Body& body)
     for (const std::int32_t s : body.shapes)
     {
         const Shape& shape = world.shapes[s];
-        if (shape.def.density == 0 || shape.type == ShapeType::Segment)
+        if (shape.def.density == 0 || shape.type == ShapeType::Segment ||
+            shape.type == ShapeType::ChainSegment)
         {
             continue;
         }
@@ -321,6 +322,11 @@ void World::DestroyBody(BodyId id)
     {
         const ShapeId shapeId = body.shapeIds.back();
         Shape& shape = world.shapes[shapeId.index];
+        if (shape.chain >= 0 && world.chains[shape.chain].alive)
+        {
+            world.chains[shape.chain].alive = false;
+            world.freeChains.push_back(shape.chain);
+        }
         world.broadPhase.DestroyProxy(shape.proxyId);
         shape.alive = false;
         world.freeShapes.push_back(shapeId.index);
@@ -714,18 +720,29 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& poly
     return AddShape(*m_state, body, def, shape);
 }
 
-ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segment)
+namespace
 {
-    RequireFinite(segment.point1, "Segment::point1");
-    RequireFinite(segment.point2, "Segment::point2");
+
+/// Box2D asserts this of edges and of every link of a chain.
+void RequireValidSegment(const Segment& segment, const Tolerances& tolerances, const char* where)
+{
+    RequireFinite(segment.point1, (std::string(where) + "::point1").c_str());
+    RequireFinite(segment.point2, (std::string(where) + "::point2").c_str());
     Require(DistanceSquared(segment.point1, segment.point2) >
-                m_state->tolerances.linearSlop * m_state->tolerances.linearSlop,
+                tolerances.linearSlop * tolerances.linearSlop,
             [&]
             {
-                return std::string(
-                    "Segment: points must be further apart than the linear slop, got " +
-                    Describe(segment.point1) + " and " + Describe(segment.point2));
+                return std::string(where) +
+                       ": points must be further apart than the linear slop, got " +
+                       Describe(segment.point1) + " and " + Describe(segment.point2);
             });
+}
+
+} // namespace
+
+ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segment)
+{
+    RequireValidSegment(segment, m_state->tolerances, "Segment");
     Shape shape;
     shape.type = ShapeType::Segment;
     shape.segment = segment;
@@ -733,10 +750,32 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segm
     return AddShape(*m_state, body, def, shape);
 }
 
+ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const ChainSegment& segment)
+{
+    RequireValidSegment(segment.segment, m_state->tolerances, "ChainSegment::segment");
+    // A ghost on its end point would give the end no direction to meet: the same rule as
+    // for the segment's length.
+    RequireValidSegment({segment.ghost1, segment.segment.point1}, m_state->tolerances,
+                        "ChainSegment (ghost1 to point1)");
+    RequireValidSegment({segment.segment.point2, segment.ghost2}, m_state->tolerances,
+                        "ChainSegment (point2 to ghost2)");
+    Shape shape;
+    shape.type = ShapeType::ChainSegment;
+    shape.chainSegment = segment;
+    shape.chainSegment.segment.radius = m_state->tolerances.polygonSkin;
+    return AddShape(*m_state, body, def, shape);
+}
+
 void World::DestroyShape(ShapeId id)
 {
     WorldState& world = *m_state;
     Shape& shape = Resolve(world.shapes, id, "shape");
+    Require(shape.chain < 0,
+            [&]
+            {
+                return std::string("World::DestroyShape: the shape is a segment of a chain; "
+                                   "destroy the whole chain with DestroyChain");
+            });
     BuildContactReports(world); // the last step's reports still name this shape
     Body& body = world.bodies[shape.body];
     WakeTouchingBodies(world, shape.body, id.index); // departs from Box2D 2.4.1, see world.h
@@ -793,6 +832,13 @@ const Segment& World::GetSegment(ShapeId id) const
     Require(shape.type == ShapeType::Segment,
             [&] { return std::string("World::GetSegment: the shape is not a segment"); });
     return shape.segment;
+}
+const ChainSegment& World::GetChainSegment(ShapeId id) const
+{
+    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    Require(shape.type == ShapeType::ChainSegment, [&]
+            { return std::string("World::GetChainSegment: the shape is not a chain segment"); });
+    return shape.chainSegment;
 }
 const ShapeDef& World::GetShapeDef(ShapeId id) const
 {

@@ -90,6 +90,20 @@ void DrawShape(DebugDraw& draw, const Shape& shape, const Transform& xf, const D
     case ShapeType::Segment:
         draw.DrawSegment(Mul(xf, shape.segment.point1), Mul(xf, shape.segment.point2), color);
         break;
+    case ShapeType::ChainSegment:
+    {
+        // As Box2D draws chains: the line; the solid side is shown by a short tick along the
+        // normal from the middle (a one-sided segment seen from behind is no wall).
+        const Segment& segment = shape.chainSegment.segment;
+        const Vec2 p1 = Mul(xf, segment.point1);
+        const Vec2 p2 = Mul(xf, segment.point2);
+        draw.DrawSegment(p1, p2, color);
+        Vec2 normal = Cross(p2 - p1, Real(1));
+        const Real length = normal.Normalize();
+        const Vec2 middle = Real(0.5) * (p1 + p2);
+        draw.DrawSegment(middle, middle + Min(Real(0.1) * length, Real(0.25)) * normal, color);
+        break;
+    }
     }
 }
 

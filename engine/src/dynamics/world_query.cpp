@@ -83,6 +83,11 @@ bool RayCastShape(const Shape& shape, const Transform& xf, const RayCastInput& i
         return RayCast(shape.polygon, xf, input, output);
     case ShapeType::Segment:
         return RayCast(shape.segment, xf, input, output);
+    case ShapeType::ChainSegment:
+        // b2ChainShape::RayCast casts at a plain (two-sided) edge: a chain is hit from both
+        // sides, a lone one-sided segment only from its front.
+        return shape.chain >= 0 ? RayCast(shape.chainSegment.segment, xf, input, output)
+                                : RayCast(shape.chainSegment, xf, input, output);
     }
     return false;
 }
@@ -97,6 +102,8 @@ bool TestPointShape(const Shape& shape, const Transform& xf, Vec2 point)
         return TestPoint(shape.polygon, xf, point);
     case ShapeType::Segment:
         return TestPoint(shape.segment, xf, point);
+    case ShapeType::ChainSegment:
+        return TestPoint(shape.chainSegment, xf, point);
     }
     return false;
 }

@@ -22,6 +22,15 @@
 namespace meff::detail
 {
 
+/// A chain (World::CreateChain): the ChainSegment shapes it made, in order along the chain.
+struct ChainSlot
+{
+    std::uint32_t generation = 0;
+    bool alive = false;
+    std::int32_t body = kNullIndex;
+    std::vector<ShapeId> segments;
+};
+
 struct WorldState
 {
     explicit WorldState(const WorldDef& def)
@@ -44,6 +53,8 @@ struct WorldState
 
     std::vector<Shape> shapes;
     std::vector<std::int32_t> freeShapes;
+    std::vector<ChainSlot> chains;
+    std::vector<std::int32_t> freeChains;
 
     std::vector<JointSlot> joints;
     std::vector<std::int32_t> freeJoints;

@@ -52,6 +52,7 @@ enum class SceneShapeType
     Box,
     Polygon,
     Segment,
+    Chain,
 };
 
 /// "filter": which shapes may collide (see meff::Filter).
@@ -79,6 +80,16 @@ struct SceneShape
     // segment: its two ends, body coordinates (m)
     SceneVec2 point1;
     SceneVec2 point2;
+    /// segment: one-sided, with ghosts `prev` and `next` (meff::ChainSegment)
+    bool oneSided = false;
+    // chain: its points in order, body coordinates (m)
+    std::vector<SceneVec2> points;
+    bool loop = false; ///< chain: closed, the last point joined to the first
+    /// One-sided segment and open chain: the ghost vertices before the first point and after
+    /// the last (m), resolved by the loader (the file's, or the end segments continued in
+    /// straight lines); unset for a loop and for a two-sided segment.
+    std::optional<SceneVec2> prev;
+    std::optional<SceneVec2> next;
     // material
     double density = 1;              ///< kg/m², ≥ 0
     double friction = 0.6;           ///< ≥ 0
@@ -251,9 +262,12 @@ Scene ParseScene(std::string_view text, const std::string& sourcePath);
 struct BuiltScene
 {
     World world;
-    std::vector<BodyId> bodies{};               ///< bodies[i] is scene.bodies[i]
-    std::vector<std::vector<ShapeId>> shapes{}; ///< shapes[i][k] is scene.bodies[i].shapes[k]
-    std::vector<JointId> joints{};              ///< joints[j] is scene.joints[j]
+    std::vector<BodyId> bodies{}; ///< bodies[i] is scene.bodies[i]
+    /// shapes[i][k] is scene.bodies[i].shapes[k]; for a chain, its first segment.
+    std::vector<std::vector<ShapeId>> shapes{};
+    /// chains[i][k] is the chain scene.bodies[i].shapes[k] made; null for other shapes.
+    std::vector<std::vector<ChainId>> chains{};
+    std::vector<JointId> joints{}; ///< joints[j] is scene.joints[j]
     std::unordered_map<std::string, BodyId> bodyByName{};
     std::unordered_map<std::string, JointId> jointByName{};
 

@@ -49,6 +49,9 @@ struct ContactKey
     std::size_t bodyB = 0;
     std::size_t shapeB = 0;
     std::uint32_t featureKey = 0;
+    /// Which segment of a chain shape (Box2D's child index); 0 for every other shape.
+    std::size_t childA = 0;
+    std::size_t childB = 0;
 };
 
 /// One contact point's impulses over the last step (Box2D's PostSolve data).

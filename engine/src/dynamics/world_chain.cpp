@@ -1,0 +1,211 @@
+// Chains (Box2D 2.4.1's b2ChainShape): a chain is made of ChainSegment shapes, one per link,
+// each with its neighbours as ghost vertices. Box2D keeps a chain as one fixture with one
+// broad-phase proxy per child; here each child is a shape with one proxy. The proxies are
+// created, moved and destroyed in the children's order, and the body's shape list holds them
+// together in that order where Box2D holds the chain fixture, so the broad phase, and so the
+// contacts and the solver, see exactly what Box2D's do.
+#include "dynamics/step_stages.h"
+#include "dynamics/world_state.h"
+#include "meff/world.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace meff
+{
+
+using namespace detail;
+
+namespace
+{
+
+std::string Describe(Vec2 v)
+{
+    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")";
+}
+
+[[noreturn]] void Refuse(const std::string& message)
+{
+    throw InvalidArgument("World::CreateChain: " + message);
+}
+
+/// The chain's segments with their ghosts, as b2ChainShape::CreateChain/CreateLoop and
+/// GetChildEdge make them. Throws for what Box2D asserts (and for a loop's closing link, which
+/// Box2D does not check).
+std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
+{
+    const std::size_t minimum = chain.loop ? 3 : 2;
+    if (chain.points.size() < minimum)
+    {
+        Refuse(std::string(chain.loop ? "a loop" : "an open chain") + " needs at least " +
+               std::to_string(minimum) + " points, got " + std::to_string(chain.points.size()));
+    }
+    if (chain.loop && (chain.prev || chain.next))
+    {
+        Refuse("a loop takes its ghost vertices from its own points: prev and next must be "
+               "unset");
+    }
+    // The vertices along the chain; a loop comes back to its first point.
+    std::vector<Vec2> v(chain.points.begin(), chain.points.end());
+    if (chain.loop)
+    {
+        v.push_back(v.front());
+    }
+    for (std::size_t i = 0; i < v.size(); ++i)
+    {
+        if (!v[i].IsValid())
+        {
+            Refuse("points[" + std::to_string(i) + "]: must be finite, got " + Describe(v[i]));
+        }
+        if (i > 0 && DistanceSquared(v[i - 1], v[i]) <= linearSlop * linearSlop)
+        {
+            Refuse("points " + std::to_string(i - 1) + " and " +
+                   std::to_string(i % chain.points.size()) +
+                   " must be further apart than the linear slop, got " + Describe(v[i - 1]) +
+                   " and " + Describe(v[i]));
+        }
+    }
+    const std::size_t m = v.size();
+    // An open chain without ghosts continues its end segments in straight lines.
+    const Vec2 prev = chain.loop ? v[m - 2] : chain.prev.value_or(v[0] + (v[0] - v[1]));
+    const Vec2 next = chain.loop ? v[1] : chain.next.value_or(v[m - 1] + (v[m - 1] - v[m - 2]));
+    // A ghost on its end point would give the end no direction to meet.
+    if (!prev.IsValid() || !next.IsValid() ||
+        DistanceSquared(prev, v[0]) <= linearSlop * linearSlop ||
+        DistanceSquared(next, v[m - 1]) <= linearSlop * linearSlop)
+    {
+        Refuse("prev and next: must be finite and further than the linear slop from the first "
+               "and last points, got " +
+               Describe(prev) + " and " + Describe(next));
+    }
+    std::vector<ChainSegment> segments(m - 1);
+    for (std::size_t i = 0; i + 1 < m; ++i)
+    {
+        segments[i].ghost1 = i > 0 ? v[i - 1] : prev;
+        segments[i].segment.point1 = v[i];
+        segments[i].segment.point2 = v[i + 1];
+        segments[i].ghost2 = i + 2 < m ? v[i + 2] : next;
+    }
+    return segments;
+}
+
+ChainSlot& ResolveChain(WorldState& world, ChainId id)
+{
+    if (id.index < 0 || static_cast<std::size_t>(id.index) >= world.chains.size() || id.IsNull() ||
+        !world.chains[id.index].alive || world.chains[id.index].generation != id.generation)
+    {
+        throw InvalidArgument("invalid chain id (index " + std::to_string(id.index) +
+                              ", generation " + std::to_string(id.generation) +
+                              "): null, or already destroyed");
+    }
+    return world.chains[id.index];
+}
+
+} // namespace
+
+ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
+{
+    WorldState& world = *m_state;
+    const std::vector<ChainSegment> segments = MakeSegments(chain, world.tolerances.linearSlop);
+
+    // Every check CreateShape makes (body, definition) fails on the first segment, before
+    // anything is made, so a refused chain leaves the world as it was.
+    std::vector<ShapeId> ids;
+    ids.reserve(segments.size());
+    for (const ChainSegment& segment : segments)
+    {
+        ids.push_back(CreateShape(body, def, segment));
+    }
+
+    std::int32_t index;
+    if (!world.freeChains.empty())
+    {
+        index = world.freeChains.back();
+        world.freeChains.pop_back();
+    }
+    else
+    {
+        index = static_cast<std::int32_t>(world.chains.size());
+        world.chains.emplace_back();
+    }
+    ChainSlot& slot = world.chains[index];
+    slot.generation += 1;
+    slot.alive = true;
+    slot.body = body.index;
+    slot.segments = ids;
+    for (const ShapeId id : ids)
+    {
+        world.shapes[id.index].chain = index;
+    }
+
+    // Each CreateShape put its segment first in the body's list; turn the run around so the
+    // list holds the chain in order, as Box2D's fixture list holds the one chain fixture whose
+    // children it visits in order.
+    Body& owner = world.bodies[body.index];
+    const auto count = static_cast<std::ptrdiff_t>(ids.size());
+    std::reverse(owner.shapes.begin(), owner.shapes.begin() + count);
+    std::reverse(owner.shapeIds.begin(), owner.shapeIds.begin() + count);
+    return {index, slot.generation};
+}
+
+void World::DestroyChain(ChainId id)
+{
+    WorldState& world = *m_state;
+    ChainSlot& chain = ResolveChain(world, id);
+    BuildContactReports(world); // the last step's reports still name these shapes
+    Body& body = world.bodies[chain.body];
+    const auto ofChain = [&](std::int32_t shape) { return world.shapes[shape].chain == id.index; };
+
+    // As b2Body::DestroyFixture: the contacts first, walking the body's list once, then the
+    // proxies in the children's order.
+    for (std::int32_t key = body.contactList; key != kNullIndex;)
+    {
+        const std::int32_t c = EdgeOwner(key);
+        const Contact& contact = world.contacts[c];
+        key = contact.edges[EdgeSide(key)].next;
+        if (ofChain(contact.shapeA) || ofChain(contact.shapeB))
+        {
+            // meff wakes what a destroyed shape touched (see DestroyShape).
+            if (contact.IsTouching() && !contact.IsSensor())
+            {
+                WakeBody(world, contact.bodyA);
+                WakeBody(world, contact.bodyB);
+            }
+            DestroyContact(world, c);
+        }
+    }
+    for (const ShapeId segment : chain.segments)
+    {
+        Shape& shape = world.shapes[segment.index];
+        world.broadPhase.DestroyProxy(shape.proxyId);
+        shape.alive = false;
+        world.freeShapes.push_back(segment.index);
+    }
+    std::erase_if(body.shapes, ofChain);
+    std::erase_if(body.shapeIds, [&](ShapeId s) { return ofChain(s.index); });
+    chain.alive = false;
+    chain.segments.clear();
+    world.freeChains.push_back(id.index);
+}
+
+bool World::IsValid(ChainId id) const
+{
+    const auto& pool = m_state->chains;
+    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
+           pool[id.index].alive && pool[id.index].generation == id.generation;
+}
+
+std::span<const ShapeId> World::GetChainSegments(ChainId id) const
+{
+    return ResolveChain(*m_state, id).segments;
+}
+
+ChainId World::GetChain(ShapeId id) const
+{
+    GetBody(id); // throws for a stale or null shape id
+    const std::int32_t chain = m_state->shapes[id.index].chain;
+    return chain < 0 ? ChainId{} : ChainId{chain, m_state->chains[chain].generation};
+}
+
+} // namespace meff
