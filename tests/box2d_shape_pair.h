@@ -136,6 +136,15 @@ inline Pose RandomPose(Random& rng, float range, float angleRange = 4)
     return pose;
 }
 
+/// The transform equals Box2D's bit for bit.
+inline void RequireSameTransform(const Transform& xf, const b2Transform& expected)
+{
+    REQUIRE(xf.p.x == expected.p.x);
+    REQUIRE(xf.p.y == expected.p.y);
+    REQUIRE(xf.q.s == expected.q.s);
+    REQUIRE(xf.q.c == expected.q.c);
+}
+
 /// The manifold equals Box2D's bit for bit: type, normal, reference point, every point and its
 /// feature key. Returns whether it has points.
 inline bool RequireSameManifold(const Manifold& m, const b2Manifold& expected)

@@ -297,12 +297,8 @@ struct TwinWorlds
         for (std::size_t i = 0; i < bodies.size(); ++i)
         {
             INFO("body " << i);
-            const b2Transform& b2xf = b2Bodies[i]->GetTransform();
-            const Transform xf = meff.GetTransform(bodies[i]);
-            REQUIRE(xf.p.x == b2xf.p.x);
-            REQUIRE(xf.p.y == b2xf.p.y);
-            REQUIRE(xf.q.s == b2xf.q.s);
-            REQUIRE(xf.q.c == b2xf.q.c);
+            meff::test::RequireSameTransform(meff.GetTransform(bodies[i]),
+                                             b2Bodies[i]->GetTransform());
             REQUIRE(meff.GetLinearVelocity(bodies[i]).x == b2Bodies[i]->GetLinearVelocity().x);
             REQUIRE(meff.GetLinearVelocity(bodies[i]).y == b2Bodies[i]->GetLinearVelocity().y);
             REQUIRE(meff.GetAngularVelocity(bodies[i]) == b2Bodies[i]->GetAngularVelocity());

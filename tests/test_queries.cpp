@@ -959,12 +959,8 @@ TEST_CASE("CastRayClosest and OverlapAABB agree with b2World::RayCast and QueryA
         // The worlds must be the same for the comparison to mean anything.
         for (std::size_t b = 0; b < scene.bodies.size(); ++b)
         {
-            const b2Transform& b2xf = mirror.Body(b)->GetTransform();
-            const Transform xf = built.world.GetTransform(built.bodies[b]);
-            REQUIRE(xf.p.x == b2xf.p.x);
-            REQUIRE(xf.p.y == b2xf.p.y);
-            REQUIRE(xf.q.s == b2xf.q.s);
-            REQUIRE(xf.q.c == b2xf.q.c);
+            meff::test::RequireSameTransform(built.world.GetTransform(built.bodies[b]),
+                                             mirror.Body(b)->GetTransform());
         }
         // Every body has one scene shape (one fixture), so a hit is named by its body. A
         // chain's segments are one fixture in Box2D, which reports it once per child (per

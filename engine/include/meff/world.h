@@ -179,6 +179,14 @@ struct PreSolveContact
 /// reported, no hit event). Contact begin/end events are geometric and are not affected.
 using PreSolveCallback = std::function<bool(const PreSolveContact& contact)>;
 
+/// Decides whether two shapes get a contact (Box2D 2.4.1's b2ContactFilter::ShouldCollide,
+/// Box2D v3's custom filter). Asked only for pairs the built-in rules let through — filter
+/// bits and groups, a dynamic body among the two, no joint between them without
+/// collideConnected, not on one body — so it adds to them and never overrides them, as a
+/// b2ContactFilter that calls the base class first. Returning false: no contact; the pair is
+/// asked again the next time the broad phase finds it (when a shape's fat box moves).
+using CustomFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
+
 /// A joint's reaction on body B, as Box2D's GetReactionForce/GetReactionTorque.
 struct JointReaction
 {
@@ -419,6 +427,16 @@ class World
     /// throw (the step would be left half done). It is configuration, not state:
     /// RestoreSnapshot keeps the current callback.
     void SetPreSolveCallback(PreSolveCallback callback);
+    /// Installs (or, with an empty function, removes) the custom collision filter. It is
+    /// called INSIDE World::Step where Box2D 2.4.1 calls its contact filter: when a pair of
+    /// shapes without a contact is first found by the broad phase (shapes as the broad phase
+    /// pairs them), and for an existing contact flagged for re-filtering by the creation or
+    /// destruction of a joint between its bodies (the contact's shapes; false destroys it).
+    /// Contacts that exist when it is installed are kept. The same rules as for the pre-solve
+    /// callback: it must not modify the world or throw, and it must answer the same for the
+    /// same pair for runs to be deterministic. Configuration, not state: RestoreSnapshot keeps
+    /// the current filter.
+    void SetCustomFilterCallback(CustomFilterCallback callback);
 
     // Reports of the last step
     /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).

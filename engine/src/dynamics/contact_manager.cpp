@@ -51,6 +51,13 @@ bool BodiesShouldCollide(const WorldState& world, std::int32_t a, std::int32_t b
     return true;
 }
 
+/// The user's filter (World::SetCustomFilterCallback), asked after the built-in rules.
+bool CustomFilterAllows(const WorldState& world, std::int32_t a, std::int32_t b)
+{
+    return !world.customFilter || world.customFilter(ShapeId{a, world.shapes[a].generation},
+                                                     ShapeId{b, world.shapes[b].generation});
+}
+
 void LinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int side)
 {
     Contact& contact = world.contacts[contactIndex];
@@ -105,6 +112,13 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     // contact list, a cache miss per edge and a thousand edges for a container full of boxes;
     // the set answers the same question in one look-up.
     if (world.contactPairs.Contains(ShapePairKey(shapeIndexA, shapeIndexB)))
+    {
+        return;
+    }
+    // The user's filter, which may count or log its calls, so asked exactly when Box2D asks
+    // its b2ContactFilter: after the three refusals above, before the shape types are looked
+    // at (Box2D asks about two segments too, then makes no contact).
+    if (!CustomFilterAllows(world, shapeIndexA, shapeIndexB))
     {
         return;
     }
@@ -247,8 +261,11 @@ void Collide(WorldState& world)
 
         if ((contact.flags & Contact::Filter) != 0)
         {
+            // As b2ContactManager::Collide: the bodies, then the filter (bits, then the
+            // user's).
             if (!BodiesShouldCollide(world, contact.bodyB, contact.bodyA) ||
-                !FiltersAllow(shapeA.def.filter, shapeB.def.filter))
+                !FiltersAllow(shapeA.def.filter, shapeB.def.filter) ||
+                !CustomFilterAllows(world, contact.shapeA, contact.shapeB))
             {
                 DestroyContact(world, c);
                 c = next;

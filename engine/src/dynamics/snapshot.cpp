@@ -78,9 +78,10 @@ WorldSnapshot World::SaveSnapshot() const
 {
     WorldSnapshot snapshot;
     auto copy = std::make_shared<detail::WorldState>(*m_state);
-    // The pre-solve callback is configuration, not state (RestoreSnapshot keeps the current
-    // one): a snapshot must not keep alive whatever the callback captured.
+    // The callbacks are configuration, not state (RestoreSnapshot keeps the current ones): a
+    // snapshot must not keep alive whatever they captured.
     copy->preSolve = nullptr;
+    copy->customFilter = nullptr;
     snapshot.m_state = std::move(copy);
     return snapshot;
 }
@@ -91,9 +92,12 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
     {
         throw InvalidArgument("World::RestoreSnapshot: the snapshot is empty");
     }
-    PreSolveCallback callback = std::move(m_state->preSolve); // configuration, not state
+    // Configuration, not state: the current callbacks stay.
+    PreSolveCallback preSolve = std::move(m_state->preSolve);
+    CustomFilterCallback customFilter = std::move(m_state->customFilter);
     *m_state = *snapshot.m_state;
-    m_state->preSolve = std::move(callback);
+    m_state->preSolve = std::move(preSolve);
+    m_state->customFilter = std::move(customFilter);
 }
 
 } // namespace meff

@@ -1327,6 +1327,11 @@ void World::SetPreSolveCallback(PreSolveCallback callback)
     m_state->preSolve = std::move(callback);
 }
 
+void World::SetCustomFilterCallback(CustomFilterCallback callback)
+{
+    m_state->customFilter = std::move(callback);
+}
+
 std::span<const ContactPointReport> World::GetContactReports() const
 {
     // Built on the first read after a step (contact_reports.h): the world's visible state does

@@ -86,7 +86,8 @@ struct WorldState
     /// shapes or bodies between steps and are carried into the next step's lists.
     std::size_t stepEndEventCount = 0;
     std::size_t stepSensorEndEventCount = 0;
-    PreSolveCallback preSolve; ///< the user's, or empty; kept across RestoreSnapshot
+    PreSolveCallback preSolve;         ///< the user's, or empty; kept across RestoreSnapshot
+    CustomFilterCallback customFilter; ///< the user's, or empty; kept across RestoreSnapshot
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;
