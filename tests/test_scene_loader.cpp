@@ -181,6 +181,52 @@ TEST_CASE("Scene errors: a key given twice in one object", "[scene][errors]")
                    "only once"});
 }
 
+TEST_CASE("Scene errors: JSON nested deeper than the limit is refused where it gets too deep",
+          "[scene][errors]")
+{
+    // 100,000 levels: before the limit, every open level kept its whole path (quadratic memory:
+    // 40,000 levels took 3 GB); now reading stops at level 65 with the path to it.
+    std::string path;
+    for (std::size_t level = 0; level < 64; ++level)
+    {
+        path += "[0]";
+    }
+    CHECK(ErrorsOf(std::string(100000, '[')) ==
+          Messages{"x.json: " + path +
+                   ": nested deeper than 64 levels (a scene needs about 7): "
+                   "not a scene file"});
+    // Objects count too, and the path names their keys.
+    std::string objects;
+    for (int level = 0; level < 70; ++level)
+    {
+        objects += "{\"a\": [1, ";
+    }
+    const Messages deep = ErrorsOf(objects);
+    REQUIRE(deep.size() == 1);
+    CHECK(deep[0].rfind("x.json: a[1].a[1].a[1].", 0) == 0);
+    CHECK(deep[0].find("nested deeper than 64 levels") != std::string::npos);
+    // 64 levels are read (and refused for what they say, not for their depth; the value shown
+    // is cut at 80 characters).
+    CHECK(ErrorsOf(std::string(64, '[') + "1" + std::string(64, ']')) ==
+          Messages{"x.json: the scene must be a JSON object, got " + std::string(64, '[') + "1" +
+                   std::string(12, ']') + "..."});
+}
+
+TEST_CASE("Scene errors: messages deep inside arrays name the right element", "[scene][errors]")
+{
+    // An open container's path goes through its parent array's last element, not the next one.
+    CHECK(ErrorsOf(R"({ "meff_scene": 1, "bodies": [ { "name": "a", "type": "static" },
+        { "name": "b", "type": "dynamic", "shapes": [ { "type": "circle", "radius": 1 },
+          { "type": "circle", "radius": 1, "filter": { "group": 1, "group": 2 } } ] } ] })") ==
+          Messages{"x.json: bodies[1].shapes[1].filter.group: duplicate key: each field may "
+                   "appear only once"});
+    CHECK(ErrorsOf(R"({ "meff_scene": 1, "bodies": [ { "name": "a", "type": "static" },
+        { "name": "b", "type": "static", "shapes": [ { "type": "polygon",
+          "vertices": [[0, 0], [1, 0], [1, 1e400]] } ] } ] })") ==
+          Messages{"x.json: bodies[1].shapes[0].vertices[2][1]: must be a finite number, got "
+                   "1e400"});
+}
+
 TEST_CASE("Scene errors: names not unique, not defined or malformed", "[scene][errors]")
 {
     CHECK(ErrorsOf(R"({ "meff_scene": 1,

@@ -48,7 +48,10 @@ bool LooksNonFinite(const Json& value)
 }
 
 /// Builds the document through nlohmann's SAX interface, so that it knows the field path of
-/// every value: needed to say where a number overflowed and which key was duplicated.
+/// every value: needed to say where a number overflowed and which key was duplicated. The path
+/// is kept as one key per open container and spelled out only for a message, so memory stays
+/// linear in the depth; and nesting deeper than kMaxJsonDepth is refused outright (a scene
+/// needs about 7 levels).
 class DocumentBuilder : public nlohmann::json_sax<Json>
 {
   public:
@@ -64,19 +67,14 @@ class DocumentBuilder : public nlohmann::json_sax<Json>
     bool string(string_t& value) override { return Add(Json(std::move(value))); }
     bool binary(binary_t& value) override { return Add(Json::binary(std::move(value))); }
 
-    bool start_object(std::size_t) override
-    {
-        std::string path = CurrentValuePath(); // before adding: an array's index is its size
-        m_open.push_back({AddContainer(Json::object()), {}, std::move(path)});
-        return true;
-    }
+    bool start_object(std::size_t) override { return Open(Json::object()); }
     bool key(string_t& key) override
     {
         Container& object = m_open.back();
         object.key = key;
         if (object.value->contains(key))
         {
-            m_diagnostics.Report(JoinPath(object.path, key),
+            m_diagnostics.Report(CurrentValuePath(),
                                  "duplicate key: each field may appear only once");
         }
         return true;
@@ -86,12 +84,7 @@ class DocumentBuilder : public nlohmann::json_sax<Json>
         m_open.pop_back();
         return true;
     }
-    bool start_array(std::size_t) override
-    {
-        std::string path = CurrentValuePath();
-        m_open.push_back({AddContainer(Json::array()), {}, std::move(path)});
-        return true;
-    }
+    bool start_array(std::size_t) override { return Open(Json::array()); }
     bool end_array() override
     {
         m_open.pop_back();
@@ -124,22 +117,42 @@ class DocumentBuilder : public nlohmann::json_sax<Json>
     {
         Json* value;
         std::string key; ///< objects: the key of the value being read
-        std::string path;
     };
 
-    /// The field path of the value about to be added.
+    /// The field path of the value about to be added: through each open container's open
+    /// child (an array's last element, an object's current key) to the innermost container's
+    /// next value (an array's next index is its size).
     std::string CurrentValuePath() const
     {
-        if (m_open.empty())
+        std::string path;
+        for (std::size_t i = 0; i < m_open.size(); ++i)
         {
-            return "";
+            const Container& container = m_open[i];
+            if (container.value->is_array())
+            {
+                const std::size_t size = container.value->size();
+                path = IndexPath(path, i + 1 < m_open.size() ? size - 1 : size);
+            }
+            else
+            {
+                path = JoinPath(path, container.key);
+            }
         }
-        const Container& parent = m_open.back();
-        if (parent.value->is_array())
+        return path;
+    }
+
+    bool Open(Json&& container)
+    {
+        if (m_open.size() >= kMaxJsonDepth)
         {
-            return IndexPath(parent.path, parent.value->size());
+            m_diagnostics.Report(CurrentValuePath(),
+                                 "nested deeper than " + std::to_string(kMaxJsonDepth) +
+                                     " levels (a scene needs about 7): not a scene file");
+            return false;
         }
-        return JoinPath(parent.path, parent.key);
+        Json* value = AddContainer(std::move(container));
+        m_open.push_back({value, {}});
+        return true;
     }
 
     Json* AddContainer(Json&& value)

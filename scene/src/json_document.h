@@ -47,9 +47,13 @@ std::string FormatReal(Real value);
 std::string JoinPath(const std::string& parent, std::string_view key);
 std::string IndexPath(const std::string& parent, std::size_t index);
 
-/// Parses JSON text. On a syntax error, a number too large for a double or a key that appears
-/// twice in one object, reports it and returns nullopt. nlohmann::json alone would throw a
-/// number overflow without saying where, and silently keep the last of duplicate keys.
+/// How deeply arrays and objects may nest in a scene file (the format itself needs about 7).
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+/// Parses JSON text. On a syntax error, a number too large for a double, a key that appears
+/// twice in one object or nesting deeper than kMaxJsonDepth, reports it and returns nullopt.
+/// nlohmann::json alone would throw a number overflow without saying where, and silently keep the
+/// last of duplicate keys.
 std::optional<Json> ParseDocument(std::string_view text, Diagnostics& diagnostics);
 
 /// Typed access to the fields of one JSON object. Every field read is remembered as known, so
