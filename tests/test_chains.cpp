@@ -67,7 +67,7 @@ TEST_CASE("CreateChain makes one segment per link, with its neighbours as ghosts
         CHECK(Same(world.GetChainSegment(segments[2]).ghost1, points[1]));
         CHECK(Same(world.GetChainSegment(segments[2]).ghost2, {-1, 1}));
         // The body lists the chain's segments together, in order, newest first among shapes.
-        const std::span<const ShapeId> shapes = world.GetShapes(ground);
+        const std::vector<ShapeId> shapes = world.GetShapes(ground);
         REQUIRE(shapes.size() == 4);
         CHECK(shapes[0] == segments[0]);
         CHECK(shapes[1] == segments[1]);

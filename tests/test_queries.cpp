@@ -219,7 +219,7 @@ struct QueryWorld
         }
         for (const BodyId body : built.bodies)
         {
-            const std::span<const ShapeId> bodyShapes = built.world.GetShapes(body);
+            const std::vector<ShapeId> bodyShapes = built.world.GetShapes(body);
             shapes.insert(shapes.end(), bodyShapes.begin(), bodyShapes.end());
         }
     }

@@ -8,6 +8,9 @@
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -255,5 +258,140 @@ TEST_CASE("destroying a body ends its contacts and invalidates its ids", "[world
     CHECK(again.index == box.index);
     CHECK_FALSE(again == box);
     CHECK_THROWS_AS(world.GetPosition(box), InvalidArgument);
+    world.Step(Real(1) / 60);
+}
+
+TEST_CASE("destroying bodies while walking GetBodies destroys exactly the ones chosen",
+          "[world][lifecycle]")
+{
+    // The idiom a game writes (world.h, GetBodies). With a view of the live list, each
+    // destruction shifted the list under the walk: every other body was skipped and the walk
+    // read past the end (ASan: container-overflow).
+    World world = test::MakePile(12, 3, Real(1.2), 0);
+    world.Step(Real(1) / 60);
+    const std::vector<BodyId> before = world.GetBodies(); // the ground and 12 bodies
+    REQUIRE(before.size() == 13);
+    const auto chosen = [&](BodyId body) { return world.GetPosition(body).y > 6; };
+    std::vector<BodyId> expectedSurvivors;
+    for (const BodyId body : before)
+    {
+        if (!chosen(body))
+        {
+            expectedSurvivors.push_back(body);
+        }
+    }
+    REQUIRE(expectedSurvivors.size() < before.size()); // the test destroys something...
+    REQUIRE(expectedSurvivors.size() > 1);             // ...and keeps something
+    for (const BodyId body : world.GetBodies())
+    {
+        if (chosen(body))
+        {
+            world.DestroyBody(body);
+        }
+    }
+    CHECK(world.GetBodies() == expectedSurvivors);
+    world.Step(Real(1) / 60);
+
+    // Every body, the same way: none is left, and the world still steps.
+    for (const BodyId body : world.GetBodies())
+    {
+        world.DestroyBody(body);
+    }
+    CHECK(world.GetBodies().empty());
+    world.Step(Real(1) / 60);
+}
+
+TEST_CASE("destroying shapes and joints while walking their lists", "[world][lifecycle]")
+{
+    World world;
+    const BodyId ground = world.CreateBody({});
+    const BodyId body = world.CreateBody({.type = BodyType::Dynamic, .position = {0, 2}});
+    for (int i = 0; i < 6; ++i)
+    {
+        world.CreateShape(body, ShapeDef{}, Circle{{Real(i) * Real(0.1), 0}, Real(0.2)});
+    }
+    std::vector<JointId> joints;
+    for (int i = 0; i < 5; ++i)
+    {
+        joints.push_back(world.CreateJoint(world.MakeRevoluteJointDef(ground, body, {0, 2})));
+    }
+    for (const ShapeId shape : world.GetShapes(body))
+    {
+        world.DestroyShape(shape);
+    }
+    CHECK(world.GetShapes(body).empty());
+    CHECK(world.GetMass(body) == 0); // every shape's mass went with it
+    for (const JointId joint : world.GetJoints())
+    {
+        world.DestroyJoint(joint);
+    }
+    CHECK(world.GetJoints().empty());
+    for (const JointId joint : joints)
+    {
+        CHECK_FALSE(world.IsValid(joint));
+    }
+}
+
+TEST_CASE("a moved-from World refuses every call with an error that says so", "[world][lifecycle]")
+{
+    World world = test::MakePile(4, 2, 1, 0);
+    const BodyId body = world.GetBodies()[1];
+    World moved = std::move(world);
+    moved.Step(Real(1) / 60); // the state went with the move
+    CHECK(moved.IsValid(body));
+    // The source segfaulted on any call (its state is null); now each throws.
+    CHECK_THROWS_WITH(world.Step(Real(1) / 60), Catch::Contains("moved from"));
+    CHECK_THROWS_WITH(world.GetPosition(body), Catch::Contains("moved from"));
+    CHECK_THROWS_AS(world.GetBodies(), InvalidArgument);
+    CHECK_THROWS_AS(world.CreateBody({}), InvalidArgument);
+    CHECK_THROWS_AS(world.IsValid(body), InvalidArgument);
+    CHECK_THROWS_AS(world.GetStateHash(), InvalidArgument);
+    CHECK_THROWS_AS(world.CastRayClosest({0, 0}, {1, 0}), InvalidArgument);
+    // Assigning a world to it makes it usable again.
+    world = World{};
+    CHECK(world.GetBodies().empty());
+}
+
+TEST_CASE("Step and world changes from the pre-solve callback are refused, not recursed into",
+          "[world][lifecycle]")
+{
+    World world = test::MakePile(4, 2, 1, 0);
+    const WorldSnapshot start = world.SaveSnapshot();
+    int calls = 0;
+    std::string refused;
+    world.SetPreSolveCallback(
+        [&](const PreSolveContact&)
+        {
+            ++calls;
+            try
+            {
+                world.Step(Real(1) / 60); // recursed until the stack overflowed
+            }
+            catch (const InvalidArgument& error)
+            {
+                refused = error.what();
+            }
+            CHECK_THROWS_AS(world.CreateBody({}), InvalidArgument);
+            CHECK_THROWS_AS(world.DestroyBody(world.GetBodies()[1]), InvalidArgument);
+            CHECK_THROWS_AS(world.RestoreSnapshot(start), InvalidArgument);
+            return true;
+        });
+    for (int i = 0; i < 120 && calls == 0; ++i)
+    {
+        world.Step(Real(1) / 60);
+    }
+    REQUIRE(calls > 0);
+    CHECK_THAT(refused, Catch::Contains("called during World::Step"));
+    // The refusals were caught inside the callback: the world goes on stepping.
+    world.Step(Real(1) / 60);
+
+    // An exception let out of the callback leaves its step half done: the world freezes, and a
+    // snapshot thaws it.
+    world.SetPreSolveCallback([&](const PreSolveContact&) -> bool
+                              { throw std::runtime_error("the game's own error"); });
+    CHECK_THROWS_WITH(world.Step(Real(1) / 60), "the game's own error");
+    CHECK_THROWS_WITH(world.Step(Real(1) / 60), Catch::Contains("an earlier step failed"));
+    world.SetPreSolveCallback({});
+    world.RestoreSnapshot(start);
     world.Step(Real(1) / 60);
 }

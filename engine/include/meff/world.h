@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace meff
 {
@@ -255,6 +256,8 @@ class World
     ~World();
     World(const World&) = delete;
     World& operator=(const World&) = delete;
+    /// Moving leaves the source empty: every call on it but destruction and assignment throws
+    /// InvalidArgument ("this World was moved from").
     World(World&&) noexcept;
     World& operator=(World&&) noexcept;
 
@@ -299,8 +302,13 @@ class World
     bool IsSleepingAllowed(BodyId id) const;
     /// false also wakes the body (Box2D's SetSleepingAllowed).
     void SetSleepingAllowed(BodyId id, bool allowed);
-    /// Live bodies in creation order.
-    std::span<const BodyId> GetBodies() const;
+    /// Live bodies in creation order: a copy, so the world may change while a game walks it.
+    /// Destroying bodies in the walk is safe and destroys exactly the ones chosen:
+    ///     for (BodyId body : world.GetBodies())
+    ///         if (IsOffScreen(world, body)) world.DestroyBody(body);
+    /// An id the walk has not reached yet may have been destroyed by then (with a body it was
+    /// jointed to, say): IsValid(id) says so. Bodies created during the walk are not in it.
+    std::vector<BodyId> GetBodies() const;
 
     // Shapes
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Circle& circle);
@@ -324,8 +332,9 @@ class World
     const ChainSegment& GetChainSegment(ShapeId id) const;
     const ShapeDef& GetShapeDef(ShapeId id) const;
     /// A body's shapes, newest first (Box2D's fixture-list order); a chain's segments are
-    /// listed together, in order along the chain.
-    std::span<const ShapeId> GetShapes(BodyId body) const;
+    /// listed together, in order along the chain. A copy, so destroying them while walking it
+    /// is safe (see GetBodies).
+    std::vector<ShapeId> GetShapes(BodyId body) const;
 
     // Chains (world_chain.cpp)
     /// Makes a chain of one-sided segments (Box2D 2.4.1's b2ChainShape; see Chain): one
@@ -371,8 +380,9 @@ class World
     Vec2 GetAnchorB(JointId id) const; ///< world point (m)
     /// Reaction on body B over the last step: the joint's accumulated impulse times invDt.
     JointReaction GetReaction(JointId id, Real invDt) const;
-    /// Live joints in creation order.
-    std::span<const JointId> GetJoints() const;
+    /// Live joints in creation order: a copy, so destroying joints (or their bodies) while
+    /// walking it is safe; check IsValid for ids the walk has not reached (see GetBodies).
+    std::vector<JointId> GetJoints() const;
     /// Target speed of a joint's motor: rad/s for revolute and wheel joints (B relative to
     /// A), m/s along the axis for prismatic joints. Throws InvalidArgument for other types or
     /// a non-finite speed. Does not enable the motor.
@@ -407,7 +417,10 @@ class World
 
     // Stepping
     /// Advances the world by dt seconds (> 0 and finite). Throws SimulationError if a body's
-    /// state becomes non-finite; the world is then frozen but readable.
+    /// state becomes non-finite; the world is then frozen but readable. Called during a step
+    /// (from the pre-solve callback), it throws InvalidArgument instead of recursing; an
+    /// exception that leaves a step half done (thrown by the callback) also freezes the world.
+    /// RestoreSnapshot thaws a frozen world.
     void Step(Real dt);
     std::uint64_t GetStepCount() const;
     const SolverSettings& GetSolverSettings() const;
@@ -424,8 +437,9 @@ class World
     /// WARNING: it runs INSIDE World::Step, in the narrow phase and in continuous collision.
     /// It must not modify the world — no Create/Destroy/Set/Apply/Step calls — and should only
     /// read meff's data (the contact it is given, const getters of this world), and must not
-    /// throw (the step would be left half done). It is configuration, not state:
-    /// RestoreSnapshot keeps the current callback.
+    /// throw (the step would be left half done, and the world frozen). Step, the Create and
+    /// Destroy calls, SetTransform and RestoreSnapshot throw InvalidArgument when called from
+    /// it. It is configuration, not state: RestoreSnapshot keeps the current callback.
     void SetPreSolveCallback(PreSolveCallback callback);
     /// Installs (or, with an empty function, removes) the custom collision filter. It is
     /// called INSIDE World::Step where Box2D 2.4.1 calls its contact filter: when a pair of
@@ -536,6 +550,10 @@ class World
     void Draw(DebugDraw& draw, const DrawFlags& flags = {}) const;
 
   private:
+    /// The state; throws InvalidArgument for a world that was moved from.
+    detail::WorldState& State();
+    const detail::WorldState& State() const;
+
     std::unique_ptr<detail::WorldState> m_state;
 };
 

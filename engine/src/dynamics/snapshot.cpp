@@ -40,7 +40,7 @@ class Fnv1a
 std::uint64_t World::GetStateHash() const
 {
     Fnv1a hash;
-    for (const detail::Body& body : m_state->bodies)
+    for (const detail::Body& body : State().bodies)
     {
         if (!body.alive)
         {
@@ -59,7 +59,7 @@ std::uint64_t World::GetStateHash() const
         hash.Add(static_cast<unsigned char>(body.awake ? 1 : 0));
         hash.Add(body.sleepTime);
     }
-    for (const detail::Contact& contact : m_state->contacts)
+    for (const detail::Contact& contact : State().contacts)
     {
         if (!contact.alive)
         {
@@ -77,7 +77,7 @@ std::uint64_t World::GetStateHash() const
 WorldSnapshot World::SaveSnapshot() const
 {
     WorldSnapshot snapshot;
-    auto copy = std::make_shared<detail::WorldState>(*m_state);
+    auto copy = std::make_shared<detail::WorldState>(State());
     // The callbacks are configuration, not state (RestoreSnapshot keeps the current ones): a
     // snapshot must not keep alive whatever they captured.
     copy->preSolve = nullptr;
@@ -92,12 +92,19 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
     {
         throw InvalidArgument("World::RestoreSnapshot: the snapshot is empty");
     }
+    detail::WorldState& world = State();
+    if (world.stepping)
+    {
+        throw InvalidArgument("World::RestoreSnapshot: called during World::Step (from the "
+                              "pre-solve callback); the callback must not change the world");
+    }
     // Configuration, not state: the current callbacks stay.
-    PreSolveCallback preSolve = std::move(m_state->preSolve);
-    CustomFilterCallback customFilter = std::move(m_state->customFilter);
-    *m_state = *snapshot.m_state;
-    m_state->preSolve = std::move(preSolve);
-    m_state->customFilter = std::move(customFilter);
+    PreSolveCallback preSolve = std::move(world.preSolve);
+    CustomFilterCallback customFilter = std::move(world.customFilter);
+    world = *snapshot.m_state;
+    world.preSolve = std::move(preSolve);
+    world.customFilter = std::move(customFilter);
+    world.stepping = false; // a snapshot saved from the callback was saved mid-step
 }
 
 } // namespace meff

@@ -20,6 +20,7 @@
 #include "dynamics/world_state.h"
 #include "meff/world.h"
 
+#include <exception>
 #include <string>
 
 namespace meff
@@ -27,18 +28,56 @@ namespace meff
 
 using namespace detail;
 
+namespace
+{
+
+/// Marks the world as stepping while Step runs; an exception leaving Step (from the pre-solve
+/// callback) leaves the step half done, so the world is then frozen as after a non-finite one.
+class SteppingGuard
+{
+  public:
+    explicit SteppingGuard(WorldState& world)
+        : m_world(world), m_exceptions(std::uncaught_exceptions())
+    {
+        m_world.stepping = true;
+    }
+    ~SteppingGuard()
+    {
+        m_world.stepping = false;
+        if (std::uncaught_exceptions() > m_exceptions)
+        {
+            m_world.failed = true;
+        }
+    }
+    SteppingGuard(const SteppingGuard&) = delete;
+    SteppingGuard& operator=(const SteppingGuard&) = delete;
+
+  private:
+    WorldState& m_world;
+    int m_exceptions;
+};
+
+} // namespace
+
 void World::Step(Real dt)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
     if (!(dt > 0) || !meff::IsValid(dt))
     {
         throw InvalidArgument("World::Step: dt must be finite and > 0, got " + std::to_string(dt));
     }
+    if (world.stepping)
+    {
+        throw InvalidArgument("World::Step: called during World::Step (from the pre-solve "
+                              "callback); the callback must not change the world");
+    }
     if (world.failed)
     {
-        throw Error("World::Step: an earlier step produced a non-finite state; the world is "
-                    "frozen (read it, then rebuild it)");
+        throw Error("World::Step: an earlier step failed (a non-finite state, or an exception "
+                    "from the pre-solve callback); the world is frozen (read it, then rebuild "
+                    "it or restore a snapshot)");
     }
+    const SteppingGuard stepping(world);
 
     const StepContext step = BeginStep(world, dt);
     try

@@ -71,8 +71,8 @@ std::int32_t AllocateSlot(std::vector<T>& pool, std::vector<std::int32_t>& freeL
 }
 
 /// Looks an id up in a pool, refusing null, out-of-range and stale ids.
-template <typename T, typename IdType>
-T& Resolve(std::vector<T>& pool, IdType id, const char* kind)
+template <typename Pool, typename IdType>
+auto& Resolve(Pool& pool, IdType id, const char* kind)
 {
     if (id.index < 0 || static_cast<std::size_t>(id.index) >= pool.size() || id.IsNull() ||
         !pool[id.index].alive || pool[id.index].generation != id.generation)
@@ -251,12 +251,54 @@ World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
+namespace
+{
+
+[[noreturn]] void ThrowMovedFrom()
+{
+    throw InvalidArgument("World: this World was moved from and has no state; use the World it "
+                          "was moved to, or assign a new one to it");
+}
+
+/// Calls that change what a step is walking (bodies, shapes, joints, contacts) are refused
+/// while it walks them: from the pre-solve callback.
+void RequireNotStepping(const WorldState& world, const char* call)
+{
+    if (world.stepping)
+    {
+        throw InvalidArgument(std::string(call) +
+                              ": called during World::Step (from the pre-solve callback); the "
+                              "callback must not change the world");
+    }
+}
+
+} // namespace
+
+WorldState& World::State()
+{
+    if (!m_state)
+    {
+        ThrowMovedFrom();
+    }
+    return *m_state;
+}
+
+const WorldState& World::State() const
+{
+    if (!m_state)
+    {
+        ThrowMovedFrom();
+    }
+    return *m_state;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bodies
 
 BodyId World::CreateBody(const BodyDef& def)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
+    RequireNotStepping(world, "World::CreateBody");
     RequireFinite(def.position, "BodyDef::position");
     RequireFinite(def.angle, "BodyDef::angle");
     RequireFinite(def.linearVelocity, "BodyDef::linearVelocity");
@@ -303,7 +345,8 @@ BodyId World::CreateBody(const BodyDef& def)
 
 void World::DestroyBody(BodyId id)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
+    RequireNotStepping(world, "World::DestroyBody");
     Body& body = Resolve(world.bodies, id, "body");
     BuildContactReports(world); // the last step's reports still name this body
     // Bodies resting on this one must not sleep on in mid-air. Box2D 2.4.1 wakes only the
@@ -353,67 +396,68 @@ void World::DestroyBody(BodyId id)
 
 bool World::IsValid(BodyId id) const
 {
-    const auto& pool = m_state->bodies;
+    const auto& pool = State().bodies;
     return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
            pool[id.index].alive && pool[id.index].generation == id.generation;
 }
 
 BodyType World::GetType(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").type;
+    return Resolve(State().bodies, id, "body").type;
 }
 Vec2 World::GetPosition(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").xf.p;
+    return Resolve(State().bodies, id, "body").xf.p;
 }
 Real World::GetAngle(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").sweep.a;
+    return Resolve(State().bodies, id, "body").sweep.a;
 }
 Transform World::GetTransform(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").xf;
+    return Resolve(State().bodies, id, "body").xf;
 }
 Vec2 World::GetWorldCenter(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").sweep.c;
+    return Resolve(State().bodies, id, "body").sweep.c;
 }
 Vec2 World::GetLocalCenter(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").sweep.localCenter;
+    return Resolve(State().bodies, id, "body").sweep.localCenter;
 }
 Vec2 World::GetLinearVelocity(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").linearVelocity;
+    return Resolve(State().bodies, id, "body").linearVelocity;
 }
 Real World::GetAngularVelocity(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").angularVelocity;
+    return Resolve(State().bodies, id, "body").angularVelocity;
 }
 Real World::GetMass(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").mass;
+    return Resolve(State().bodies, id, "body").mass;
 }
 Real World::GetRotationalInertia(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").I;
+    return Resolve(State().bodies, id, "body").I;
 }
 std::uint64_t World::GetUserData(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").userData;
+    return Resolve(State().bodies, id, "body").userData;
 }
 Vec2 World::GetWorldPoint(BodyId id, Vec2 localPoint) const
 {
-    return Mul(Resolve(m_state->bodies, id, "body").xf, localPoint);
+    return Mul(Resolve(State().bodies, id, "body").xf, localPoint);
 }
 Vec2 World::GetLocalPoint(BodyId id, Vec2 worldPoint) const
 {
-    return MulT(Resolve(m_state->bodies, id, "body").xf, worldPoint);
+    return MulT(Resolve(State().bodies, id, "body").xf, worldPoint);
 }
 
 void World::SetTransform(BodyId id, Vec2 position, Real angle)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
+    RequireNotStepping(world, "World::SetTransform");
     Body& body = Resolve(world.bodies, id, "body");
     RequireFinite(position, "World::SetTransform: position");
     RequireFinite(angle, "World::SetTransform: angle");
@@ -439,7 +483,7 @@ void World::SetTransform(BodyId id, Vec2 position, Real angle)
 
 void World::SetLinearVelocity(BodyId id, Vec2 v)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(v, "World::SetLinearVelocity: v");
     if (body.type == BodyType::Static)
     {
@@ -454,7 +498,7 @@ void World::SetLinearVelocity(BodyId id, Vec2 v)
 
 void World::SetAngularVelocity(BodyId id, Real w)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(w, "World::SetAngularVelocity: w");
     if (body.type == BodyType::Static)
     {
@@ -489,7 +533,7 @@ bool TakesLoad(Body& body, bool wake)
 
 void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(force, "World::ApplyForce: force");
     RequireFinite(worldPoint, "World::ApplyForce: point");
     if (TakesLoad(body, wake))
@@ -501,7 +545,7 @@ void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake)
 
 void World::ApplyForceToCenter(BodyId id, Vec2 force, bool wake)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(force, "World::ApplyForceToCenter: force");
     if (TakesLoad(body, wake))
     {
@@ -511,7 +555,7 @@ void World::ApplyForceToCenter(BodyId id, Vec2 force, bool wake)
 
 void World::ApplyTorque(BodyId id, Real torque, bool wake)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(torque, "World::ApplyTorque: torque");
     if (TakesLoad(body, wake))
     {
@@ -521,7 +565,7 @@ void World::ApplyTorque(BodyId id, Real torque, bool wake)
 
 void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(impulse, "World::ApplyLinearImpulse: impulse");
     RequireFinite(worldPoint, "World::ApplyLinearImpulse: point");
     if (TakesLoad(body, wake))
@@ -533,7 +577,7 @@ void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wa
 
 void World::ApplyAngularImpulse(BodyId id, Real impulse, bool wake)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(impulse, "World::ApplyAngularImpulse: impulse");
     if (TakesLoad(body, wake))
     {
@@ -543,12 +587,12 @@ void World::ApplyAngularImpulse(BodyId id, Real impulse, bool wake)
 
 bool World::IsAwake(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").awake;
+    return Resolve(State().bodies, id, "body").awake;
 }
 
 void World::SetAwake(BodyId id, bool awake)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     if (awake)
     {
         WakeBody(body);
@@ -561,12 +605,12 @@ void World::SetAwake(BodyId id, bool awake)
 
 bool World::IsSleepingAllowed(BodyId id) const
 {
-    return Resolve(m_state->bodies, id, "body").allowSleep;
+    return Resolve(State().bodies, id, "body").allowSleep;
 }
 
 void World::SetSleepingAllowed(BodyId id, bool allowed)
 {
-    Body& body = Resolve(m_state->bodies, id, "body");
+    Body& body = Resolve(State().bodies, id, "body");
     body.allowSleep = allowed;
     if (!allowed)
     {
@@ -574,9 +618,9 @@ void World::SetSleepingAllowed(BodyId id, bool allowed)
     }
 }
 
-std::span<const BodyId> World::GetBodies() const
+std::vector<BodyId> World::GetBodies() const
 {
-    return m_state->bodyIds;
+    return State().bodyIds;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -587,6 +631,7 @@ namespace
 
 ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape prototype)
 {
+    RequireNotStepping(world, "World::CreateShape");
     Body& body = Resolve(world.bodies, bodyId, "body");
     ValidateShapeDef(def);
     const std::int32_t index = AllocateSlot(world.shapes, world.freeShapes);
@@ -696,7 +741,7 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circl
     Shape shape;
     shape.type = ShapeType::Circle;
     shape.circle = circle;
-    return AddShape(*m_state, body, def, shape);
+    return AddShape(State(), body, def, shape);
 }
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon)
@@ -716,8 +761,8 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& poly
     Shape shape;
     shape.type = ShapeType::Polygon;
     shape.polygon = polygon;
-    shape.polygon.radius = m_state->tolerances.polygonSkin;
-    return AddShape(*m_state, body, def, shape);
+    shape.polygon.radius = State().tolerances.polygonSkin;
+    return AddShape(State(), body, def, shape);
 }
 
 namespace
@@ -742,33 +787,34 @@ void RequireValidSegment(const Segment& segment, const Tolerances& tolerances, c
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segment)
 {
-    RequireValidSegment(segment, m_state->tolerances, "Segment");
+    RequireValidSegment(segment, State().tolerances, "Segment");
     Shape shape;
     shape.type = ShapeType::Segment;
     shape.segment = segment;
-    shape.segment.radius = m_state->tolerances.polygonSkin;
-    return AddShape(*m_state, body, def, shape);
+    shape.segment.radius = State().tolerances.polygonSkin;
+    return AddShape(State(), body, def, shape);
 }
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const ChainSegment& segment)
 {
-    RequireValidSegment(segment.segment, m_state->tolerances, "ChainSegment::segment");
+    RequireValidSegment(segment.segment, State().tolerances, "ChainSegment::segment");
     // A ghost on its end point would give the end no direction to meet: the same rule as
     // for the segment's length.
-    RequireValidSegment({segment.ghost1, segment.segment.point1}, m_state->tolerances,
+    RequireValidSegment({segment.ghost1, segment.segment.point1}, State().tolerances,
                         "ChainSegment (ghost1 to point1)");
-    RequireValidSegment({segment.segment.point2, segment.ghost2}, m_state->tolerances,
+    RequireValidSegment({segment.segment.point2, segment.ghost2}, State().tolerances,
                         "ChainSegment (point2 to ghost2)");
     Shape shape;
     shape.type = ShapeType::ChainSegment;
     shape.chainSegment = segment;
-    shape.chainSegment.segment.radius = m_state->tolerances.polygonSkin;
-    return AddShape(*m_state, body, def, shape);
+    shape.chainSegment.segment.radius = State().tolerances.polygonSkin;
+    return AddShape(State(), body, def, shape);
 }
 
 void World::DestroyShape(ShapeId id)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
+    RequireNotStepping(world, "World::DestroyShape");
     Shape& shape = Resolve(world.shapes, id, "shape");
     Require(shape.chain < 0,
             [&]
@@ -798,55 +844,55 @@ void World::DestroyShape(ShapeId id)
 
 bool World::IsValid(ShapeId id) const
 {
-    const auto& pool = m_state->shapes;
+    const auto& pool = State().shapes;
     return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
            pool[id.index].alive && pool[id.index].generation == id.generation;
 }
 
 BodyId World::GetBody(ShapeId id) const
 {
-    const Shape& shape = Resolve(m_state->shapes, id, "shape");
-    return {shape.body, m_state->bodies[shape.body].generation};
+    const Shape& shape = Resolve(State().shapes, id, "shape");
+    return {shape.body, State().bodies[shape.body].generation};
 }
 ShapeType World::GetShapeType(ShapeId id) const
 {
-    return Resolve(m_state->shapes, id, "shape").type;
+    return Resolve(State().shapes, id, "shape").type;
 }
 const Circle& World::GetCircle(ShapeId id) const
 {
-    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    const Shape& shape = Resolve(State().shapes, id, "shape");
     Require(shape.type == ShapeType::Circle,
             [&] { return std::string("World::GetCircle: the shape is not a circle"); });
     return shape.circle;
 }
 const Polygon& World::GetPolygon(ShapeId id) const
 {
-    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    const Shape& shape = Resolve(State().shapes, id, "shape");
     Require(shape.type == ShapeType::Polygon,
             [&] { return std::string("World::GetPolygon: the shape is not a polygon"); });
     return shape.polygon;
 }
 const Segment& World::GetSegment(ShapeId id) const
 {
-    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    const Shape& shape = Resolve(State().shapes, id, "shape");
     Require(shape.type == ShapeType::Segment,
             [&] { return std::string("World::GetSegment: the shape is not a segment"); });
     return shape.segment;
 }
 const ChainSegment& World::GetChainSegment(ShapeId id) const
 {
-    const Shape& shape = Resolve(m_state->shapes, id, "shape");
+    const Shape& shape = Resolve(State().shapes, id, "shape");
     Require(shape.type == ShapeType::ChainSegment, [&]
             { return std::string("World::GetChainSegment: the shape is not a chain segment"); });
     return shape.chainSegment;
 }
 const ShapeDef& World::GetShapeDef(ShapeId id) const
 {
-    return Resolve(m_state->shapes, id, "shape").def;
+    return Resolve(State().shapes, id, "shape").def;
 }
-std::span<const ShapeId> World::GetShapes(BodyId body) const
+std::vector<ShapeId> World::GetShapes(BodyId body) const
 {
-    return Resolve(m_state->bodies, body, "body").shapeIds;
+    return Resolve(State().bodies, body, "body").shapeIds;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -888,6 +934,7 @@ JointId AddJoint(WorldState& world, Joint joint)
 
 void RequireTwoBodies(WorldState& world, BodyId a, BodyId b)
 {
+    RequireNotStepping(world, "World::CreateJoint");
     Resolve(world.bodies, a, "body");
     Resolve(world.bodies, b, "body");
     Require(!(a == b),
@@ -898,23 +945,23 @@ void RequireTwoBodies(WorldState& world, BodyId a, BodyId b)
 
 JointId World::CreateJoint(const RevoluteJointDef& def)
 {
-    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
-    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
+    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const DistanceJointDef& def)
 {
-    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
-    const Body& a = m_state->bodies[def.bodyA.index];
-    const Body& b = m_state->bodies[def.bodyB.index];
-    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass,
-                                        m_state->tolerances));
+    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    const Body& a = State().bodies[def.bodyA.index];
+    const Body& b = State().bodies[def.bodyB.index];
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass,
+                                       State().tolerances));
 }
 
 JointId World::CreateJoint(const PrismaticJointDef& def)
 {
-    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
-    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
+    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 namespace
@@ -931,39 +978,39 @@ Real InertiaAboutOrigin(const Body& body)
 
 JointId World::CreateJoint(const WeldJointDef& def)
 {
-    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
-    const Body& a = m_state->bodies[def.bodyA.index];
-    const Body& b = m_state->bodies[def.bodyB.index];
-    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index,
-                                        InertiaAboutOrigin(a), InertiaAboutOrigin(b)));
+    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    const Body& a = State().bodies[def.bodyA.index];
+    const Body& b = State().bodies[def.bodyB.index];
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, InertiaAboutOrigin(a),
+                                       InertiaAboutOrigin(b)));
 }
 
 JointId World::CreateJoint(const MotorJointDef& def)
 {
-    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
-    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index));
+    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const WheelJointDef& def)
 {
-    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
-    const Body& a = m_state->bodies[def.bodyA.index];
-    const Body& b = m_state->bodies[def.bodyB.index];
-    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass));
+    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    const Body& a = State().bodies[def.bodyA.index];
+    const Body& b = State().bodies[def.bodyB.index];
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass));
 }
 
 JointId World::CreateJoint(const MouseJointDef& def)
 {
-    RequireTwoBodies(*m_state, def.bodyA, def.bodyB);
-    const Body& a = m_state->bodies[def.bodyA.index];
-    const Body& b = m_state->bodies[def.bodyB.index];
-    return AddJoint(*m_state, MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass, b.xf,
-                                        b.type == BodyType::Dynamic));
+    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    const Body& a = State().bodies[def.bodyA.index];
+    const Body& b = State().bodies[def.bodyB.index];
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass, b.xf,
+                                       b.type == BodyType::Dynamic));
 }
 
 void World::SetMouseTarget(JointId id, Vec2 target)
 {
-    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    Joint& joint = Resolve(State().joints, id, "joint").joint;
     auto* mouse = std::get_if<MouseJoint>(&joint.data);
     Require(mouse != nullptr,
             [&] { return std::string("World::SetMouseTarget: the joint is not a mouse joint"); });
@@ -972,14 +1019,14 @@ void World::SetMouseTarget(JointId id, Vec2 target)
     {
         // The pointer moved: the dragged body must follow (Box2D's SetTarget wakes it then;
         // an unchanged target wakes nothing, so a game may set it every frame).
-        WakeBody(*m_state, joint.bodyB);
+        WakeBody(State(), joint.bodyB);
         mouse->target = target;
     }
 }
 
 Vec2 World::GetMouseTarget(JointId id) const
 {
-    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
     const auto* mouse = std::get_if<MouseJoint>(&joint.data);
     Require(mouse != nullptr,
             [&] { return std::string("World::GetMouseTarget: the joint is not a mouse joint"); });
@@ -988,7 +1035,7 @@ Vec2 World::GetMouseTarget(JointId id) const
 
 void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffset)
 {
-    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    Joint& joint = Resolve(State().joints, id, "joint").joint;
     auto* motor = std::get_if<MotorJoint>(&joint.data);
     Require(motor != nullptr, [&]
             { return std::string("World::SetMotorJointOffsets: the joint is not a motor joint"); });
@@ -998,8 +1045,8 @@ void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffs
     {
         // A new target pose moves the bodies: wake them, as Box2D's SetLinearOffset and
         // SetAngularOffset do when the value changes.
-        WakeBody(*m_state, joint.bodyA);
-        WakeBody(*m_state, joint.bodyB);
+        WakeBody(State(), joint.bodyA);
+        WakeBody(State(), joint.bodyB);
         motor->linearOffset = linearOffset;
         motor->angularOffset = angularOffset;
     }
@@ -1007,7 +1054,8 @@ void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffs
 
 void World::DestroyJoint(JointId id)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
+    RequireNotStepping(world, "World::DestroyJoint");
     JointSlot& slot = Resolve(world.joints, id, "joint");
     if (slot.prev != kNullIndex)
     {
@@ -1036,48 +1084,48 @@ void World::DestroyJoint(JointId id)
 
 bool World::IsValid(JointId id) const
 {
-    const auto& pool = m_state->joints;
+    const auto& pool = State().joints;
     return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
            pool[id.index].alive && pool[id.index].generation == id.generation;
 }
 
 JointType World::GetJointType(JointId id) const
 {
-    return Resolve(m_state->joints, id, "joint").joint.type;
+    return Resolve(State().joints, id, "joint").joint.type;
 }
 BodyId World::GetBodyA(JointId id) const
 {
-    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return {joint.bodyA, m_state->bodies[joint.bodyA].generation};
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    return {joint.bodyA, State().bodies[joint.bodyA].generation};
 }
 BodyId World::GetBodyB(JointId id) const
 {
-    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return {joint.bodyB, m_state->bodies[joint.bodyB].generation};
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    return {joint.bodyB, State().bodies[joint.bodyB].generation};
 }
 
 Vec2 World::GetAnchorA(JointId id) const
 {
-    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return JointAnchorA(joint, m_state->bodies[joint.bodyA].xf);
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    return JointAnchorA(joint, State().bodies[joint.bodyA].xf);
 }
 Vec2 World::GetAnchorB(JointId id) const
 {
-    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    return JointAnchorB(joint, m_state->bodies[joint.bodyB].xf);
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    return JointAnchorB(joint, State().bodies[joint.bodyB].xf);
 }
 JointReaction World::GetReaction(JointId id, Real invDt) const
 {
-    return GetJointReaction(Resolve(m_state->joints, id, "joint").joint, invDt);
+    return GetJointReaction(Resolve(State().joints, id, "joint").joint, invDt);
 }
-std::span<const JointId> World::GetJoints() const
+std::vector<JointId> World::GetJoints() const
 {
-    return m_state->jointIds;
+    return State().jointIds;
 }
 
 void World::SetJointMotorSpeed(JointId id, Real speed)
 {
-    Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    Joint& joint = Resolve(State().joints, id, "joint").joint;
     RequireFinite(speed, "World::SetJointMotorSpeed: speed");
     Real* motorSpeed = nullptr;
     if (auto* r = std::get_if<RevoluteJoint>(&joint.data))
@@ -1101,8 +1149,8 @@ void World::SetJointMotorSpeed(JointId id, Real speed)
     {
         // A changed motor moves its bodies: wake them, as Box2D's SetMotorSpeed does. An
         // unchanged speed wakes nothing, so a game may set it every frame and still sleep.
-        WakeBody(*m_state, joint.bodyA);
-        WakeBody(*m_state, joint.bodyB);
+        WakeBody(State(), joint.bodyA);
+        WakeBody(State(), joint.bodyB);
         *motorSpeed = speed;
     }
 }
@@ -1135,10 +1183,10 @@ SlideFrame GetSlideFrame(const Joint& joint, const char* caller)
 
 Real World::GetJointTranslation(JointId id) const
 {
-    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
     const SlideFrame frame = GetSlideFrame(joint, "GetJointTranslation");
-    const Body& a = m_state->bodies[joint.bodyA];
-    const Body& b = m_state->bodies[joint.bodyB];
+    const Body& a = State().bodies[joint.bodyA];
+    const Body& b = State().bodies[joint.bodyB];
     const Vec2 pA = Mul(a.xf, frame.localAnchorA);
     const Vec2 pB = Mul(b.xf, frame.localAnchorB);
     const Vec2 d = pB - pA;
@@ -1148,9 +1196,9 @@ Real World::GetJointTranslation(JointId id) const
 
 Real World::GetJointSpeed(JointId id) const
 {
-    const Joint& joint = Resolve(m_state->joints, id, "joint").joint;
-    const Body& a = m_state->bodies[joint.bodyA];
-    const Body& b = m_state->bodies[joint.bodyB];
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const Body& a = State().bodies[joint.bodyA];
+    const Body& b = State().bodies[joint.bodyB];
     if (joint.type == JointType::Revolute)
     {
         return b.angularVelocity - a.angularVelocity;
@@ -1191,7 +1239,7 @@ DistanceJointDef World::MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAncho
     def.localAnchorA = GetLocalPoint(a, worldAnchorA);
     def.localAnchorB = GetLocalPoint(b, worldAnchorB);
     const Vec2 d = worldAnchorB - worldAnchorA;
-    def.length = Max(d.Length(), m_state->tolerances.linearSlop);
+    def.length = Max(d.Length(), State().tolerances.linearSlop);
     def.minLength = def.length;
     def.maxLength = def.length;
     return def;
@@ -1252,11 +1300,11 @@ MotorJointDef World::MakeMotorJointDef(BodyId a, BodyId b) const
 
 std::uint64_t World::GetStepCount() const
 {
-    return m_state->stepCount;
+    return State().stepCount;
 }
 const SolverSettings& World::GetSolverSettings() const
 {
-    return m_state->solver;
+    return State().solver;
 }
 void World::SetSolverSettings(const SolverSettings& settings)
 {
@@ -1278,36 +1326,36 @@ void World::SetSolverSettings(const SolverSettings& settings)
                 return "SolverSettings::kind: not a SolverKind (" +
                        std::to_string(static_cast<int>(settings.kind)) + ")";
             });
-    m_state->solver = settings;
+    State().solver = settings;
 }
 Vec2 World::GetGravity() const
 {
-    return m_state->gravity;
+    return State().gravity;
 }
 void World::SetGravity(Vec2 gravity)
 {
     RequireFinite(gravity, "World::SetGravity: gravity");
-    m_state->gravity = gravity;
+    State().gravity = gravity;
 }
 const Tolerances& World::GetTolerances() const
 {
-    return m_state->tolerances;
+    return State().tolerances;
 }
 bool World::GetContinuous() const
 {
-    return m_state->continuous;
+    return State().continuous;
 }
 void World::SetContinuous(bool continuous)
 {
-    m_state->continuous = continuous;
+    State().continuous = continuous;
 }
 bool World::GetAllowSleeping() const
 {
-    return m_state->allowSleep;
+    return State().allowSleep;
 }
 void World::SetAllowSleeping(bool allow)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
     if (allow == world.allowSleep)
     {
         return;
@@ -1324,51 +1372,52 @@ void World::SetAllowSleeping(bool allow)
 
 void World::SetPreSolveCallback(PreSolveCallback callback)
 {
-    m_state->preSolve = std::move(callback);
+    State().preSolve = std::move(callback);
 }
 
 void World::SetCustomFilterCallback(CustomFilterCallback callback)
 {
-    m_state->customFilter = std::move(callback);
+    State().customFilter = std::move(callback);
 }
 
 std::span<const ContactPointReport> World::GetContactReports() const
 {
     // Built on the first read after a step (contact_reports.h): the world's visible state does
     // not change, so this stays a const call, but like every World call it is not thread-safe.
-    BuildContactReports(*m_state);
-    return m_state->contactReports;
+    // The state itself is not const (only this view of it): building the reports is allowed.
+    BuildContactReports(const_cast<WorldState&>(State()));
+    return State().contactReports;
 }
 std::span<const ContactEvent> World::GetContactBeginEvents() const
 {
-    return m_state->beginEvents;
+    return State().beginEvents;
 }
 std::span<const ContactEvent> World::GetContactEndEvents() const
 {
-    return m_state->endEvents;
+    return State().endEvents;
 }
 std::span<const SensorEvent> World::GetSensorBeginEvents() const
 {
-    return m_state->sensorBeginEvents;
+    return State().sensorBeginEvents;
 }
 std::span<const SensorEvent> World::GetSensorEndEvents() const
 {
-    return m_state->sensorEndEvents;
+    return State().sensorEndEvents;
 }
 std::span<const ContactHitEvent> World::GetContactHitEvents() const
 {
-    return m_state->hitEvents;
+    return State().hitEvents;
 }
 int World::GetContactCount() const
 {
-    return m_state->contactCount;
+    return State().contactCount;
 }
 int World::GetTouchingContactCount() const
 {
     int count = 0;
-    for (std::int32_t c = m_state->contactList; c != kNullIndex; c = m_state->contacts[c].next)
+    for (std::int32_t c = State().contactList; c != kNullIndex; c = State().contacts[c].next)
     {
-        count += m_state->contacts[c].IsTouching() ? 1 : 0;
+        count += State().contacts[c].IsTouching() ? 1 : 0;
     }
     return count;
 }

@@ -90,7 +90,8 @@ std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
     return segments;
 }
 
-ChainSlot& ResolveChain(WorldState& world, ChainId id)
+template <typename State> // WorldState or const WorldState
+auto& ResolveChain(State& world, ChainId id)
 {
     if (id.index < 0 || static_cast<std::size_t>(id.index) >= world.chains.size() || id.IsNull() ||
         !world.chains[id.index].alive || world.chains[id.index].generation != id.generation)
@@ -106,7 +107,7 @@ ChainSlot& ResolveChain(WorldState& world, ChainId id)
 
 ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
     const std::vector<ChainSegment> segments = MakeSegments(chain, world.tolerances.linearSlop);
 
     // Every check CreateShape makes (body, definition) fails on the first segment, before
@@ -151,7 +152,12 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
 
 void World::DestroyChain(ChainId id)
 {
-    WorldState& world = *m_state;
+    WorldState& world = State();
+    if (world.stepping)
+    {
+        throw InvalidArgument("World::DestroyChain: called during World::Step (from the "
+                              "pre-solve callback); the callback must not change the world");
+    }
     ChainSlot& chain = ResolveChain(world, id);
     BuildContactReports(world); // the last step's reports still name these shapes
     Body& body = world.bodies[chain.body];
@@ -191,21 +197,21 @@ void World::DestroyChain(ChainId id)
 
 bool World::IsValid(ChainId id) const
 {
-    const auto& pool = m_state->chains;
+    const auto& pool = State().chains;
     return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
            pool[id.index].alive && pool[id.index].generation == id.generation;
 }
 
 std::span<const ShapeId> World::GetChainSegments(ChainId id) const
 {
-    return ResolveChain(*m_state, id).segments;
+    return ResolveChain(State(), id).segments;
 }
 
 ChainId World::GetChain(ShapeId id) const
 {
     GetBody(id); // throws for a stale or null shape id
-    const std::int32_t chain = m_state->shapes[id.index].chain;
-    return chain < 0 ? ChainId{} : ChainId{chain, m_state->chains[chain].generation};
+    const std::int32_t chain = State().shapes[id.index].chain;
+    return chain < 0 ? ChainId{} : ChainId{chain, State().chains[chain].generation};
 }
 
 } // namespace meff

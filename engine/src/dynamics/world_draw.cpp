@@ -163,10 +163,11 @@ void DrawSlideAxis(DebugDraw& draw, const Joint& joint, const Transform& xfA, Ve
 
 void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
 {
-    const WorldState& world = *m_state;
+    const WorldState& world = State();
     if (flags.contacts || flags.contactImpulses)
     {
-        BuildContactReports(*m_state); // as GetContactReports: built when first needed
+        // As GetContactReports: built when first needed (the state is not const, this view is).
+        BuildContactReports(const_cast<WorldState&>(world));
     }
     const DrawPalette& colors = flags.colors;
 

@@ -199,7 +199,7 @@ void World::CastRay(Vec2 origin, Vec2 translation, QueryFilter filter, CastCallb
     RequireFinite(origin, "World::CastRay: origin");
     RequireFinite(translation, "World::CastRay: translation");
     RequireFinite(origin + translation, "World::CastRay: origin + translation");
-    const WorldState& world = *m_state;
+    const WorldState& world = State();
 
     const RayCastInput input{origin, origin + translation, 1};
     world.broadPhase.RayCast(
@@ -239,7 +239,7 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
                               "upperBound, got " +
                               Describe(box.lowerBound) + " to " + Describe(box.upperBound));
     }
-    const WorldState& world = *m_state;
+    const WorldState& world = State();
     world.broadPhase.Query(box, {filter.categoryBits, filter.maskBits},
                            [&](std::int32_t proxyId)
                            {
@@ -251,7 +251,7 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
 void World::OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callback) const
 {
     RequireFinite(point, "World::OverlapPoint: point");
-    const WorldState& world = *m_state;
+    const WorldState& world = State();
     // A shape containing the point has it inside its tight box, so inside its fat box.
     world.broadPhase.Query(AABB{point, point}, {filter.categoryBits, filter.maskBits},
                            [&](std::int32_t proxyId)
@@ -272,7 +272,7 @@ void World::CastShape(const Circle& shape, const Transform& start, Vec2 translat
     RequireValidCastShape(shape);
     RequireValidTransform(start, "World::CastShape: start");
     RequireFinite(translation, "World::CastShape: translation");
-    CastProxy(*m_state, MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
+    CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
               callback);
 }
 
@@ -282,7 +282,7 @@ void World::CastShape(const Polygon& shape, const Transform& start, Vec2 transla
     RequireValidCastShape(shape);
     RequireValidTransform(start, "World::CastShape: start");
     RequireFinite(translation, "World::CastShape: translation");
-    CastProxy(*m_state, MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
+    CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
               callback);
 }
 
@@ -304,14 +304,14 @@ RayResult World::CastShapeClosest(const Polygon& shape, const Transform& start, 
 
 AABB World::GetShapeAABB(ShapeId id) const
 {
-    const Shape& shape = ResolveShape(*m_state, id, "World::GetShapeAABB");
-    return shape.ComputeAABB(m_state->bodies[shape.body].xf);
+    const Shape& shape = ResolveShape(State(), id, "World::GetShapeAABB");
+    return shape.ComputeAABB(State().bodies[shape.body].xf);
 }
 
 AABB World::GetShapeFatAABB(ShapeId id) const
 {
-    const Shape& shape = ResolveShape(*m_state, id, "World::GetShapeFatAABB");
-    return m_state->broadPhase.GetFatAABB(shape.proxyId);
+    const Shape& shape = ResolveShape(State(), id, "World::GetShapeFatAABB");
+    return State().broadPhase.GetFatAABB(shape.proxyId);
 }
 
 } // namespace meff

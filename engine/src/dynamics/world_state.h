@@ -91,7 +91,10 @@ struct WorldState
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;
-    bool failed = false; ///< a step produced a non-finite state; stepping is refused
+    /// A step failed (a non-finite state, or an exception from the pre-solve callback left it
+    /// half done); stepping is refused until RestoreSnapshot.
+    bool failed = false;
+    bool stepping = false; ///< inside World::Step: the world must not be changed
 };
 
 /// What a solver back end sees of the world (solvers/solver.h).
