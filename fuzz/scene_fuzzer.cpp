@@ -1,7 +1,8 @@
 // libFuzzer target for the scene loader (issue 7): any bytes given to meff::ParseScene either
 // load or are refused with a SceneError whose every message is a clear "FILE: ..." line; a
-// scene that loads is built into a World and stepped a few times, where the only failure
-// allowed is a SimulationError (the engine's documented stop on a non-finite state). Anything
+// scene that loads is built into a World (which must accept it: the loader and the engine
+// share one set of rules) and stepped a few times, where the only failure allowed is a
+// SimulationError (the engine's documented stop on a non-finite state). Anything
 // else — a crash, a sanitizer report, another exception, a message without its file name —
 // is a finding. Built only with -DMEFF_FUZZ=ON and clang (fuzz/CMakeLists.txt).
 #include "meff/scene.h"
@@ -71,7 +72,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     catch (const meff::SceneError& error)
     {
-        CheckRejection(error); // the engine refused what the loader let through: still clear
+        // The loader applies the engine's own rules (meff/validity.h): a scene it accepts is
+        // one the engine builds. A refusal here means the two disagree.
+        Finding(("the engine refused a scene the loader accepted: " + std::string(error.what()))
+                    .c_str());
     }
     catch (const meff::SimulationError&)
     {

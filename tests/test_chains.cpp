@@ -426,11 +426,12 @@ TEST_CASE("Scene errors: chains and one-sided segments", "[chain][scene][errors]
               R"({ "type": "chain", "points": [[0, 0], [1, 0]], "next": [1, 0.001] })")) ==
           Messages{"x.json: bodies[0].shapes[0].next: must be more than 0.005 m from the end "
                    "point it precedes or follows, got [1, 0.001]"});
+    // A chain may be on a dynamic body (as in Box2D), but gives it no mass.
     CHECK(
         ErrorsOf(SceneWithShape(R"({ "type": "chain", "points": [[0, 0], [1, 0]] })", "dynamic")) ==
-        Messages{"x.json: bodies[0].shapes[0].type: must not be \"chain\" on a dynamic body "
-                 "(chains have no mass; use them for static or kinematic bodies), got "
-                 "\"chain\""});
+        Messages{"x.json: bodies[0].shapes: a dynamic body needs mass: give one of its circles, "
+                 "boxes or polygons a density > 0 (segments and chains have none), got "
+                 "[{\"points\": [[0, 0], [1, 0]], \"type\": \"chain\"}]"});
     CHECK(ErrorsOf(SceneWithShape(
               R"({ "type": "segment", "points": [[0, 0], [1, 0]], "prev": [-1, 0] })")) ==
           Messages{"x.json: bodies[0].shapes[0].prev: is only for a one-sided segment "

@@ -1,4 +1,5 @@
 // Turning a validated Scene into a meff World.
+#include "engine_shapes.h"
 #include "meff/scene.h"
 
 #include "meff/collision.h"
@@ -11,10 +12,7 @@ namespace meff
 namespace
 {
 
-Vec2 ToVec2(SceneVec2 v)
-{
-    return {Real(v.x), Real(v.y)};
-}
+using scene_detail::ToEngine;
 
 /// The engine's error, said about one scene field.
 [[noreturn]] void Refused(const Scene& scene, const std::string& fieldPath, const Error& error)
@@ -26,7 +24,7 @@ Vec2 ToVec2(SceneVec2 v)
 WorldDef MakeWorldDef(const SceneWorldSettings& settings)
 {
     WorldDef def;
-    def.gravity = ToVec2(settings.gravity);
+    def.gravity = ToEngine(settings.gravity);
     def.solver = settings.solver;
     def.allowSleep = settings.allowSleep;
     def.continuous = settings.continuous;
@@ -37,9 +35,9 @@ BodyDef MakeBodyDef(const SceneBody& body)
 {
     BodyDef def;
     def.type = body.type;
-    def.position = ToVec2(body.position);
+    def.position = ToEngine(body.position);
     def.angle = Real(body.angle);
-    def.linearVelocity = ToVec2(body.linearVelocity);
+    def.linearVelocity = ToEngine(body.linearVelocity);
     def.angularVelocity = Real(body.angularVelocity);
     def.linearDamping = Real(body.linearDamping);
     def.angularDamping = Real(body.angularDamping);
@@ -51,20 +49,6 @@ BodyDef MakeBodyDef(const SceneBody& body)
     return def;
 }
 
-ShapeDef MakeShapeDef(const SceneShape& shape)
-{
-    ShapeDef def;
-    def.density = Real(shape.density);
-    def.friction = Real(shape.friction);
-    def.restitution = Real(shape.restitution);
-    def.restitutionThreshold = Real(shape.restitutionThreshold);
-    def.filter.categoryBits = shape.filter.category;
-    def.filter.maskBits = shape.filter.mask;
-    def.filter.groupIndex = shape.filter.group;
-    def.isSensor = shape.sensor;
-    return def;
-}
-
 /// The chain of a "chain" shape, the file's points and resolved ghosts.
 ChainId CreateChain(World& world, BodyId body, const SceneShape& shape)
 {
@@ -72,66 +56,31 @@ ChainId CreateChain(World& world, BodyId body, const SceneShape& shape)
     points.reserve(shape.points.size());
     for (const SceneVec2& point : shape.points)
     {
-        points.push_back(ToVec2(point));
+        points.push_back(ToEngine(point));
     }
     Chain chain;
     chain.points = points;
     chain.loop = shape.loop;
     if (shape.prev)
     {
-        chain.prev = ToVec2(*shape.prev);
+        chain.prev = ToEngine(*shape.prev);
     }
     if (shape.next)
     {
-        chain.next = ToVec2(*shape.next);
+        chain.next = ToEngine(*shape.next);
     }
-    return world.CreateChain(body, MakeShapeDef(shape), chain);
+    return world.CreateChain(body, scene_detail::ToShapeDef(shape), chain);
 }
 
 ShapeId CreateShape(World& world, BodyId body, const SceneShape& shape)
 {
-    const ShapeDef def = MakeShapeDef(shape);
-    switch (shape.type)
+    if (shape.type == SceneShapeType::Chain)
     {
-    case SceneShapeType::Circle:
-    {
-        Circle circle;
-        circle.center = ToVec2(shape.center);
-        circle.radius = Real(shape.radius);
-        return world.CreateShape(body, def, circle);
-    }
-    case SceneShapeType::Box:
-        return world.CreateShape(body, def,
-                                 MakeOffsetBox(Real(shape.halfWidth), Real(shape.halfHeight),
-                                               ToVec2(shape.center), Real(shape.angle)));
-    case SceneShapeType::Polygon:
-    {
-        std::vector<Vec2> points;
-        points.reserve(shape.vertices.size());
-        for (const SceneVec2& vertex : shape.vertices)
-        {
-            points.push_back(ToVec2(vertex));
-        }
-        return world.CreateShape(body, def, MakePolygon(points));
-    }
-    case SceneShapeType::Segment:
-    {
-        Segment segment;
-        segment.point1 = ToVec2(shape.point1);
-        segment.point2 = ToVec2(shape.point2);
-        if (shape.oneSided)
-        {
-            return world.CreateShape(body, def,
-                                     ChainSegment{ToVec2(shape.prev.value_or(shape.point1)),
-                                                  segment,
-                                                  ToVec2(shape.next.value_or(shape.point2))});
-        }
-        return world.CreateShape(body, def, segment);
-    }
-    case SceneShapeType::Chain:
         return world.GetChainSegments(CreateChain(world, body, shape)).front();
     }
-    throw InvalidArgument("unknown shape type");
+    const ShapeDef def = scene_detail::ToShapeDef(shape);
+    return std::visit([&](const auto& geometry) { return world.CreateShape(body, def, geometry); },
+                      scene_detail::ToEngineShape(shape));
 }
 
 JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
@@ -143,7 +92,7 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     {
     case JointType::Revolute:
     {
-        RevoluteJointDef def = world.MakeRevoluteJointDef(bodyA, bodyB, ToVec2(joint.anchor));
+        RevoluteJointDef def = world.MakeRevoluteJointDef(bodyA, bodyB, ToEngine(joint.anchor));
         def.enableLimit = joint.enableLimit;
         def.lowerAngle = Real(joint.lowerAngle);
         def.upperAngle = Real(joint.upperAngle);
@@ -156,7 +105,7 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     case JointType::Prismatic:
     {
         PrismaticJointDef def =
-            world.MakePrismaticJointDef(bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
+            world.MakePrismaticJointDef(bodyA, bodyB, ToEngine(joint.anchor), ToEngine(joint.axis));
         def.enableLimit = joint.enableLimit;
         def.lowerTranslation = Real(joint.lowerTranslation);
         def.upperTranslation = Real(joint.upperTranslation);
@@ -169,7 +118,7 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     case JointType::Wheel:
     {
         WheelJointDef def =
-            world.MakeWheelJointDef(bodyA, bodyB, ToVec2(joint.anchor), ToVec2(joint.axis));
+            world.MakeWheelJointDef(bodyA, bodyB, ToEngine(joint.anchor), ToEngine(joint.axis));
         def.enableLimit = joint.enableLimit;
         def.lowerTranslation = Real(joint.lowerTranslation);
         def.upperTranslation = Real(joint.upperTranslation);
@@ -183,8 +132,8 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     }
     case JointType::Distance:
     {
-        DistanceJointDef def =
-            world.MakeDistanceJointDef(bodyA, bodyB, ToVec2(joint.anchorA), ToVec2(joint.anchorB));
+        DistanceJointDef def = world.MakeDistanceJointDef(bodyA, bodyB, ToEngine(joint.anchorA),
+                                                          ToEngine(joint.anchorB));
         def.length = Real(joint.length);
         def.minLength = Real(joint.minLength);
         def.maxLength = Real(joint.maxLength);
@@ -195,7 +144,7 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     }
     case JointType::Weld:
     {
-        WeldJointDef def = world.MakeWeldJointDef(bodyA, bodyB, ToVec2(joint.anchor));
+        WeldJointDef def = world.MakeWeldJointDef(bodyA, bodyB, ToEngine(joint.anchor));
         def.hertz = Real(joint.stiffnessHz);
         def.dampingRatio = Real(joint.dampingRatio);
         def.collideConnected = joint.collideConnected;
@@ -206,7 +155,7 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         MotorJointDef def = world.MakeMotorJointDef(bodyA, bodyB);
         if (joint.linearOffset)
         {
-            def.linearOffset = ToVec2(*joint.linearOffset);
+            def.linearOffset = ToEngine(*joint.linearOffset);
         }
         if (joint.angularOffset)
         {
@@ -225,13 +174,13 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         MouseJointDef def;
         def.bodyA = bodyA;
         def.bodyB = bodyB;
-        def.target = ToVec2(joint.anchor);
+        def.target = ToEngine(joint.anchor);
         def.maxForce = Real(joint.maxForce);
         def.hertz = Real(joint.stiffnessHz);
         def.dampingRatio = Real(joint.dampingRatio);
         def.collideConnected = joint.collideConnected;
         const JointId id = world.CreateJoint(def);
-        world.SetMouseTarget(id, ToVec2(joint.target));
+        world.SetMouseTarget(id, ToEngine(joint.target));
         return id;
     }
     }

@@ -200,6 +200,12 @@ void Diagnostics::Report(const std::string& fieldPath, const std::string& messag
     }
 }
 
+void Diagnostics::Warn(const std::string& fieldPath, const std::string& message)
+{
+    m_warnings.push_back(m_file + ": " + (fieldPath.empty() ? "" : fieldPath + ": ") +
+                         "warning: " + message);
+}
+
 void Diagnostics::Report(const std::string& fieldPath, const std::string& message, const Json& got)
 {
     Report(fieldPath, message + ", got " + Describe(got));

@@ -27,6 +27,11 @@ class Diagnostics
     /// The same with ", got VALUE" appended, VALUE being the JSON text of `got`.
     void Report(const std::string& fieldPath, const std::string& message, const Json& got);
 
+    /// "FILE: FIELD.PATH: warning: MESSAGE": something accepted that the user should know
+    /// (kept apart from the errors; a scene with only warnings loads).
+    void Warn(const std::string& fieldPath, const std::string& message);
+    const std::vector<std::string>& Warnings() const { return m_warnings; }
+
     bool HasErrors() const { return !m_messages.empty(); }
     std::size_t Count() const { return m_messages.size(); }
     const std::vector<std::string>& Messages() const { return m_messages; }
@@ -35,6 +40,7 @@ class Diagnostics
   private:
     std::string m_file;
     std::vector<std::string> m_messages;
+    std::vector<std::string> m_warnings;
 };
 
 /// A JSON value as shown after "got": compact, and shortened when long.

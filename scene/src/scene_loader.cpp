@@ -1,9 +1,11 @@
 // Reading and validating scene files. The rule throughout: report every problem that can be
 // found without guessing, each once, and never let a bad value reach the engine.
+#include "engine_shapes.h"
 #include "json_document.h"
 
 #include "meff/collision.h"
 #include "meff/scene.h"
+#include "meff/validity.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -24,6 +26,7 @@ using scene_detail::Diagnostics;
 using scene_detail::IndexPath;
 using scene_detail::Json;
 using scene_detail::ObjectReader;
+using scene_detail::ToEngine;
 
 namespace
 {
@@ -114,11 +117,6 @@ std::optional<std::size_t> ReadChoice(ObjectReader& reader, std::string_view key
     }
     reader.Fail(key, "must be one of " + listed);
     return std::nullopt;
-}
-
-Vec2 ToEngine(SceneVec2 v)
-{
-    return {Real(v.x), Real(v.y)};
 }
 
 /// "solver": "box2d" (default), "colour" or "soft_step"; "graph_coloring": true is the older
@@ -212,6 +210,11 @@ void ReadPolygonVertices(ObjectReader& reader, SceneShape& shape)
             return;
         }
     }
+    catch (const RefusedArgument&)
+    {
+        // A hull the engine's rules refuse (too large, say): said, with the reason, where the
+        // shapes are checked as the engine will create them (CheckShapesAsTheEngine).
+    }
     catch (const InvalidArgument&)
     {
         reader.Fail("vertices", "must enclose a non-zero area (the points are collinear or "
@@ -241,19 +244,10 @@ std::optional<SceneVec2> ReadGhost(ObjectReader& reader, std::string_view key, S
     return ghost;
 }
 
-/// Segments and chains have no area and so no mass, and the engine does not collide two of
-/// them: they are meant for ground and walls.
-void RefuseOnDynamicBody(ObjectReader& reader, BodyType bodyType, const char* type)
-{
-    if (bodyType == BodyType::Dynamic)
-    {
-        reader.Fail("type", "must not be \"" + std::string(type) + "\" on a dynamic body (" + type +
-                                "s have no mass; use them for static or kinematic bodies)");
-    }
-}
-
-/// Returns whether the two points are usable (the ghosts are measured from them).
-bool ReadSegmentPoints(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
+/// Two points, as far apart as the engine requires (CheckSegment). A segment may be on any
+/// body, as in Box2D: it has no mass, and collides with circles and polygons (not with other
+/// segments). Returns whether the two points are usable (the ghosts are measured from them).
+bool ReadSegmentPoints(ObjectReader& reader, SceneShape& shape)
 {
     const std::optional<std::vector<SceneVec2>> points = reader.VectorList("points");
     if (!points)
@@ -265,14 +259,14 @@ bool ReadSegmentPoints(ObjectReader& reader, BodyType bodyType, SceneShape& shap
         reader.Fail("points", "must be two points [[x1, y1], [x2, y2]]");
         return false;
     }
-    const Real minimumLength = Tolerances{}.linearSlop;
-    if (!(Distance(ToEngine((*points)[0]), ToEngine((*points)[1])) > minimumLength))
+    Segment segment;
+    segment.point1 = ToEngine((*points)[0]);
+    segment.point2 = ToEngine((*points)[1]);
+    if (const std::optional<Refusal> refusal = CheckSegment(segment, Tolerances{}.linearSlop))
     {
-        reader.Fail("points",
-                    "must be more than " + scene_detail::FormatReal(minimumLength) + " m apart");
+        reader.Fail("points", refusal->reason);
         return false;
     }
-    RefuseOnDynamicBody(reader, bodyType, "segment");
     shape.point1 = (*points)[0];
     shape.point2 = (*points)[1];
     return true;
@@ -338,14 +332,11 @@ bool ReadChainPoints(ObjectReader& reader, SceneShape& shape)
     return true;
 }
 
-void ReadChain(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
+/// A chain, on any body: as in Box2D, it has no mass.
+void ReadChain(ObjectReader& reader, SceneShape& shape)
 {
     Assign(shape.loop, reader.Boolean("loop", false));
     const bool pointsRead = ReadChainPoints(reader, shape);
-    if (pointsRead)
-    {
-        RefuseOnDynamicBody(reader, bodyType, "chain");
-    }
     if (shape.loop)
     {
         for (const char* key : {"prev", "next"})
@@ -369,7 +360,7 @@ void ReadChain(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
     }
 }
 
-void ReadShape(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
+void ReadShape(ObjectReader& reader, SceneShape& shape)
 {
     const std::optional<std::size_t> type =
         ReadChoice(reader, "type", {"circle", "box", "polygon", "segment", "chain"});
@@ -399,10 +390,10 @@ void ReadShape(ObjectReader& reader, BodyType bodyType, SceneShape& shape)
         ReadPolygonVertices(reader, shape);
         break;
     case SceneShapeType::Segment:
-        ReadSegmentSides(reader, ReadSegmentPoints(reader, bodyType, shape), shape);
+        ReadSegmentSides(reader, ReadSegmentPoints(reader, shape), shape);
         break;
     case SceneShapeType::Chain:
-        ReadChain(reader, bodyType, shape);
+        ReadChain(reader, shape);
         break;
     }
     const SceneShape defaults;
@@ -462,6 +453,7 @@ void ReadBody(ObjectReader& reader, SceneBody& body)
     Assign(body.bullet, reader.Boolean("bullet", defaults.bullet));
     Assign(body.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
     Assign(body.awake, reader.Boolean("awake", defaults.awake));
+    std::vector<bool> readWell; // per shape: read without errors, so the engine may check it
     if (const Json* shapes = reader.Array("shapes", false))
     {
         for (std::size_t i = 0; i < shapes->size(); ++i)
@@ -475,19 +467,23 @@ void ReadBody(ObjectReader& reader, SceneBody& body)
             }
             ObjectReader shapeReader(reader.Diag(), entry, path);
             SceneShape& shape = body.shapes.emplace_back();
-            // Without a valid body type, segments and chains are checked as if the body were
-            // static
-            // rather than reported twice.
-            ReadShape(shapeReader, type ? body.type : BodyType::Static, shape);
+            const std::size_t errorsBefore = reader.Diag().Count();
+            ReadShape(shapeReader, shape);
+            readWell.push_back(reader.Diag().Count() == errorsBefore);
         }
+    }
+    if (type)
+    {
+        scene_detail::CheckShapesAsTheEngine(reader.Diag(), reader.PathOf("shapes"), body,
+                                             readWell);
     }
     // Without mass a dynamic body would be pushed by nothing (Box2D 2.4.1 gives it mass 0),
     // which is never what a scene means.
     if (type && body.type == BodyType::Dynamic &&
-        std::none_of(body.shapes.begin(), body.shapes.end(),
-                     [](const SceneShape& shape) { return shape.density > 0; }))
+        std::none_of(body.shapes.begin(), body.shapes.end(), scene_detail::HasMass))
     {
-        reader.Fail("shapes", "a dynamic body needs mass: give one of its shapes a density > 0");
+        reader.Fail("shapes", "a dynamic body needs mass: give one of its circles, boxes or "
+                              "polygons a density > 0 (segments and chains have none)");
     }
     if (type)
     {
@@ -682,20 +678,23 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
     {
         joint.bodyIndexA = *bodyA;
         joint.bodyIndexB = *bodyB;
+        // The engine's rule (meff/validity.h): World::CreateJoint refuses exactly these.
+        const BodyType typeA = scene.bodies[*bodyA].type;
+        const BodyType typeB = scene.bodies[*bodyB].type;
         if (*bodyA == *bodyB)
         {
             reader.Fail("body_b", "must differ from body_a");
         }
-        else if (scene.bodies[*bodyA].type != BodyType::Dynamic &&
-                 scene.bodies[*bodyB].type != BodyType::Dynamic)
+        else if (const std::optional<Refusal> refusal =
+                     type ? CheckJointBodies(kTypes[*type], false, typeB) : std::nullopt)
         {
-            reader.Fail("body_b", "must be dynamic when body_a is not (a joint between two "
-                                  "bodies that cannot move does nothing)");
+            reader.Fail("body_b", refusal->reason);
         }
-        else if (type && kTypes[*type] == JointType::Mouse &&
-                 scene.bodies[*bodyB].type != BodyType::Dynamic)
+        else if (!JointMovesAnything(typeA, typeB))
         {
-            reader.Fail("body_b", "must be dynamic for a mouse joint (it drags body B)");
+            // Box2D accepts it, so scenes written for Box2D may have one: load them.
+            reader.Diag().Warn(reader.Path(), "neither body_a nor body_b is dynamic, so this "
+                                              "joint does nothing (accepted, as Box2D accepts it)");
         }
     }
     Assign(joint.collideConnected, reader.Boolean("collide_connected", false));
@@ -1113,6 +1112,7 @@ Scene ParseScene(std::string_view text, const std::string& sourcePath)
     {
         diagnostics.Throw();
     }
+    scene.warnings = diagnostics.Warnings();
     return scene;
 }
 

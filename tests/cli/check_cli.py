@@ -279,6 +279,21 @@ def case_validate_unwritable_report():
         fail("something ran: %r" % stdout)
 
 
+def case_box2d_assertions():
+    """Numbers that tripped libbox2d's assertions (a circle of radius 1e20: ResetMassData's
+    m_I > 0) abort nothing: validate, bench and render --overlay-box2d refuse the scene, exit
+    status 2, naming the field."""
+    scene = os.path.join(SOURCE, "tests", "bad_scenes", "box2d_assertion.json")
+    for args in (["validate", scene, "--no-plot"], ["bench", scene, "--runs", "1", "--steps", "2"],
+                 ["render", scene, "--out", os.path.join(WORK, "frames"), "--frames", "1",
+                  "--overlay-box2d"]):
+        status, stdout, stderr = run(args)
+        if status != 2:
+            fail("%s: exit status %d, expected 2" % (args[0], status))
+        if "bodies[1].shapes[0].radius: too large: its area" not in stderr:
+            fail("%s: the radius is not named: %r" % (args[0], stderr))
+
+
 def case_bench_threads():
     """--threads is checked up front: exit status 2, one line naming the option."""
     for threads in ("0", "1.5"):

@@ -306,7 +306,12 @@ std::optional<Scene> LoadSceneOrReport(const std::string& path)
 {
     try
     {
-        return LoadScene(path);
+        Scene scene = LoadScene(path);
+        for (const std::string& warning : scene.warnings)
+        {
+            std::fprintf(stderr, "%s\n", warning.c_str());
+        }
+        return scene;
     }
     catch (const SceneError& error)
     {

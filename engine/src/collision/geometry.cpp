@@ -3,6 +3,7 @@
 // the same floating-point operation order; where Box2D asserts on bad input we throw.
 #include "collision/manifold_internal.h"
 #include "meff/error.h"
+#include "meff/validity.h"
 
 #include <string>
 
@@ -72,6 +73,18 @@ Polygon MakeCenteredBox(Real halfWidth, Real halfHeight, const char* caller)
     box.normals[3] = Vec2(-1, 0);
     box.centroid = Vec2(0, 0);
     return box;
+}
+
+/// What the Make functions return, World::CreateShape accepts: the one rule of
+/// meff/validity.h, with its reason (a box too large for its area to be a float, or too thin
+/// for its edges to have a direction).
+Polygon Accepted(Polygon polygon, const char* caller)
+{
+    if (const std::optional<Refusal> refusal = CheckPolygon(polygon))
+    {
+        throw RefusedArgument(std::string(caller) + ": " + refusal->reason, *refusal);
+    }
+    return polygon;
 }
 
 void CheckDensity(Real density, const char* caller)
@@ -226,12 +239,12 @@ Polygon MakePolygon(std::span<const Vec2> points)
                               std::to_string(area) + " m^2 is not above " +
                               std::to_string(kEpsilon));
     }
-    return polygon;
+    return Accepted(polygon, "MakePolygon");
 }
 
 Polygon MakeBox(Real halfWidth, Real halfHeight)
 {
-    return MakeCenteredBox(halfWidth, halfHeight, "MakeBox");
+    return Accepted(MakeCenteredBox(halfWidth, halfHeight, "MakeBox"), "MakeBox");
 }
 
 Polygon MakeOffsetBox(Real halfWidth, Real halfHeight, Vec2 center, Real angle)
@@ -253,7 +266,7 @@ Polygon MakeOffsetBox(Real halfWidth, Real halfHeight, Vec2 center, Real angle)
         box.vertices[i] = Mul(xf, box.vertices[i]);
         box.normals[i] = Mul(xf.q, box.normals[i]);
     }
-    return box;
+    return Accepted(box, "MakeOffsetBox");
 }
 
 MassData ComputeMass(const Circle& circle, Real density)

@@ -4,6 +4,7 @@
 
 #include "dynamics/step_stages.h"
 #include "dynamics/world_state.h"
+#include "meff/validity.h"
 
 #include <algorithm>
 #include <sstream>
@@ -84,8 +85,37 @@ auto& Resolve(Pool& pool, IdType id, const char* kind)
     return pool[id.index];
 }
 
-/// Box2D 2.4.1's b2Body::ResetMassData: mass and centre from the shapes' densities, inertia
-/// moved to the centre of mass, and the centre's velocity updated for the moved centre.
+/// A shape's mass data (ComputeMass at its density).
+MassData ShapeMass(const Shape& shape)
+{
+    return shape.type == ShapeType::Circle ? ComputeMass(shape.circle, shape.def.density)
+                                           : ComputeMass(shape.polygon, shape.def.density);
+}
+
+/// Whether a shape gives its body mass: Box2D skips zero densities, and segments and chain
+/// segments have none.
+bool HasMass(const Shape& shape)
+{
+    return shape.def.density != 0 &&
+           (shape.type == ShapeType::Circle || shape.type == ShapeType::Polygon);
+}
+
+/// The mass data of a body's shapes that have mass, newest first (b2Body's fixture order).
+std::vector<MassData> ShapeMasses(const WorldState& world, const Body& body)
+{
+    std::vector<MassData> masses;
+    for (const std::int32_t s : body.shapes)
+    {
+        if (HasMass(world.shapes[s]))
+        {
+            masses.push_back(ShapeMass(world.shapes[s]));
+        }
+    }
+    return masses;
+}
+
+/// Box2D 2.4.1's b2Body::ResetMassData: mass, centre and inertia from the shapes
+/// (ComputeBodyMass), and the centre's velocity updated for the moved centre.
 void ResetMassData(WorldState& world, Body& body)
 {
     body.mass = 0;
@@ -100,41 +130,15 @@ void ResetMassData(WorldState& world, Body& body)
         body.sweep.a0 = body.sweep.a;
         return;
     }
-    Vec2 localCenter{0, 0};
-    for (const std::int32_t s : body.shapes)
-    {
-        const Shape& shape = world.shapes[s];
-        if (shape.def.density == 0 || shape.type == ShapeType::Segment ||
-            shape.type == ShapeType::ChainSegment)
-        {
-            continue;
-        }
-        const MassData md = shape.type == ShapeType::Circle
-                                ? ComputeMass(shape.circle, shape.def.density)
-                                : ComputeMass(shape.polygon, shape.def.density);
-        body.mass += md.mass;
-        localCenter += md.mass * md.center;
-        body.I += md.rotationalInertia;
-    }
     // A dynamic body without mass keeps mass 0 and inverse mass 0, as in Box2D 2.4.1: it then
     // moves with its velocity and nothing can push it (the scene loader refuses such bodies).
-    if (body.mass > 0)
-    {
-        body.invMass = Real(1) / body.mass;
-        localCenter *= body.invMass;
-    }
-    if (body.I > 0 && !body.fixedRotation)
-    {
-        body.I -= body.mass * Dot(localCenter, localCenter); // parallel-axis theorem
-        body.invI = Real(1) / body.I;
-    }
-    else
-    {
-        body.I = 0;
-        body.invI = 0;
-    }
+    const BodyMass mass = ComputeBodyMass(ShapeMasses(world, body), body.fixedRotation);
+    body.mass = mass.mass;
+    body.invMass = mass.invMass;
+    body.I = mass.inertia;
+    body.invI = mass.invInertia;
     const Vec2 oldCenter = body.sweep.c;
-    body.sweep.localCenter = localCenter;
+    body.sweep.localCenter = mass.localCenter;
     body.sweep.c = Mul(body.xf, body.sweep.localCenter);
     body.sweep.c0 = body.sweep.c;
     body.linearVelocity += Cross(body.angularVelocity, body.sweep.c - oldCenter);
@@ -174,17 +178,13 @@ void UnlinkJointEdge(WorldState& world, std::int32_t jointIndex, int side, std::
     }
 }
 
-void ValidateShapeDef(const ShapeDef& def)
+/// Throws for a refusal of the engine's rules (meff/validity.h).
+void Require(const std::optional<Refusal>& refusal)
 {
-    RequireNonNegative(def.density, "ShapeDef::density");
-    RequireNonNegative(def.friction, "ShapeDef::friction");
-    Require(meff::IsValid(def.restitution) && def.restitution >= 0 && def.restitution <= 1,
-            [&]
-            {
-                return std::string("ShapeDef::restitution: must be in [0, 1], got " +
-                                   std::to_string(def.restitution));
-            });
-    RequireNonNegative(def.restitutionThreshold, "ShapeDef::restitutionThreshold");
+    if (refusal)
+    {
+        ThrowRefusal(*refusal);
+    }
 }
 
 } // namespace
@@ -629,11 +629,29 @@ std::vector<BodyId> World::GetBodies() const
 namespace
 {
 
+/// A dynamic body must be able to take the new shape's mass: the shape's own mass and
+/// inertia, and the body's with it (meff/validity.h), checked before anything changes.
+void RequireMassAccepted(const WorldState& world, const Body& body, const Shape& shape)
+{
+    if (body.type != BodyType::Dynamic || !HasMass(shape))
+    {
+        return;
+    }
+    Require(shape.type == ShapeType::Circle
+                ? CheckMass(shape.circle, shape.def.density, body.fixedRotation)
+                : CheckMass(shape.polygon, shape.def.density, body.fixedRotation));
+    std::vector<MassData> masses = ShapeMasses(world, body);
+    masses.insert(masses.begin(), ShapeMass(shape)); // the new shape will be the newest
+    Require(CheckBodyMass(masses, body.fixedRotation));
+}
+
 ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape prototype)
 {
     RequireNotStepping(world, "World::CreateShape");
     Body& body = Resolve(world.bodies, bodyId, "body");
-    ValidateShapeDef(def);
+    Require(CheckShapeDef(def));
+    prototype.def = def;
+    RequireMassAccepted(world, body, prototype);
     const std::int32_t index = AllocateSlot(world.shapes, world.freeShapes);
     Shape& shape = world.shapes[index];
     const std::uint32_t generation = shape.generation + 1;
@@ -661,83 +679,9 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
 
 } // namespace
 
-namespace
-{
-
-/// Polygon is a public struct, so one built by hand reaches CreateShape without MakePolygon's
-/// checks. Collision and mass need what MakePolygon guarantees: a strictly convex,
-/// counter-clockwise outline of positive area, each normal the unit outward normal of its edge.
-/// A zero-area or inside-out polygon would otherwise only show up as a non-finite state steps
-/// later (found by the hostile-input tests).
-void RequireValidPolygon(const Polygon& polygon)
-{
-    const int n = polygon.count;
-    Real twiceArea = 0;
-    for (int i = 0; i < n; ++i)
-    {
-        const Vec2 a = polygon.vertices[i];
-        const Vec2 b = polygon.vertices[i + 1 < n ? i + 1 : 0];
-        const Vec2 edge = b - a;
-        // Not the weld tolerance: MakeBox accepts any positive size, so only a zero edge
-        // (no direction, no normal) is refused here.
-        Require(edge.LengthSquared() > kEpsilon * kEpsilon,
-                [&]
-                {
-                    return std::string("Polygon: edge " + std::to_string(i) + " has zero length " +
-                                       "(build polygons with MakePolygon or MakeBox)");
-                });
-        const Vec2 normal = polygon.normals[i];
-        Vec2 expected = Cross(edge, Real(1));
-        expected.Normalize();
-        Require(normal.IsValid() && Dot(normal, expected) > Real(0.999) &&
-                    std::abs(normal.LengthSquared() - 1) < Real(1e-3),
-                [&]
-                {
-                    return std::string("Polygon: normals[" + std::to_string(i) +
-                                       "] is not the unit outward normal " + "of its edge, got " +
-                                       Describe(normal) +
-                                       " (build polygons with MakePolygon or MakeBox)");
-                });
-        for (int j = 0; j < n; ++j)
-        {
-            if (j != i && j != (i + 1 < n ? i + 1 : 0))
-            {
-                Require(Cross(edge, polygon.vertices[j] - a) > 0,
-                        [&]
-                        {
-                            return std::string(
-                                "Polygon: not strictly convex and counter-clockwise at vertex " +
-                                std::to_string(j) +
-                                " (build polygons with MakePolygon or MakeBox)");
-                        });
-            }
-        }
-        twiceArea += Cross(a, b);
-    }
-    Require(twiceArea > 2 * kEpsilon,
-            [&]
-            {
-                return std::string(
-                    "Polygon: area must be positive (build polygons with MakePolygon or MakeBox)");
-            });
-    Require(polygon.centroid.IsValid(),
-            [&] {
-                return std::string("Polygon::centroid: must be finite, got " +
-                                   Describe(polygon.centroid));
-            });
-}
-
-} // namespace
-
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circle)
 {
-    RequireFinite(circle.center, "Circle::center");
-    Require(meff::IsValid(circle.radius) && circle.radius > 0,
-            [&]
-            {
-                return std::string("Circle::radius: must be finite and > 0, got " +
-                                   std::to_string(circle.radius));
-            });
+    Require(CheckCircle(circle));
     Shape shape;
     shape.type = ShapeType::Circle;
     shape.circle = circle;
@@ -746,18 +690,9 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circl
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon)
 {
-    Require(polygon.count >= 3 && polygon.count <= kMaxPolygonVertices,
-            [&]
-            {
-                return std::string("Polygon::count: must be in [3, 8] (build polygons with "
-                                   "MakePolygon or MakeBox), got " +
-                                   std::to_string(polygon.count));
-            });
-    for (int i = 0; i < polygon.count; ++i)
-    {
-        RequireFinite(polygon.vertices[i], "Polygon::vertices");
-    }
-    RequireValidPolygon(polygon);
+    // Polygon is a public struct, so one built by hand reaches CreateShape without
+    // MakePolygon's checks: the same rule is applied here (found by the hostile-input tests).
+    Require(CheckPolygon(polygon));
     Shape shape;
     shape.type = ShapeType::Polygon;
     shape.polygon = polygon;
@@ -773,8 +708,7 @@ void RequireValidSegment(const Segment& segment, const Tolerances& tolerances, c
 {
     RequireFinite(segment.point1, (std::string(where) + "::point1").c_str());
     RequireFinite(segment.point2, (std::string(where) + "::point2").c_str());
-    Require(DistanceSquared(segment.point1, segment.point2) >
-                tolerances.linearSlop * tolerances.linearSlop,
+    Require(!CheckSegment(segment, tolerances.linearSlop), // the rule of meff/validity.h
             [&]
             {
                 return std::string(where) +
@@ -932,26 +866,26 @@ JointId AddJoint(WorldState& world, Joint joint)
     return id;
 }
 
-void RequireTwoBodies(WorldState& world, BodyId a, BodyId b)
+/// Both ids live, and the pair allowed for this joint type (meff/validity.h).
+void RequireTwoBodies(WorldState& world, JointType type, BodyId a, BodyId b)
 {
     RequireNotStepping(world, "World::CreateJoint");
     Resolve(world.bodies, a, "body");
-    Resolve(world.bodies, b, "body");
-    Require(!(a == b),
-            [&] { return std::string("joint: bodyA and bodyB must be different bodies"); });
+    const Body& bodyB = Resolve(world.bodies, b, "body");
+    Require(CheckJointBodies(type, a == b, bodyB.type));
 }
 
 } // namespace
 
 JointId World::CreateJoint(const RevoluteJointDef& def)
 {
-    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    RequireTwoBodies(State(), JointType::Revolute, def.bodyA, def.bodyB);
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const DistanceJointDef& def)
 {
-    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    RequireTwoBodies(State(), JointType::Distance, def.bodyA, def.bodyB);
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass,
@@ -960,7 +894,7 @@ JointId World::CreateJoint(const DistanceJointDef& def)
 
 JointId World::CreateJoint(const PrismaticJointDef& def)
 {
-    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    RequireTwoBodies(State(), JointType::Prismatic, def.bodyA, def.bodyB);
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
@@ -978,7 +912,7 @@ Real InertiaAboutOrigin(const Body& body)
 
 JointId World::CreateJoint(const WeldJointDef& def)
 {
-    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    RequireTwoBodies(State(), JointType::Weld, def.bodyA, def.bodyB);
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, InertiaAboutOrigin(a),
@@ -987,13 +921,13 @@ JointId World::CreateJoint(const WeldJointDef& def)
 
 JointId World::CreateJoint(const MotorJointDef& def)
 {
-    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    RequireTwoBodies(State(), JointType::Motor, def.bodyA, def.bodyB);
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const WheelJointDef& def)
 {
-    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    RequireTwoBodies(State(), JointType::Wheel, def.bodyA, def.bodyB);
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass));
@@ -1001,7 +935,7 @@ JointId World::CreateJoint(const WheelJointDef& def)
 
 JointId World::CreateJoint(const MouseJointDef& def)
 {
-    RequireTwoBodies(State(), def.bodyA, def.bodyB);
+    RequireTwoBodies(State(), JointType::Mouse, def.bodyA, def.bodyB);
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass, b.xf,

@@ -230,6 +230,9 @@ struct Scene
     SceneValidation validation;
     std::optional<SceneCamera> camera;     ///< absent: the renderer chooses
     std::optional<SceneAnalytic> analytic; ///< absent: no exact answer is known
+    /// What was accepted but does nothing, as Box2D accepts it (a joint between two bodies
+    /// that cannot move): "FILE: FIELD.PATH: warning: MESSAGE", for the user to see.
+    std::vector<std::string> warnings;
 
     /// Index into bodies of the body with this name, or nullopt.
     std::optional<std::size_t> FindBody(std::string_view bodyName) const;

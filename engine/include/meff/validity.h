@@ -1,0 +1,107 @@
+// What the engine accepts: the rules World's Create calls (and MakeBox, MakePolygon) apply,
+// as functions that say why without throwing, so that a loader can check a whole level before
+// creating anything and report each problem at its own field. The scene loader does, so that a
+// scene file is refused exactly when, and for the reason, the library would refuse it.
+//
+// The rules are Box2D 2.4.1's, plus what keeps the step finite: nothing that passes them trips
+// an assertion of libbox2d built from the same numbers (its validation mirror), and no mass,
+// inertia or area is non-finite, zero or denormal where the solver divides by it.
+#pragma once
+
+#include "meff/body.h"
+#include "meff/collision.h"
+#include "meff/error.h"
+#include "meff/joint.h"
+#include "meff/shape.h"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+
+namespace meff
+{
+
+/// Why something would be refused.
+struct Refusal
+{
+    /// What is at fault, as the API names it: "Circle::radius", "Polygon::vertices",
+    /// "Segment::point2", "ShapeDef::density", "body" (the body's shapes together),
+    /// "JointDef::bodyB".
+    std::string field;
+    std::string reason; ///< why, with the value: "must be finite and > 0, got -1"
+};
+
+/// What World, MakeBox, MakeOffsetBox and MakePolygon throw when one of these rules refuses
+/// an argument: an InvalidArgument that also carries the refusal.
+class RefusedArgument : public InvalidArgument
+{
+  public:
+    RefusedArgument(const std::string& what, Refusal refusal)
+        : InvalidArgument(what), m_refusal(std::move(refusal))
+    {
+    }
+    const Refusal& refusal() const { return m_refusal; }
+
+  private:
+    Refusal m_refusal;
+};
+
+/// The refusal as World throws it: RefusedArgument("FIELD: REASON").
+[[noreturn]] void ThrowRefusal(const Refusal& refusal);
+
+// Shapes, on their own (any body). Circles: a finite centre, a finite radius > 0, and an area
+// πr² that is a normal float (neither overflowing nor rounding to zero or a denormal).
+std::optional<Refusal> CheckCircle(const Circle& circle);
+/// 3 to 8 finite vertices, counter-clockwise and strictly convex, every edge longer than
+/// kEpsilon (m) and not so long that its squared length overflows, each normal the unit
+/// outward normal of its edge, a finite centroid, and a normal, finite area. What MakePolygon
+/// and MakeBox return always passes.
+std::optional<Refusal> CheckPolygon(const Polygon& polygon);
+/// Finite points further apart than `linearSlop` (Tolerances::linearSlop).
+std::optional<Refusal> CheckSegment(const Segment& segment, Real linearSlop);
+/// Density and friction finite and >= 0, restitution in [0, 1], restitution threshold finite
+/// and >= 0.
+std::optional<Refusal> CheckShapeDef(const ShapeDef& def);
+
+// Mass. Only a dynamic body's shapes with density > 0 have mass (segments never do), as in
+// Box2D 2.4.1's b2Body::ResetMassData.
+
+/// One shape's mass at `density` (> 0), on a dynamic body: a normal, finite mass, and unless
+/// the body has fixed rotation a normal, finite rotational inertia. A polygon's area must also
+/// exceed kEpsilon, as Box2D's b2PolygonShape::ComputeMass asserts.
+std::optional<Refusal> CheckMass(const Circle& circle, Real density, bool fixedRotation);
+std::optional<Refusal> CheckMass(const Polygon& polygon, Real density, bool fixedRotation);
+
+/// A dynamic body's mass properties, from its shapes' MassData (ComputeMass) in the order
+/// World keeps its shapes, newest first, as b2Body::ResetMassData sums its fixture list: the
+/// mass, the centre of mass in body coordinates and, unless the rotation is fixed, the inertia
+/// about the centre of mass (parallel-axis theorem), with their inverses (0 for no mass).
+struct BodyMass
+{
+    Real mass = 0;       ///< kg
+    Real invMass = 0;    ///< 1/kg
+    Real inertia = 0;    ///< about the centre of mass (kg·m²)
+    Real invInertia = 0; ///< 1/(kg·m²)
+    Vec2 localCenter{};  ///< centre of mass in body coordinates (m)
+};
+BodyMass ComputeBodyMass(std::span<const MassData> shapesNewestFirst, bool fixedRotation);
+/// Whether a body with these shapes (each already passing CheckMass) can be simulated: a
+/// finite total mass and centre of mass, and unless the rotation is fixed a normal, finite
+/// inertia about the centre of mass that is more than one rounding unit (kEpsilon) of the
+/// inertia about the body origin. (A small shape far from the body origin has a huge inertia
+/// about the origin, and moving it to the centre of mass subtracts two huge numbers: what is
+/// left is rounding noise, or 0 or below, which Box2D asserts against.)
+std::optional<Refusal> CheckBodyMass(std::span<const MassData> shapesNewestFirst,
+                                     bool fixedRotation);
+
+// Joints.
+
+/// Which bodies a joint of `type` may connect: two different bodies, and for a mouse joint a
+/// dynamic body B. A joint whose bodies are both static or kinematic is accepted, as Box2D
+/// accepts it, though it does nothing (JointMovesAnything).
+std::optional<Refusal> CheckJointBodies(JointType type, bool sameBody, BodyType typeB);
+/// Whether a joint between bodies of these types can move anything: one of them is dynamic.
+bool JointMovesAnything(BodyType typeA, BodyType typeB);
+
+} // namespace meff
