@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 using meff::validation::BodySample;
 using meff::validation::CompareFrames;
@@ -334,4 +335,46 @@ TEST_CASE("Validation: the scene's validate section is checked", "[validation][s
     REQUIRE(scene.validation.settle);
     CHECK(scene.validation.settle->position == 0.05);
     CHECK_FALSE(scene.validation.settle->angle);
+}
+
+TEST_CASE("Validation: a setting Box2D cannot mirror is said, and what can be compared is judged",
+          "[validation]")
+{
+    // The boxes by colour: the same rows in another order. Before, the run simply FAILed at the
+    // first round-off difference with no note; now the setting is named, frame 0 must agree,
+    // and the settled state is judged (every body within 0.05 m of Box2D's final position).
+    meff::Scene colour = meff::ParseScene(kBoxesScene, "boxes.json");
+    colour.world.solver.kind = meff::SolverKind::Colour;
+    const auto result = meff::validation::Validate(colour);
+    CHECK(result.unmirrored == std::vector<std::string>{"world.solver \"colour\""});
+    REQUIRE(result.notes.size() == 2);
+    CHECK_THAT(result.notes[0], Catch::Contains("world.solver is \"colour\", which Box2D 2.4.1 "
+                                                "does not have"));
+    CHECK_THAT(result.notes[1], Catch::Contains("judged by what can be compared"));
+    REQUIRE_FALSE(result.perFrame.empty());
+    CHECK(result.perFrame[0].position == 0); // the worlds as built are the same
+    REQUIRE(result.settle);
+    CHECK(result.passed == result.settle->passed);
+    CHECK(result.passed);
+
+    // A setting that changes nothing in this scene is not reported: without restitution,
+    // restitution_from_step_start is Box2D's rule, and the run agrees exactly.
+    meff::Scene pendulum = meff::ParseScene(kPendulumScene, "pendulum.json");
+    pendulum.world.solver.restitutionFromStepStart = true;
+    const auto exact = meff::validation::Validate(pendulum);
+    CHECK(exact.unmirrored.empty());
+    CHECK(exact.notes.empty());
+    CHECK(exact.passed);
+    CHECK(exact.position.value == 0);
+
+    // With restitution it is reported, and judged by the settled state: a ball with e = 0.5
+    // bouncing on the ground comes to rest on it in both engines.
+    meff::Scene bounce = meff::ParseScene(kBoxesScene, "boxes.json");
+    bounce.world.solver.restitutionFromStepStart = true;
+    bounce.world.frames = 300;
+    const auto bounced = meff::validation::Validate(bounce);
+    CHECK(bounced.unmirrored == std::vector<std::string>{"world.restitution_from_step_start"});
+    CHECK_THAT(bounced.notes[0], Catch::Contains("every bounce differs by about g·dt"));
+    REQUIRE(bounced.settle);
+    CHECK(bounced.passed == bounced.settle->passed);
 }

@@ -294,6 +294,35 @@ def case_box2d_assertions():
             fail("%s: the radius is not named: %r" % (args[0], stderr))
 
 
+def case_validate_unmirrored():
+    """A scene using a setting Box2D cannot mirror (the colour solver) says so on its line and
+    in summary.json's notes, instead of a bare FAIL with "notes": []."""
+    import json
+    with open(STACK) as stream:
+        scene = json.load(stream)
+    scene["name"] = "stack10_colour"
+    scene.setdefault("world", {})["solver"] = "colour"
+    path = os.path.join(WORK, "stack10_colour.json")
+    with open(path, "w") as stream:
+        json.dump(scene, stream)
+    report = os.path.join(WORK, "report")
+    status, stdout, _ = run(["validate", path, "--report", report, "--no-plot"])
+    line = stdout.splitlines()[0] if stdout else ""
+    if 'not mirrored by Box2D: world.solver "colour" (see the notes)' not in line:
+        fail("the line does not say what Box2D cannot mirror: %r" % line)
+    if "note: world.solver is \"colour\"" not in stdout:
+        fail("no note under the line")
+    with open(os.path.join(report, "stack10_colour", "summary.json")) as stream:
+        summary = json.load(stream)
+    if summary["unmirrored"] != ['world.solver "colour"'] or len(summary["notes"]) != 2:
+        fail("summary.json: unmirrored %r, notes %r" % (summary.get("unmirrored"),
+                                                        summary["notes"]))
+    if summary["settle"] is None or summary["passed"] != summary["settle"]["passed"]:
+        fail("the settled state is not what was judged")
+    if status != (0 if summary["passed"] else 1):
+        fail("exit status %d for passed = %s" % (status, summary["passed"]))
+
+
 def case_bench_threads():
     """--threads is checked up front: exit status 2, one line naming the option."""
     for threads in ("0", "1.5"):

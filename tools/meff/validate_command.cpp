@@ -92,6 +92,15 @@ void PrintLine(const ValidationResult& result)
     {
         line += "; no divergence";
     }
+    if (!result.unmirrored.empty())
+    {
+        std::string settings;
+        for (const std::string& setting : result.unmirrored)
+        {
+            settings += (settings.empty() ? "" : ", ") + setting;
+        }
+        line += "; not mirrored by Box2D: " + settings + " (see the notes)";
+    }
     if (result.chaotic)
     {
         line += "; chaotic, horizon " + std::to_string(result.horizonFrames) + " frames";
@@ -177,6 +186,7 @@ nlohmann::json SummaryJson(const ValidationResult& result)
                              {"lowest_body", settle.lowestBody},
                              {"failures", settle.failures}};
     }
+    summary["unmirrored"] = result.unmirrored;
     summary["notes"] = result.notes;
     summary["failure"] = result.failure.empty() ? nlohmann::json() : nlohmann::json(result.failure);
     return summary;

@@ -187,6 +187,12 @@ struct ValidationResult
     long long awakeMismatches = 0; ///< body-frames whose awake flags differ
 
     std::optional<SettleResult> settle;
+    /// The scene's settings Box2D 2.4.1 cannot mirror ("world.solver \"colour\"",
+    /// "world.restitution_from_step_start", "world.block_joints false"), when they change this
+    /// scene's results. Then the run is judged by what can be compared: frame 0 must agree,
+    /// and the settled state (the scene's validate.settle, or its defaults); unless the scene
+    /// is declared chaotic, which is judged as it says.
+    std::vector<std::string> unmirrored;
     std::vector<std::string> notes; ///< what the mirror cannot reproduce, and other warnings
     std::string failure;            ///< a simulation that stopped (non-finite state), or empty
     bool passed = false;
