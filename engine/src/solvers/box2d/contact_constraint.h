@@ -94,6 +94,40 @@ void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velociti
 /// What the rest of the step reads of one solved contact.
 void CollectContactResult(const ContactVelocityConstraint& vc, SolvedContact& solved);
 
+/// Box2D's block solver for a two-point manifold's normal rows: the linear complementarity
+/// problem vn = K·x + b, x ≥ 0, vn ≥ 0, x·vn = 0, solved by trying its four cases in turn (both
+/// points pushing, only the first, only the second, neither). `a` holds the impulses already
+/// accumulated and `b` = (vn − target) − K·a, so x is the new accumulated impulse; `mass1`,
+/// `mass2` are each row's 1/k alone. Returns false when no case holds (rare, from round-off):
+/// the impulses then stay as they are.
+inline bool SolveTwoPointBlock(const Mat22& K, const Mat22& invK, Real mass1, Real mass2, Vec2 b,
+                               Vec2& x)
+{
+    // Case 1: both points stay in contact (vn = 0): x = −K⁻¹·b.
+    x = -Mul(invK, b);
+    if (x.x >= 0 && x.y >= 0)
+    {
+        return true;
+    }
+    // Case 2: point 1 in contact, point 2 separating (x2 = 0).
+    x = {-mass1 * b.x, 0};
+    const Real v2 = K.ex.y * x.x + b.y;
+    if (x.x >= 0 && v2 >= 0)
+    {
+        return true;
+    }
+    // Case 3: point 2 in contact, point 1 separating (x1 = 0).
+    x = {0, -mass2 * b.y};
+    const Real v1 = K.ey.x * x.y + b.x;
+    if (x.y >= 0 && v1 >= 0)
+    {
+        return true;
+    }
+    // Case 4: both separating.
+    x = {0, 0};
+    return b.x >= 0 && b.y >= 0;
+}
+
 /// One contact's sequential-impulse update: friction rows, then the normal rows one by one or,
 /// for a two-point manifold with `blockSolver`, as Box2D's 2×2 block.
 void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities, bool blockSolver);

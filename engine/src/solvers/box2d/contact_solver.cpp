@@ -205,9 +205,8 @@ void ContactSolver::WarmStart(SolverData& data)
 namespace
 {
 
-// The two normal rows as one linear complementarity problem vn = K·x + b, x ≥ 0, vn ≥ 0,
-// x·vn = 0, solved by trying its four cases in turn (total enumeration); x is the total
-// accumulated impulse, so b is corrected by K·a for the impulse a already applied.
+// The two normal rows as one linear complementarity problem (SolveTwoPointBlock); x is the
+// total accumulated impulse, so b is corrected by K·a for the impulse a already applied.
 void SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Real& wA, Vec2& vB, Real& wB)
 {
     ContactVelocityPoint& p1 = vc.points[0];
@@ -233,38 +232,12 @@ void SolveNormalBlock(ContactVelocityConstraint& vc, Vec2& vA, Real& wA, Vec2& v
         p2.normalImpulse = x.y;
     };
 
-    // Case 1: both points stay in contact (vn = 0): x = −K⁻¹·b.
-    Vec2 x = -Mul(vc.normalMass, b);
-    if (x.x >= 0 && x.y >= 0)
-    {
-        apply(x);
-        return;
-    }
-    // Case 2: point 1 in contact, point 2 separating (x2 = 0).
-    x = {-p1.normalMass * b.x, 0};
-    Real v2 = vc.K.ex.y * x.x + b.y;
-    if (x.x >= 0 && v2 >= 0)
-    {
-        apply(x);
-        return;
-    }
-    // Case 3: point 2 in contact, point 1 separating (x1 = 0).
-    x = {0, -p2.normalMass * b.y};
-    Real v1 = vc.K.ey.x * x.y + b.x;
-    if (x.y >= 0 && v1 >= 0)
-    {
-        apply(x);
-        return;
-    }
-    // Case 4: both separating.
-    x = {0, 0};
-    v1 = b.x;
-    v2 = b.y;
-    if (v1 >= 0 && v2 >= 0)
+    Vec2 x;
+    if (SolveTwoPointBlock(vc.K, vc.normalMass, p1.normalMass, p2.normalMass, b, x))
     {
         apply(x);
     }
-    // Otherwise no case holds (rare, from round-off); leave the impulses as they are.
+    // Otherwise no case holds (rare, from round-off): the impulses stay as they are.
 }
 
 } // namespace
