@@ -576,10 +576,53 @@ TEST_CASE("Scene: world.solver chooses the back end; graph_coloring is the older
     const auto errorsOf = [](const std::string& world)
     { return ErrorsOf(R"({ "meff_scene": 1, "world": )" + world + R"(, "bodies": [] })"); };
     CHECK(errorsOf(R"({"solver": "colour"})").empty());
-    CHECK(errorsOf(R"({"solver": "fast"})") ==
-          Messages{R"(x.json: world.solver: must be one of "box2d", "colour", got "fast")"});
+    CHECK(
+        errorsOf(R"({"solver": "fast"})") ==
+        Messages{
+            R"(x.json: world.solver: must be one of "box2d", "colour", "soft_step", got "fast")"});
     CHECK(
         errorsOf(R"({"solver": "box2d", "graph_coloring": true})") ==
         Messages{
             R"(x.json: world.graph_coloring: true means "solver": "colour", but "solver" is "box2d", got true)"});
+}
+
+TEST_CASE("Scene: world.soft_step sets the sub-stepped solver's settings, each checked",
+          "[scene][solver]")
+{
+    const Scene scene = ParseScene(R"({ "meff_scene": 1, "world": { "solver": "soft_step",
+        "soft_step": { "substeps": 8, "relax_iterations": 2, "contacts": "soft",
+                       "contact_correction": 0.2, "contact_hertz": 40,
+                       "contact_damping_ratio": 5, "joint_hertz": 50, "joint_damping_ratio": 1,
+                       "max_push_out_speed": 2 } }, "bodies": [] })",
+                                   "x.json");
+    const SoftStepSettings& soft = scene.world.solver.softStep;
+    CHECK(scene.world.solver.kind == SolverKind::SoftStep);
+    CHECK(soft.substeps == 8);
+    CHECK(soft.relaxIterations == 2);
+    CHECK(soft.contacts == SoftContactModel::Soft);
+    CHECK(soft.contactCorrection == Approx(0.2));
+    CHECK(soft.contactHertz == Approx(40));
+    CHECK(soft.contactDampingRatio == Approx(5));
+    CHECK(soft.jointHertz == Approx(50));
+    CHECK(soft.jointDampingRatio == Approx(1));
+    CHECK(soft.maxPushOutSpeed == Approx(2));
+
+    const auto errorsOf = [](const std::string& soft)
+    {
+        return ErrorsOf(R"({ "meff_scene": 1, "world": { "soft_step": )" + soft +
+                        R"( }, "bodies": [] })");
+    };
+    CHECK(errorsOf(R"({"substeps": 0})") ==
+          Messages{"x.json: world.soft_step.substeps: must be an integer in [1, 1000], got 0"});
+    CHECK(errorsOf(R"({"contact_correction": 1.5})") ==
+          Messages{"x.json: world.soft_step.contact_correction: must be in (0, 1], got 1.5"});
+    CHECK(errorsOf(R"({"contacts": "sticky"})") ==
+          Messages{
+              R"(x.json: world.soft_step.contacts: must be one of "rigid", "soft", got "sticky")"});
+    CHECK(errorsOf(R"({"joint_hertz": -1})").size() == 1);
+    CHECK(errorsOf(R"({"substep": 4})") ==
+          Messages{"x.json: world.soft_step.substep: unknown field (known fields here: substeps, "
+                   "relax_iterations, contacts, contact_correction, contact_hertz, "
+                   "contact_damping_ratio, joint_hertz, joint_damping_ratio, "
+                   "max_push_out_speed)"});
 }

@@ -119,15 +119,55 @@ std::optional<std::size_t> ReadChoice(ObjectReader& reader, std::string_view key
     return std::nullopt;
 }
 
+/// "soft_step": the sub-stepped solver's settings (SoftStepSettings), each optional.
+void ReadSoftStep(ObjectReader& reader, SoftStepSettings& soft)
+{
+    const SoftStepSettings defaults;
+    Assign(soft.substeps, reader.Integer("substeps", defaults.substeps, 1, 1000));
+    Assign(soft.relaxIterations,
+           reader.Integer("relax_iterations", defaults.relaxIterations, 0, 1000));
+    if (reader.Find("contacts") != nullptr)
+    {
+        const std::optional<std::size_t> model = ReadChoice(reader, "contacts", {"rigid", "soft"});
+        if (model)
+        {
+            soft.contacts = *model == 0 ? SoftContactModel::Rigid : SoftContactModel::Soft;
+        }
+    }
+    if (const std::optional<double> correction =
+            ReadPositive(reader, "contact_correction", defaults.contactCorrection))
+    {
+        if (*correction > 1)
+        {
+            reader.Fail("contact_correction", "must be in (0, 1]");
+        }
+        else
+        {
+            soft.contactCorrection = Real(*correction);
+        }
+    }
+    Assign(soft.contactHertz, ReadPositive(reader, "contact_hertz", defaults.contactHertz));
+    Assign(soft.contactDampingRatio,
+           ReadNonNegative(reader, "contact_damping_ratio", defaults.contactDampingRatio));
+    Assign(soft.jointHertz, ReadPositive(reader, "joint_hertz", defaults.jointHertz));
+    Assign(soft.jointDampingRatio,
+           ReadNonNegative(reader, "joint_damping_ratio", defaults.jointDampingRatio));
+    Assign(soft.maxPushOutSpeed,
+           ReadPositive(reader, "max_push_out_speed", defaults.maxPushOutSpeed));
+    reader.Finish();
+}
+
 /// "solver": "box2d" (default), "colour" or "soft_step"; "graph_coloring": true is the older
 /// spelling of "colour" and may stand alone or beside "solver": "colour".
 void ReadSolverKind(ObjectReader& reader, SolverSettings& solver)
 {
-    constexpr SolverKind kinds[] = {SolverKind::Box2D, SolverKind::Colour};
+    constexpr SolverKind kinds[] = {SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep};
     std::optional<std::size_t> chosen;
     if (reader.Find("solver") != nullptr)
     {
-        chosen = ReadChoice(reader, "solver", {SolverKindName(kinds[0]), SolverKindName(kinds[1])});
+        chosen = ReadChoice(
+            reader, "solver",
+            {SolverKindName(kinds[0]), SolverKindName(kinds[1]), SolverKindName(kinds[2])});
     }
     if (chosen)
     {
@@ -165,6 +205,11 @@ void ReadWorld(ObjectReader& reader, SceneWorldSettings& world)
     Assign(solver.blockJoints, reader.Boolean("block_joints", defaults.solver.blockJoints));
     Assign(solver.restitutionFromStepStart,
            reader.Boolean("restitution_from_step_start", defaults.solver.restitutionFromStepStart));
+    if (const Json* soft = reader.Object("soft_step", false))
+    {
+        ObjectReader softReader(reader.Diag(), *soft, reader.PathOf("soft_step"));
+        ReadSoftStep(softReader, solver.softStep);
+    }
     Assign(world.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
     Assign(world.continuous, reader.Boolean("continuous", defaults.continuous));
     reader.Finish();

@@ -47,7 +47,7 @@ Command AddBenchCommand(CLI::App& parent);
 /// `meff sweep SCENE.json [--out DIR] [--quick] [--seconds S] [--runs R] [--no-plot]`
 Command AddSweepCommand(CLI::App& parent);
 
-/// Adds `--solver box2d|colour`: the solver back end to run instead of the scene's
+/// Adds `--solver box2d|colour|soft_step`: the solver back end to run instead of the scene's
 /// (world.solver); `kind` stays empty when the option is not given.
 CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind);
 

@@ -291,7 +291,7 @@ int Run(const RunOptions& options)
 CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind)
 {
     std::map<std::string, SolverKind> names;
-    for (const SolverKind k : {SolverKind::Box2D, SolverKind::Colour})
+    for (const SolverKind k : {SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep})
     {
         names.emplace(SolverKindName(k), k);
     }

@@ -74,6 +74,55 @@ enum class SolverKind
     /// whole world is within tolerance, not island by island. A moving body kept asleep
     /// (BodyDef::awake false, SetAwake(false)) brings back the island search.
     Colour,
+    /// Sub-stepped soft constraints (SoftStepSettings): each step is cut into `substeps`
+    /// sub-steps integrated as velocity Verlet; in each, velocities are integrated, last
+    /// impulses applied, every row solved once with a soft position bias, positions integrated,
+    /// contacts corrected and the rows relaxed without bias. Far more accurate for joints
+    /// (pendulums, chains, ragdolls) than Box2D's step at about its cost, as stiff for stacks;
+    /// see the README for the measured trade.
+    SoftStep,
+};
+
+/// How the soft step holds contacts (SoftStepSettings::contacts).
+enum class SoftContactModel
+{
+    /// Rigid velocity rows (two-point manifolds as a 2×2 block with SolverSettings::blockSolver)
+    /// and, after each sub-step's move, a position correction that removes contactCorrection of
+    /// the overlap beyond linearSlop without giving the bodies velocity: stacks do not sag
+    /// under their load and overlapping bodies separate gently.
+    Rigid,
+    /// Box2D v3's soft rows: the overlap is pushed out by a spring of contactHertz and
+    /// contactDampingRatio. Each point sinks in proportion to the load it carries, so stacks
+    /// sag (docs/soft-step.md).
+    Soft,
+};
+
+/// The sub-stepped soft solver (SolverKind::SoftStep). Each step is cut into `substeps`
+/// sub-steps of h = dt/substeps, integrated as velocity Verlet. A soft row drives its position
+/// error C to zero as a damped spring of natural frequency `hertz` and damping ratio ζ would,
+/// solved implicitly over h (docs/soft-step.md derives the coefficients from the effective
+/// mass). Every member may be changed between steps.
+struct SoftStepSettings
+{
+    int substeps = 4; ///< sub-steps per step, ≥ 1
+    /// Relax sweeps per sub-step (≥ 0): every row solved again rigidly, without position bias,
+    /// which takes back the velocity the bias added. Friction is solved in these sweeps (in the
+    /// biased sweep when there are none).
+    int relaxIterations = 1;
+    SoftContactModel contacts = SoftContactModel::Rigid;
+    /// Rigid contacts: fraction of the overlap beyond linearSlop removed per sub-step, in (0, 1].
+    Real contactCorrection = Real(0.1);
+    /// Soft contacts: stiffness (Hz, > 0) and damping ratio (≥ 0). The stiffness is capped at a
+    /// quarter of the sub-step rate, and doubled against a body that cannot move.
+    Real contactHertz = 30;
+    Real contactDampingRatio = 10;
+    /// Largest speed at which overlapping shapes are pushed apart (m/s, > 0): the soft contacts'
+    /// bias, and the rigid contacts' correction per sub-step (at most this × h).
+    Real maxPushOutSpeed = 3;
+    /// Stiffness (Hz, > 0) and damping ratio (≥ 0) of the joints' rigid rows (points, angles,
+    /// limits) while solving, capped at 0.3 of the sub-step rate (72 Hz at 60 Hz × 4).
+    Real jointHertz = 72;
+    Real jointDampingRatio = 0;
 };
 
 /// How the solver works. Every member may be changed between steps.
@@ -82,7 +131,7 @@ struct SolverSettings
     SolverKind kind = SolverKind::Box2D; ///< the back end (see SolverKind)
     int velocityIterations = 8; ///< Box2D, Colour: sequential-impulse sweeps per step, ≥ 1
     int positionIterations = 3; ///< Box2D, Colour: non-linear Gauss-Seidel sweeps per step, ≥ 0
-    bool warmStarting = true;   ///< start each step from last step's impulses
+    bool warmStarting = true;   ///< start each step (sub-step) from last step's impulses
     /// Box2D, Colour: solve a two-point manifold's normal rows together as a 2×2 block
     /// (Box2D's block solver). Off: every row alone with its scalar effective mass.
     bool blockSolver = true;
@@ -95,10 +144,13 @@ struct SolverSettings
     /// Off (Box2D 2.4.1): after this step's gravity was added, so every bounce returns g·dt
     /// more speed than arrived and e = 1 gains energy bounce after bounce. On: at the start of
     /// the step, so restitution never adds energy (results then differ from Box2D's).
+    /// SoftStep always measures it before the first sub-step.
     bool restitutionFromStepStart = false;
+    SoftStepSettings softStep{}; ///< SoftStep only
 };
 
-/// The name of a solver back end as scene files and the tools write it: "box2d", "colour".
+/// The name of a solver back end as scene files and the tools write it: "box2d", "colour",
+/// "soft_step".
 const char* SolverKindName(SolverKind kind);
 
 /// Everything needed to create a world.

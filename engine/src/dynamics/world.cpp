@@ -57,6 +57,47 @@ void RequireNonNegative(Real value, const char* where)
         { return std::string(where) + ": must be finite and >= 0, got " + std::to_string(value); });
 }
 
+void RequirePositive(Real value, const char* where)
+{
+    Require(
+        meff::IsValid(value) && value > 0, [&]
+        { return std::string(where) + ": must be finite and > 0, got " + std::to_string(value); });
+}
+
+void RequireSoftStepSettings(const SoftStepSettings& soft)
+{
+    Require(soft.substeps >= 1,
+            [&]
+            {
+                return "SolverSettings::softStep.substeps: must be >= 1, got " +
+                       std::to_string(soft.substeps);
+            });
+    Require(soft.relaxIterations >= 0,
+            [&]
+            {
+                return "SolverSettings::softStep.relaxIterations: must be >= 0, got " +
+                       std::to_string(soft.relaxIterations);
+            });
+    Require(soft.contacts == SoftContactModel::Rigid || soft.contacts == SoftContactModel::Soft,
+            [&]
+            {
+                return "SolverSettings::softStep.contacts: not a SoftContactModel (" +
+                       std::to_string(static_cast<int>(soft.contacts)) + ")";
+            });
+    Require(meff::IsValid(soft.contactCorrection) && soft.contactCorrection > 0 &&
+                soft.contactCorrection <= 1,
+            [&]
+            {
+                return "SolverSettings::softStep.contactCorrection: must be in (0, 1], got " +
+                       std::to_string(soft.contactCorrection);
+            });
+    RequirePositive(soft.contactHertz, "SolverSettings::softStep.contactHertz");
+    RequireNonNegative(soft.contactDampingRatio, "SolverSettings::softStep.contactDampingRatio");
+    RequirePositive(soft.jointHertz, "SolverSettings::softStep.jointHertz");
+    RequireNonNegative(soft.jointDampingRatio, "SolverSettings::softStep.jointDampingRatio");
+    RequirePositive(soft.maxPushOutSpeed, "SolverSettings::softStep.maxPushOutSpeed");
+}
+
 /// Takes a slot from the free list or grows the pool; returns its index.
 template <typename T>
 std::int32_t AllocateSlot(std::vector<T>& pool, std::vector<std::int32_t>& freeList)
@@ -197,6 +238,8 @@ const char* SolverKindName(SolverKind kind)
         return "box2d";
     case SolverKind::Colour:
         return "colour";
+    case SolverKind::SoftStep:
+        return "soft_step";
     }
     return "unknown";
 }
@@ -1254,12 +1297,14 @@ void World::SetSolverSettings(const SolverSettings& settings)
                 return std::string("SolverSettings::positionIterations: must be >= 0, got " +
                                    std::to_string(settings.positionIterations));
             });
-    Require(settings.kind == SolverKind::Box2D || settings.kind == SolverKind::Colour,
+    Require(settings.kind == SolverKind::Box2D || settings.kind == SolverKind::Colour ||
+                settings.kind == SolverKind::SoftStep,
             [&]
             {
                 return "SolverSettings::kind: not a SolverKind (" +
                        std::to_string(static_cast<int>(settings.kind)) + ")";
             });
+    RequireSoftStepSettings(settings.softStep);
     State().solver = settings;
 }
 Vec2 World::GetGravity() const

@@ -2,6 +2,7 @@
 
 #include "solvers/box2d/box2d_solver.h"
 #include "solvers/colour/colour_solver.h"
+#include "solvers/soft_step/soft_step_solver.h"
 
 namespace meff::detail
 {
@@ -17,6 +18,8 @@ std::unique_ptr<Solver> MakeSolver(SolverKind kind)
         return std::make_unique<Box2DSolver>();
     case SolverKind::Colour:
         return std::make_unique<ColourSolver>();
+    case SolverKind::SoftStep:
+        return std::make_unique<SoftStepSolver>();
     }
     return nullptr;
 }

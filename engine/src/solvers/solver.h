@@ -1,7 +1,7 @@
 // The seam between the world's step and its solver back ends (SolverKind). World::Step runs
 // the stages every back end shares — find new contacts, the narrow phase, synchronize the broad
 // phase, continuous collision — and hands the solving of the awake bodies to the back end the
-// settings choose. A back end lives in its own folder (box2d/, colour/) and owns its
+// settings choose. A back end lives in its own folder (box2d/, colour/, soft_step/) and owns its
 // integration, its rows and its scratch memory; what it may read and write of the world is
 // SolverWorld, and the contacts it solved it hands back through SolvedContactSink.
 #pragma once
@@ -82,7 +82,7 @@ class SolverSet
     Solver& For(SolverKind kind);
 
   private:
-    std::unique_ptr<Solver> m_solvers[2]; ///< by SolverKind
+    std::unique_ptr<Solver> m_solvers[3]; ///< by SolverKind
 };
 
 } // namespace meff::detail

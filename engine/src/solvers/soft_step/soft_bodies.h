@@ -1,0 +1,60 @@
+// The bodies of one island as the soft step moves them: velocities, and each body's motion
+// since the step began — the translation dp of its centre of mass and the rotation dq — so
+// that every sub-step's rows measure their position error from the step's start without
+// recomputing transforms (Box2D v3's body state).
+#pragma once
+
+#include "dynamics/solver_types.h"
+#include "solvers/island.h"
+#include "solvers/solver.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meff::detail
+{
+
+/// A body's motion since the step began: translation of the centre of mass (m) and rotation.
+/// Four Reals, aligned to one SIMD vector like Velocity.
+struct alignas(4 * sizeof(Real)) SoftDelta
+{
+    Vec2 dp;
+    Rot dq;
+};
+
+struct SoftBodies
+{
+    /// By solver index (the island's order), with one slot more: SolverData::discardIndex.
+    std::vector<Velocity> velocities;
+    std::vector<SoftDelta> deltas;
+    std::vector<Position> start;     ///< centre of mass and angle when the step began
+    std::vector<Vec2> linearDelta;   ///< per sub-step: h·(F/m + gravityScale·g) (m/s)
+    std::vector<Real> angularDelta;  ///< per sub-step: h·T/I (rad/s)
+    std::vector<Real> linearDamping; ///< c (1/s)
+    std::vector<Real> angularDamping;
+    Real h = 0; ///< the sub-step (s)
+};
+
+/// Copies the island's bodies in (their sweeps' start c0, a0 set to now) for sub-steps of h.
+void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodies& bodies);
+/// v ← damping·(v + fraction·Δv) for every dynamic body (static and kinematic bodies keep
+/// theirs): `fraction` 1 for a whole sub-step, ½ for velocity Verlet's half kicks.
+void IntegrateSoftVelocities(SoftBodies& bodies, Real fraction);
+/// dp ← dp + h·v, dq ← the rotation by h·w after dq, with the speeds clamped so a body moves at
+/// most maxTranslation and maxRotation per step, as the Box2D back end clamps them.
+void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step);
+/// The island's state at the step's end, into island.positions and island.velocities.
+void ScatterSoftBodies(const SoftBodies& bodies, Island& island);
+
+/// The rotation by `angle` (rad), by its Taylor series where that is exact to float precision
+/// (|angle| ≤ 0.5) and std::sin/std::cos beyond.
+Rot SmallRotation(Real angle);
+
+/// The relative rotation of B with respect to A since the step began (rad), from their
+/// rotations dqA and dqB.
+inline Real RelativeRotation(Rot dqA, Rot dqB)
+{
+    return MulT(dqA, dqB).GetAngle();
+}
+
+} // namespace meff::detail

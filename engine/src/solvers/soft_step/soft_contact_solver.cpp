@@ -1,0 +1,327 @@
+#include "solvers/soft_step/soft_contact_solver.h"
+
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+RowBodies LoadBodies(const SoftContact& c, const SoftStepContext& context)
+{
+    return LoadRowBodies(context.bodies->velocities.data(), c.indexA, c.indexB, c.mA, c.iA, c.mB,
+                         c.iB);
+}
+
+void StoreBodies(const SoftContact& c, const RowBodies& b, const SoftStepContext& context)
+{
+    StoreRowBodies(context.bodies->velocities.data(), c.indexA, c.indexB, b);
+}
+
+Vec2 Tangent(Vec2 normal)
+{
+    return Cross(normal, Real(1));
+}
+
+/// A point's separation + linearSlop now (m): the normal row's C.
+Real NormalError(const SoftContact& c, const SoftContactPoint& p, const SoftDelta& dA,
+                 const SoftDelta& dB, Real slop)
+{
+    const Vec2 d = (dB.dp - dA.dp) + (Mul(dB.dq, p.rB) - Mul(dA.dq, p.rA));
+    return p.baseSeparation + Dot(d, c.normal) + slop;
+}
+
+/// Turns a body's rotation dq further by `angle` (rad).
+void Turn(SoftDelta& d, Real angle)
+{
+    d.dq = Mul(SmallRotation(angle), d.dq);
+}
+
+} // namespace
+
+void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepContext& context)
+{
+    const StepContext& step = *context.step;
+    const std::size_t count = island.contactIndices.size();
+    m_contacts.resize(count);
+    m_anyHitEvents = false;
+    // Stored impulses are per step; the rows work per sub-step.
+    const Real warmScale =
+        step.solver.warmStarting ? step.dtRatio / Real(context.substeps) : Real(0);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        const std::int32_t contactIndex = island.contactIndices[k];
+        const Contact& contact = island.contacts[contactIndex];
+        m_anyHitEvents = m_anyHitEvents || (contact.flags & Contact::HitEvents) != 0;
+        const Body& bodyA = island.bodies[contact.bodyA];
+        const Body& bodyB = island.bodies[contact.bodyB];
+        SoftContact& c = m_contacts[k];
+        c.contactIndex = contactIndex;
+        c.indexA = bodyA.islandIndex;
+        c.indexB = bodyB.islandIndex;
+        c.mA = bodyA.invMass;
+        c.iA = bodyA.invI;
+        c.mB = bodyB.invMass;
+        c.iB = bodyB.invI;
+        c.friction = contact.friction;
+        c.restitution = contact.restitution;
+        c.threshold = contact.restitutionThreshold;
+        const bool againstFixed = (c.mA == 0 && c.iA == 0) || (c.mB == 0 && c.iB == 0);
+        c.softness = againstFixed ? context.staticContact : context.contact;
+
+        const Manifold& manifold = contact.manifold;
+        WorldManifold wm;
+        wm.Initialize(manifold, bodyA.xf, contact.radiusA, bodyB.xf, contact.radiusB);
+        c.normal = wm.normal;
+        c.pointCount = manifold.pointCount;
+        const Vec2 tangent = Tangent(c.normal);
+        const RowBodies masses{{}, 0, {}, 0, c.mA, c.iA, c.mB, c.iB};
+        RowJacobian normalRows[2];
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            SoftContactPoint& p = c.points[j];
+            p.rA = wm.points[j] - bodyA.sweep.c;
+            p.rB = wm.points[j] - bodyB.sweep.c;
+            p.baseSeparation = wm.separations[j] - Dot(p.rB - p.rA, c.normal);
+            normalRows[j] = PointRow(c.normal, p.rA, p.rB);
+            p.normalMass = RowMass(InverseEffectiveMass(normalRows[j], masses));
+            p.tangentMass = RowMass(InverseEffectiveMass(PointRow(tangent, p.rA, p.rB), masses));
+            p.normalImpulse = warmScale * manifold.points[j].normalImpulse;
+            p.tangentImpulse = warmScale * manifold.points[j].tangentImpulse;
+            p.totalNormalImpulse = 0;
+            p.totalTangentImpulse = 0;
+            // The approach speed before the step: restitution's vn and the hit events'.
+            const Vec2 vA = bodyA.linearVelocity + Cross(bodyA.angularVelocity, p.rA);
+            const Vec2 vB = bodyB.linearVelocity + Cross(bodyB.angularVelocity, p.rB);
+            p.relativeVelocity = Dot(vB - vA, c.normal);
+        }
+        // The two normal rows' block K (its diagonal the rows' scalar k), unless they are
+        // nearly parallel (Box2D's condition test): then the points go one by one.
+        c.block = false;
+        if (c.pointCount == 2 && context.blockSolver)
+        {
+            const RowJacobian& J1 = normalRows[0];
+            const RowJacobian& J2 = normalRows[1];
+            const Real k11 = InverseEffectiveMass(J1, masses);
+            const Real k22 = InverseEffectiveMass(J2, masses);
+            const Real k12 = c.mA + c.mB + c.iA * J1.aA * J2.aA + c.iB * J1.aB * J2.aB;
+            if (k11 * k11 < kMaxConditionNumber * (k11 * k22 - k12 * k12))
+            {
+                c.K.ex = {k11, k12};
+                c.K.ey = {k12, k22};
+                c.invK = c.K.GetInverse();
+                c.block = true;
+            }
+        }
+    }
+}
+
+void SoftContactSolver::WarmStart(const SoftStepContext& context)
+{
+    for (SoftContact& c : m_contacts)
+    {
+        RowBodies b = LoadBodies(c, context);
+        const Vec2 tangent = Tangent(c.normal);
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            SoftContactPoint& p = c.points[j];
+            ApplyPointImpulse(p.normalImpulse * c.normal + p.tangentImpulse * tangent, p.rA, p.rB,
+                              b);
+            p.totalNormalImpulse += p.normalImpulse;
+            p.totalTangentImpulse += p.tangentImpulse;
+        }
+        StoreBodies(c, b, context);
+    }
+}
+
+void SoftContactSolver::SolveNormalRows(SoftContact& c, RowBodies& b,
+                                        const SoftStepContext& context, bool useBias)
+{
+    const Real slop = context.step->tolerances.linearSlop;
+    const SoftDelta& dA = context.bodies->deltas[c.indexA];
+    const SoftDelta& dB = context.bodies->deltas[c.indexB];
+    // Rigid contacts leave the overlap to CorrectPositions; soft ones push it out here.
+    const bool pushOut = useBias && context.contactModel == SoftContactModel::Soft;
+    RowTarget targets[2];
+    bool allRigid = true;
+    for (int j = 0; j < c.pointCount; ++j)
+    {
+        const Real C = NormalError(c, c.points[j], dA, dB, slop);
+        targets[j] = OneSidedTarget(C, pushOut, c.softness, context.invH, context.maxPushOut);
+        allRigid =
+            allRigid && targets[j].softness.massScale == 1 && targets[j].softness.impulseScale == 0;
+    }
+    if (c.block && allRigid)
+    {
+        SoftContactPoint& p1 = c.points[0];
+        SoftContactPoint& p2 = c.points[1];
+        const RowJacobian J1 = PointRow(c.normal, p1.rA, p1.rB);
+        const RowJacobian J2 = PointRow(c.normal, p2.rA, p2.rB);
+        const Vec2 a{p1.normalImpulse, p2.normalImpulse};
+        const Vec2 v{RowVelocity(J1, b) + targets[0].bias, RowVelocity(J2, b) + targets[1].bias};
+        Vec2 x;
+        if (SolveTwoPointBlock(c.K, c.invK, p1.normalMass, p2.normalMass, v - Mul(c.K, a), x))
+        {
+            const Vec2 applied = x - a;
+            ApplyRowImpulse(J1, applied.x, b);
+            ApplyRowImpulse(J2, applied.y, b);
+            p1.normalImpulse = x.x;
+            p2.normalImpulse = x.y;
+            p1.totalNormalImpulse += applied.x;
+            p2.totalNormalImpulse += applied.y;
+        }
+        return;
+    }
+    for (int j = 0; j < c.pointCount; ++j)
+    {
+        SoftContactPoint& p = c.points[j];
+        p.totalNormalImpulse += SolveRow(PointRow(c.normal, p.rA, p.rB), p.normalMass, targets[j],
+                                         p.normalImpulse, b, 0, kMaxReal);
+    }
+}
+
+void SoftContactSolver::Solve(const SoftStepContext& context, bool useBias)
+{
+    const bool friction = !useBias || context.frictionInSolve;
+    for (SoftContact& c : m_contacts)
+    {
+        RowBodies b = LoadBodies(c, context);
+        // Normal rows first, so that friction is bounded by this sweep's normal impulses.
+        SolveNormalRows(c, b, context, useBias);
+        if (friction && c.friction > 0)
+        {
+            const Vec2 tangent = Tangent(c.normal);
+            for (int j = 0; j < c.pointCount; ++j)
+            {
+                SoftContactPoint& p = c.points[j];
+                const Real maxFriction = c.friction * p.normalImpulse;
+                p.totalTangentImpulse +=
+                    SolveRow(PointRow(tangent, p.rA, p.rB), p.tangentMass, RowTarget{},
+                             p.tangentImpulse, b, -maxFriction, maxFriction);
+            }
+        }
+        StoreBodies(c, b, context);
+    }
+}
+
+void SoftContactSolver::CorrectPositions(const SoftStepContext& context)
+{
+    const Real slop = context.step->tolerances.linearSlop;
+    const Real maxCorrection = context.maxPushOut * context.h;
+    std::vector<SoftDelta>& deltas = context.bodies->deltas;
+    for (const SoftContact& c : m_contacts)
+    {
+        SoftDelta& dA = deltas[c.indexA];
+        SoftDelta& dB = deltas[c.indexB];
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            const SoftContactPoint& p = c.points[j];
+            // Non-linear Gauss-Seidel on the separation: each point sees the last one's move.
+            const Real C = Clamp(context.contactCorrection * NormalError(c, p, dA, dB, slop),
+                                 -maxCorrection, Real(0));
+            if (C == 0)
+            {
+                continue;
+            }
+            const Vec2 rA = Mul(dA.dq, p.rA);
+            const Vec2 rB = Mul(dB.dq, p.rB);
+            const RowBodies masses{{}, 0, {}, 0, c.mA, c.iA, c.mB, c.iB};
+            const RowJacobian J = PointRow(c.normal, rA, rB);
+            const Real lambda = -C * RowMass(InverseEffectiveMass(J, masses));
+            const Vec2 P = lambda * c.normal;
+            dA.dp -= c.mA * P;
+            Turn(dA, -c.iA * lambda * J.aA);
+            dB.dp += c.mB * P;
+            Turn(dB, c.iB * lambda * J.aB);
+        }
+    }
+}
+
+void SoftContactSolver::Restitution(const SoftStepContext& context)
+{
+    for (SoftContact& c : m_contacts)
+    {
+        if (c.restitution == 0)
+        {
+            continue;
+        }
+        RowBodies b = LoadBodies(c, context);
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            SoftContactPoint& p = c.points[j];
+            // Only points that approached fast enough and were pushed bounce.
+            if (p.relativeVelocity > -c.threshold || p.totalNormalImpulse <= 0)
+            {
+                continue;
+            }
+            const RowTarget target{c.restitution * p.relativeVelocity, kRigid};
+            p.totalNormalImpulse += SolveRow(PointRow(c.normal, p.rA, p.rB), p.normalMass, target,
+                                             p.normalImpulse, b, 0, kMaxReal);
+        }
+        StoreBodies(c, b, context);
+    }
+}
+
+void SoftContactSolver::ScaleImpulses(Real factor)
+{
+    for (SoftContact& c : m_contacts)
+    {
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            c.points[j].normalImpulse *= factor;
+            c.points[j].tangentImpulse *= factor;
+        }
+    }
+}
+
+void SoftContactSolver::SaveImpulses()
+{
+    m_saved.clear();
+    for (const SoftContact& c : m_contacts)
+    {
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            m_saved.push_back({c.points[j].normalImpulse, c.points[j].tangentImpulse});
+        }
+    }
+}
+
+void SoftContactSolver::RestoreImpulses()
+{
+    std::size_t i = 0;
+    for (SoftContact& c : m_contacts)
+    {
+        for (int j = 0; j < c.pointCount; ++j, ++i)
+        {
+            c.points[j].normalImpulse = m_saved[i].x;
+            c.points[j].tangentImpulse = m_saved[i].y;
+        }
+    }
+}
+
+void SoftContactSolver::Store(std::span<Contact> contacts, const SoftStepContext& context)
+{
+    m_solved.resize(m_contacts.size());
+    const Real perStep = Real(context.substeps);
+    for (std::size_t k = 0; k < m_contacts.size(); ++k)
+    {
+        const SoftContact& c = m_contacts[k];
+        SolvedContact& solved = m_solved[k];
+        solved.contactIndex = c.contactIndex;
+        solved.pointCount = c.pointCount;
+        Manifold& manifold = contacts[c.contactIndex].manifold;
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            const SoftContactPoint& p = c.points[j];
+            manifold.points[j].normalImpulse = perStep * p.normalImpulse;
+            manifold.points[j].tangentImpulse = perStep * p.tangentImpulse;
+            solved.normalImpulse[j] = p.totalNormalImpulse;
+            solved.tangentImpulse[j] = p.totalTangentImpulse;
+            solved.normalVelocity[j] = p.relativeVelocity;
+        }
+    }
+}
+
+} // namespace meff::detail

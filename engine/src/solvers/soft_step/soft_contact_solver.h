@@ -1,0 +1,89 @@
+// The contact rows of the soft step. Each manifold point is a normal row (C = separation +
+// linearSlop ≥ 0, so that bodies rest linearSlop into each other's skins as in the other back
+// ends) and a friction row (|λt| ≤ μ·λn), both on the seed's scalar effective mass with lever
+// arms and normal fixed at the step's start (the anchors turn with their bodies only in the
+// separation, s = s0 + (dpB − dpA + dqB·rB − dqA·rA)·n). A point still apart (C > 0) only
+// keeps the bodies from closing more than C within the sub-step (speculative).
+//
+// Rigid contacts (SoftContactModel::Rigid): the normal rows are rigid, two-point manifolds
+// solved as one 2×2 block; after each sub-step's move, CorrectPositions removes a fraction of
+// each point's overlap beyond linearSlop by moving the bodies, not by giving them velocity.
+// Soft contacts: the normal rows are soft while solving (SoftStepContext::contact) and rigid
+// while relaxing. Either way friction is solved in the relax sweeps, and after the sub-steps
+// restitution drives an approaching point to −e·vn (the seed's P = (1+e)·m_red·|vn|, vn
+// measured before the step).
+#pragma once
+
+#include "solvers/box2d/contact_constraint.h"
+#include "solvers/soft_step/soft_row.h"
+#include "solvers/soft_step/soft_step_context.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace meff::detail
+{
+
+struct Contact;
+
+struct SoftContactPoint
+{
+    Vec2 rA, rB;         ///< from each centre of mass to the point at the step's start (m)
+    Real baseSeparation; ///< separation at the start minus (rB − rA)·n: s = base + d·n (m)
+    Real normalMass = 0, tangentMass = 0;                 ///< 1/k of each row (kg)
+    Real normalImpulse = 0, tangentImpulse = 0;           ///< accumulated in this sub-step (N·s)
+    Real totalNormalImpulse = 0, totalTangentImpulse = 0; ///< over the whole step (N·s)
+    Real relativeVelocity = 0; ///< vn before the step (m/s): restitution and hit events
+};
+
+struct SoftContact
+{
+    SoftContactPoint points[2];
+    Vec2 normal; ///< from A to B, fixed for the step
+    std::int32_t indexA = 0, indexB = 0;
+    Real mA = 0, iA = 0, mB = 0, iB = 0;
+    Real friction = 0, restitution = 0, threshold = 0;
+    Softness softness; ///< soft contacts' normal rows while solving
+    Mat22 K, invK;     ///< the normal rows' block, when `block`
+    bool block = false;
+    int pointCount = 0;
+    std::int32_t contactIndex = 0;
+};
+
+class SoftContactSolver
+{
+  public:
+    /// Builds the rows of the island's contacts at the bodies' poses of the step's start.
+    void Prepare(const IslandContacts& island, const SoftStepContext& context);
+    void WarmStart(const SoftStepContext& context);
+    /// One sweep: solving (`useBias`; soft contacts push overlapping points apart) or relaxing.
+    void Solve(const SoftStepContext& context, bool useBias);
+    /// Rigid contacts, after the sub-step's move: removes SoftStepContext::contactCorrection of
+    /// each point's overlap beyond linearSlop (at most maxPushOut·h) by moving the bodies.
+    void CorrectPositions(const SoftStepContext& context);
+    void Restitution(const SoftStepContext& context);
+    /// Scales the accumulated impulses (a half kick's are half a sub-step's).
+    void ScaleImpulses(Real factor);
+    /// The accumulated sub-step impulses, kept aside while the step's closing half kick is
+    /// solved (its impulses count towards the step's totals, not towards the warm start).
+    void SaveImpulses();
+    void RestoreImpulses();
+    /// Writes the sub-step impulses × substeps into the manifolds (per-step impulses, as the
+    /// other back ends store them: next step's warm start) and fills SolvedContacts().
+    void Store(std::span<Contact> contacts, const SoftStepContext& context);
+
+    std::span<const SolvedContact> SolvedContacts() const { return m_solved; }
+    bool AnyHitEvents() const { return m_anyHitEvents; }
+
+  private:
+    void SolveNormalRows(SoftContact& c, RowBodies& b, const SoftStepContext& context,
+                         bool useBias);
+
+    std::vector<SoftContact> m_contacts;
+    std::vector<SolvedContact> m_solved;
+    std::vector<Vec2> m_saved; ///< normal and tangent impulse of each point (SaveImpulses)
+    bool m_anyHitEvents = false;
+};
+
+} // namespace meff::detail

@@ -1,0 +1,32 @@
+// What every soft row of one step needs to know: the sub-step, the softness of contacts and
+// joints, and the island's bodies.
+#pragma once
+
+#include "dynamics/solver_types.h"
+#include "solvers/soft_step/soft_bodies.h"
+#include "solvers/soft_step/softness.h"
+#include "meff/world.h"
+
+namespace meff::detail
+{
+
+/// What the soft rows of one sub-step need to know.
+struct SoftStepContext
+{
+    const StepContext* step = nullptr; ///< the whole step (dt, settings, tolerances)
+    int substeps = 1;
+    Real h = 0, invH = 0;   ///< sub-step (s) and its inverse
+    Softness contact;       ///< between two moving bodies
+    Softness staticContact; ///< against a body that cannot move: twice as stiff
+    Softness joint;         ///< the joints' rigid rows
+    Real maxPushOut = 0;    ///< m/s
+    SoftContactModel contactModel = SoftContactModel::Rigid;
+    Real contactCorrection = 0;   ///< rigid contacts: fraction of the overlap removed per sub-step
+    bool blockSolver = true;      ///< two-point manifolds' normal rows as one block
+    bool frictionInSolve = false; ///< no relax sweeps: friction goes with the biased sweep
+    bool halfKick = false;        ///< this sweep belongs to one of the step's two half sub-steps
+    bool closing = false;         ///< the closing half kick's sweep: springs act, rigid rows relax
+    SoftBodies* bodies = nullptr;
+};
+
+} // namespace meff::detail

@@ -1,0 +1,178 @@
+#include "solvers/soft_step/soft_step_solver.h"
+
+#include "dynamics/body.h"
+#include "dynamics/joint_slot.h"
+#include "solvers/box2d/joint_solver.h"
+
+namespace meff::detail
+{
+
+SoftStepContext MakeSoftStepContext(const StepContext& step)
+{
+    const SoftStepSettings& settings = step.solver.softStep;
+    SoftStepContext context;
+    context.step = &step;
+    context.substeps = settings.substeps;
+    context.h = step.dt / Real(settings.substeps);
+    context.invH = Real(settings.substeps) * step.invDt;
+    // A contact spring stiffer than a quarter of the sub-step rate rings instead of settling
+    // (Box2D v3's cap). Joints take up to 0.3 of it: chain20 starts to whip apart from about
+    // 0.31 and joint_grid's net from 0.36, and the stiffer the joints the less a pendulum
+    // loses (docs/soft-step.md).
+    const Real maxHertz = Real(0.25) * context.invH;
+    const Real maxJointHertz = Real(0.3) * context.invH;
+    const Real contactHertz = Min(settings.contactHertz, maxHertz);
+    context.contact = MakeSoft(contactHertz, settings.contactDampingRatio, context.h);
+    context.staticContact =
+        MakeSoft(Real(2) * contactHertz, settings.contactDampingRatio, context.h);
+    context.joint =
+        MakeSoft(Min(settings.jointHertz, maxJointHertz), settings.jointDampingRatio, context.h);
+    context.maxPushOut = settings.maxPushOutSpeed;
+    context.contactModel = settings.contacts;
+    context.contactCorrection = settings.contactCorrection;
+    context.blockSolver = step.solver.blockSolver;
+    context.frictionInSolve = settings.relaxIterations == 0;
+    return context;
+}
+
+void SoftStepSolver::Step(SolverWorld& world, const StepContext& step)
+{
+    m_context = MakeSoftStepContext(step);
+    m_context.bodies = &m_bodies;
+    const auto solve = [&](Island& island) { SolveIsland(world, island, step); };
+    // Without sleep, islands would only split the work.
+    if (!world.allowSleep && BuildWorldIsland(world, m_island))
+    {
+        solve(m_island);
+        return;
+    }
+    ForEachAwakeIsland(world, m_island, solve);
+}
+
+void SoftStepSolver::SolveIsland(SolverWorld& world, Island& island, const StepContext& step)
+{
+    GatherSoftBodies(world, island, m_context.h, m_bodies);
+    // Stored impulses are per step (as the other back ends store them); the rows work per
+    // sub-step.
+    const Real warmScale =
+        step.solver.warmStarting ? step.dtRatio / Real(m_context.substeps) : Real(0);
+    m_contacts.Prepare({island.contacts, world.contacts, world.bodies}, m_context);
+    PrepareJoints(world, island, warmScale);
+
+    for (int i = 0; i < m_context.substeps; ++i)
+    {
+        SubStep(i == 0, step);
+    }
+    CloseStep();
+    m_contacts.Restitution(m_context);
+    m_contacts.Store(world.contacts, m_context);
+    for (Joint* joint : m_joints)
+    {
+        ScaleJointImpulses(*joint, Real(m_context.substeps));
+    }
+
+    ScatterSoftBodies(m_bodies, island);
+    FinishBodies(world, island);
+    world.solvedContacts.Record(m_contacts.SolvedContacts(), m_contacts.AnyHitEvents(), step);
+    if (world.allowSleep)
+    {
+        UpdateSleep(world, island, step, true);
+    }
+}
+
+void SoftStepSolver::SubStep(bool first, const StepContext& step)
+{
+    // Velocity Verlet: the step's first kick is half a sub-step (CloseStep gives the other
+    // half at the end), and so are its constraint impulses: the warm start applies half of
+    // last sub-step's, and what the kick accumulates is doubled back to a whole sub-step's.
+    const Real kick = first ? Real(0.5) : Real(1);
+    m_context.halfKick = first;
+    IntegrateSoftVelocities(m_bodies, kick);
+    ScaleImpulses(kick);
+    WarmStartJoints();
+    m_contacts.WarmStart(m_context);
+    SolveJoints(true);
+    m_contacts.Solve(m_context, true);
+    IntegrateSoftPositions(m_bodies, m_context.h, step);
+    if (m_context.contactModel == SoftContactModel::Rigid)
+    {
+        m_contacts.CorrectPositions(m_context);
+    }
+    for (int r = 0; r < step.solver.softStep.relaxIterations; ++r)
+    {
+        SolveJoints(false);
+        m_contacts.Solve(m_context, false);
+    }
+    ScaleImpulses(Real(1) / kick);
+    m_context.halfKick = false;
+}
+
+void SoftStepSolver::ScaleImpulses(Real factor)
+{
+    if (factor == 1)
+    {
+        return;
+    }
+    m_contacts.ScaleImpulses(factor);
+    for (Joint* joint : m_joints)
+    {
+        ScaleJointImpulses(*joint, factor);
+    }
+}
+
+void SoftStepSolver::CloseStep()
+{
+    // Half a sub-step's kick, with half of the sub-step's constraint impulses, then one rigid
+    // sweep; the accumulated impulses stay the last whole sub-step's (next step's warm start).
+    IntegrateSoftVelocities(m_bodies, Real(0.5));
+    m_context.halfKick = true;
+    m_context.closing = true;
+    m_contacts.SaveImpulses();
+    m_contacts.ScaleImpulses(Real(0.5));
+    m_contacts.WarmStart(m_context);
+    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    {
+        Joint scratch = *m_joints[k];
+        ScaleJointImpulses(scratch, Real(0.5));
+        WarmStartSoftJoint(scratch, m_frames[k], m_context);
+        SolveSoftJoint(scratch, m_frames[k], m_context, false);
+    }
+    m_contacts.Solve(m_context, false);
+    m_contacts.RestoreImpulses();
+    m_context.halfKick = false;
+    m_context.closing = false;
+}
+
+void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Real warmScale)
+{
+    m_joints.clear();
+    m_frames.resize(island.joints.size());
+    for (std::size_t k = 0; k < island.joints.size(); ++k)
+    {
+        Joint& joint = world.joints[island.joints[k]].joint;
+        const Body& bodyA = world.bodies[joint.bodyA];
+        const Body& bodyB = world.bodies[joint.bodyB];
+        PrepareSoftJoint(joint, m_frames[k], JointBodyOf(bodyA), JointBodyOf(bodyB),
+                         m_bodies.start[bodyA.islandIndex], m_bodies.start[bodyB.islandIndex],
+                         warmScale, m_context);
+        m_joints.push_back(&joint);
+    }
+}
+
+void SoftStepSolver::WarmStartJoints()
+{
+    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    {
+        WarmStartSoftJoint(*m_joints[k], m_frames[k], m_context);
+    }
+}
+
+void SoftStepSolver::SolveJoints(bool useBias)
+{
+    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    {
+        SolveSoftJoint(*m_joints[k], m_frames[k], m_context, useBias);
+    }
+}
+
+} // namespace meff::detail

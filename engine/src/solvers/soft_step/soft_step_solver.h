@@ -1,0 +1,63 @@
+// The soft-step back end (SolverKind::SoftStep): sub-stepped soft constraints (Box2D v3's
+// solver on the seed's scalar effective mass), integrated as velocity Verlet. Collision runs
+// once per step; each island's step is cut into `substeps` sub-steps h = dt/substeps:
+//
+//   prepare contacts and joints at the step's start →
+//   for each sub-step: integrate velocities (the first by h/2, with half the warm start),
+//     warm start (joints, contacts),
+//     solve with the soft position bias (joints, contacts), integrate positions, correct
+//     contact positions (rigid contacts), relax without bias (joints, contacts) →
+//   the closing half kick: integrate velocities by h/2, half the warm start, relax (its
+//     impulses reported, not kept for the warm start) → restitution → store impulses → finish
+//     bodies → report solved contacts → sleep
+//
+// Kicking h/2 at both ends of the step makes positions second order in h (velocity Verlet;
+// docs/soft-step.md), with velocities at the step's end, not half a sub-step off. Islands are
+// searched as the Box2D back end does when sleep is on; without it the whole world is one
+// island, gathered from the arrays (island.h).
+#pragma once
+
+#include "joints/joint.h"
+#include "solvers/island.h"
+#include "solvers/soft_step/soft_bodies.h"
+#include "solvers/soft_step/soft_contact_solver.h"
+#include "solvers/soft_step/soft_joint.h"
+#include "solvers/solver.h"
+
+#include <vector>
+
+namespace meff::detail
+{
+
+class SoftStepSolver final : public Solver
+{
+  public:
+    void Step(SolverWorld& world, const StepContext& step) override;
+
+  private:
+    void SolveIsland(SolverWorld& world, Island& island, const StepContext& step);
+    void PrepareJoints(SolverWorld& world, const Island& island, Real warmScale);
+    void SubStep(bool first, const StepContext& step);
+    /// Scales every accumulated impulse of the island (contacts and joints).
+    void ScaleImpulses(Real factor);
+    void WarmStartJoints();
+    void SolveJoints(bool useBias);
+    /// The closing half kick: velocities by h/2, half of the sub-step's constraint impulses and
+    /// one rigid sweep of every row, whose impulses count towards the step's totals but not
+    /// towards the warm start.
+    void CloseStep();
+
+    SoftStepContext m_context;
+    Island m_island;
+    SoftBodies m_bodies;
+    SoftContactSolver m_contacts;
+    std::vector<Joint*> m_joints;
+    std::vector<SoftJointFrame> m_frames;
+};
+
+/// The soft coefficients of one step's sub-steps from the settings (SoftStepSettings): contact
+/// and joint stiffness capped at a quarter of the sub-step rate; contacts against a body that
+/// cannot move twice as stiff.
+SoftStepContext MakeSoftStepContext(const StepContext& step);
+
+} // namespace meff::detail
