@@ -3,7 +3,8 @@
 
 Run by `meff sweep` when python3 with matplotlib is available:
     plot_sweep.py CSV PNG [--title T] [--cost wall|cpu]
-One point per engine and setting: colour for the engine (meff, Box2D 2.4.1), marker for the
+One point per engine and setting: colour for the engine (meff in Box2D's order, by colour and by
+soft step; Box2D 2.4.1), marker for the
 group of settings the point belongs to. Each engine's Pareto front (the settings more accurate,
 by over 1%, than every cheaper setting of that engine) is drawn as a line and its points
 labelled; the default setting (8 velocity and 3 position iterations, 60 Hz, block solver and
@@ -21,12 +22,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
 from matplotlib.lines import Line2D  # noqa: E402
 
-ENGINES = [("meff", "meff", "tab:blue"), ("box2d", "Box2D 2.4.1", "tab:orange")]
+ENGINES = [("meff", "meff, Box2D's order", "tab:blue"), ("meff_colour", "meff by colour", "tab:green"),
+           ("meff_soft_step", "meff soft step", "tab:red"), ("box2d", "Box2D 2.4.1", "tab:orange")]
 GROUPS = [
     ("iterations_dt", "velocity iterations × dt (3 position)", "o"),
     ("position_dt", "position iterations × dt (8 velocity)", "s"),
     ("block_off", "block solver off × dt (8/3)", "^"),
     ("warm_off", "warm starting off × dt (8/3)", "D"),
+    ("colour", "by colour × dt (8/3)", "P"),
+    ("soft_step", "soft step: substeps × dt", "v"),
+    ("soft_stiffness", "soft step: joint stiffness (60 Hz, 4 substeps)", "X"),
 ]
 
 
@@ -53,6 +58,9 @@ def read_rows(path, cost_column):
             "block": row["block_solver"] == "1",
             "warm": row["warm_starting"] == "1",
             "kind": row["error_kind"],
+            # older sweep.csv files have no soft-step columns
+            "substeps": int(row.get("substeps") or 0),
+            "joint_hz": float(row.get("joint_hertz") or 0),
         })
     return points
 
@@ -74,6 +82,8 @@ def pareto_front(points):
 
 
 def label(point):
+    if point["engine"] == "meff_soft_step":
+        return f"{point['substeps']}x {point['hz']}Hz {point['joint_hz']:g}Hz joints"
     text = f"{point['v']}/{point['p']} {point['hz']}Hz"
     if not point["block"]:
         text += " noblock"
@@ -83,6 +93,8 @@ def label(point):
 
 
 def is_default(point):
+    if point["engine"] == "meff_soft_step":
+        return (point["hz"], point["substeps"], point["joint_hz"]) == (60, 4, 72)
     return (point["v"], point["p"], point["hz"], point["block"], point["warm"]) == (
         8, 3, 60, True, True)
 
@@ -103,7 +115,7 @@ def main():
     figure, axis = plt.subplots(figsize=(10, 7))
     # Label offsets per engine, so that where the engines' fronts coincide (meff follows Box2D
     # step for step, so their errors are often equal) the labels do not overprint.
-    offsets = {"meff": (5, 4), "box2d": (5, -10)}
+    offsets = {"meff": (5, 4), "box2d": (5, -10), "meff_colour": (5, 12), "meff_soft_step": (5, 4)}
     for engine, engine_label, colour in ENGINES:
         mine = [p for p in points if p["engine"] == engine]
         for group, _, marker in GROUPS:
@@ -131,7 +143,7 @@ def main():
                 for _, group_label, marker in GROUPS]
     handles.append(Line2D([], [], linestyle="none", marker="o", markersize=12,
                           markerfacecolor="none", markeredgecolor="gray",
-                          label="default: 8/3 iterations, 60 Hz"))
+                          label="defaults: 8/3 iterations, 60 Hz; soft step 4 substeps"))
     axis.set_xscale("log")
     axis.set_yscale("log")
     axis.set_xlabel(f"cost: {'wall' if args.cost == 'wall' else 'CPU'} time per simulated "

@@ -13,7 +13,11 @@ int main(int argc, char** argv)
 
     CLI::App app{"meff: a 2D rigid-body physics engine.\n"
                  "Scenes are JSON files (see docs/scene-format.md); samples are in "
-                 "samples/scenes/.",
+                 "samples/scenes/.\n"
+                 "Three solver back ends, chosen by a scene's world.solver or --solver: box2d (the "
+                 "default: Box2D 2.4.1's step, bit for bit), colour (the same rows solved by graph "
+                 "colour in SIMD lanes: fastest), soft_step (sub-stepped soft constraints: far "
+                 "more accurate for joints, pendulums and chains; see docs/soft-step.md).",
                  "meff"};
     app.require_subcommand(1);
     app.footer("Exit status: 0 success, 1 the simulation failed or output could not be "

@@ -8,7 +8,15 @@
 //   position×dt    position iterations {0,1,8} × the five rates, 8 velocity iterations
 //                  (15; 3 is in the first group);
 //   block_off      block solver off at the five rates, 8/3 iterations (5);
-//   warm_off       warm starting off at the five rates, 8/3 iterations (5).
+//   warm_off       warm starting off at the five rates, 8/3 iterations (5);
+//   colour         meff's colour back end at the five rates, 8/3 iterations (5; meff only);
+//   soft_step      meff's soft step at its defaults but for substeps {1,2,4,8} × rates
+//                  {30,60,120,240} (16; meff only);
+//   soft_stiffness the soft step at 60 Hz and 4 substeps with joint stiffness {18,36,72} Hz
+//                  (3; 72 is the default and in the group above only by its substeps).
+// Box2D 2.4.1 has neither the colour order nor the soft step, so those settings are run by
+// meff alone; each back end is its own "engine" in sweep.csv (meff, meff_colour,
+// meff_soft_step, box2d) with its own Pareto front.
 // Every setting runs the same simulated time (--seconds, 4 s by default), so a finer dt takes
 // proportionally more steps. --quick runs a 9-setting grid over 2 s, for tests.
 //
@@ -84,7 +92,18 @@ struct Setting
     int hz = 60;
     bool blockSolver = true;
     bool warmStarting = true;
+    SolverKind solver = SolverKind::Box2D; ///< meff's back end; Box2D runs only Box2D's
+    int substeps = 4;                      ///< soft step only (SoftStepSettings::substeps)
+    double jointHertz = 72;                ///< Hz, soft step only (SoftStepSettings::jointHertz)
 };
+
+/// The name of the meff row of a setting: one "engine" per back end.
+std::string MeffEngineName(const Setting& setting)
+{
+    return setting.solver == SolverKind::Box2D
+               ? std::string("meff")
+               : std::string("meff_") + SolverKindName(setting.solver);
+}
 
 std::vector<Setting> MakeGrid(bool quick)
 {
@@ -92,6 +111,12 @@ std::vector<Setting> MakeGrid(bool quick)
     const auto add = [&](const char* group, int velocity, int position, int hz, bool block,
                          bool warm) {
         grid.push_back({group, velocity, position, hz, block, warm});
+    };
+    const auto addColour = [&](int hz) {
+        grid.push_back({"colour", 8, 3, hz, true, true, SolverKind::Colour});
+    };
+    const auto addSoft = [&](const char* group, int hz, int substeps, double jointHertz) {
+        grid.push_back({group, 8, 3, hz, true, true, SolverKind::SoftStep, substeps, jointHertz});
     };
     if (quick)
     {
@@ -105,6 +130,9 @@ std::vector<Setting> MakeGrid(bool quick)
         add("position_dt", 8, 0, 60, true, true);
         add("block_off", 8, 3, 60, false, true);
         add("warm_off", 8, 3, 60, true, false);
+        addColour(60);
+        addSoft("soft_step", 60, 1, 72);
+        addSoft("soft_step", 60, 4, 72);
         return grid;
     }
     const int rates[] = {30, 60, 120, 240, 480};
@@ -130,6 +158,21 @@ std::vector<Setting> MakeGrid(bool quick)
     {
         add("warm_off", 8, 3, hz, true, false);
     }
+    for (const int hz : rates)
+    {
+        addColour(hz);
+    }
+    for (const int substeps : {1, 2, 4, 8})
+    {
+        for (const int hz : {30, 60, 120, 240})
+        {
+            addSoft("soft_step", hz, substeps, 72);
+        }
+    }
+    for (const double jointHertz : {18.0, 36.0, 72.0})
+    {
+        addSoft("soft_stiffness", 60, 4, jointHertz);
+    }
     return grid;
 }
 
@@ -142,6 +185,9 @@ Scene WithSetting(const Scene& scene, const Setting& setting)
     copy.world.solver.positionIterations = setting.positionIterations;
     copy.world.solver.blockSolver = setting.blockSolver;
     copy.world.solver.warmStarting = setting.warmStarting;
+    copy.world.solver.kind = setting.solver;
+    copy.world.solver.softStep.substeps = setting.substeps;
+    copy.world.solver.softStep.jointHertz = Real(setting.jointHertz);
     return copy;
 }
 
@@ -863,7 +909,14 @@ double Median(std::vector<double> values)
 std::string Describe(const Setting& s)
 {
     char text[96];
-    std::snprintf(text, sizeof text, "v%-2d p%d %3d Hz block %-3s warm %-3s", s.velocityIterations,
+    if (s.solver == SolverKind::SoftStep)
+    {
+        std::snprintf(text, sizeof text, "soft step %d substeps %3d Hz joints %g Hz", s.substeps,
+                      s.hz, s.jointHertz);
+        return text;
+    }
+    std::snprintf(text, sizeof text, "%sv%-2d p%d %3d Hz block %-3s warm %-3s",
+                  s.solver == SolverKind::Colour ? "colour " : "", s.velocityIterations,
                   s.positionIterations, s.hz, s.blockSolver ? "on" : "off",
                   s.warmStarting ? "on" : "off");
     return text;
@@ -920,7 +973,7 @@ constexpr const char* kCsvHeader =
     "warm_starting,seconds,frames,runs,ms_per_sim_s,ms_per_sim_s_min,ms_per_sim_s_max,"
     "ms_per_step,cpu_ms_per_sim_s,error_kind,error_m,max_penetration_m,joint_drift_m,energy_drift_"
     "j,"
-    "energy_drift_rel,energy_change_j,status\n";
+    "energy_drift_rel,energy_change_j,status,solver,substeps,joint_hertz\n";
 
 void WriteCsv(std::FILE* out, const Scene& scene, const char* errorKind, double seconds,
               const std::vector<Row>& rows)
@@ -950,7 +1003,9 @@ void WriteCsv(std::FILE* out, const Scene& scene, const char* errorKind, double 
                              : kNaN);
         WriteNumber(out, row.trace.energyChange);
         // The failure text may hold commas: the status column keeps only its kind.
-        std::fprintf(out, ",%s\n", row.trace.failed ? "failed" : "ok");
+        std::fprintf(out, ",%s,%s,%d,%g\n", row.trace.failed ? "failed" : "ok",
+                     row.engine == "box2d" ? "box2d" : SolverKindName(s.solver), s.substeps,
+                     s.jointHertz);
     }
 }
 
@@ -1127,7 +1182,8 @@ int RunSweep(const SweepOptions& options)
     }
 
     const bool cpu = options.cost == "cpu";
-    std::printf("%zu settings x 2 engines; cost: ms of %s time per simulated second, median of "
+    std::printf("%zu settings (Box2D's by both engines); cost: ms of %s time per simulated second, "
+                "median of "
                 "%d timed run(s)\n",
                 grid.size(), cpu ? "CPU" : "wall", runs);
     std::printf("%-38s | %10s %10s | %10s %10s\n", "setting", "meff ms/s", "error m", "Box2D ms/s",
@@ -1137,23 +1193,39 @@ int RunSweep(const SweepOptions& options)
     {
         const Setting& setting = grid[n];
         const Scene settingScene = WithSetting(scene, setting);
-        Row meffRow = RunSetting<MeffEngine>(settingScene, setting, "meff", seconds, *model);
-        Row box2dRow = RunSetting<Box2DEngine>(settingScene, setting, "box2d", seconds, *model);
+        const std::string meffName = MeffEngineName(setting);
+        Row meffRow =
+            RunSetting<MeffEngine>(settingScene, setting, meffName.c_str(), seconds, *model);
+        // Box2D 2.4.1 has only its own order: the other back ends' settings are meff's alone.
+        const bool withBox2D = setting.solver == SolverKind::Box2D;
+        std::optional<Row> box2dRow;
+        if (withBox2D)
+        {
+            box2dRow = RunSetting<Box2DEngine>(settingScene, setting, "box2d", seconds, *model);
+        }
         // The engines take turns to go first, so that neither always runs on a warm cache.
         for (int r = 0; r < runs; ++r)
         {
-            if ((n + r) % 2 == 0)
+            const bool meffFirst = (n + r) % 2 == 0;
+            if (meffFirst)
             {
                 TimeSetting<MeffEngine>(settingScene, seconds, meffRow);
-                TimeSetting<Box2DEngine>(settingScene, seconds, box2dRow);
             }
-            else
+            if (box2dRow)
             {
-                TimeSetting<Box2DEngine>(settingScene, seconds, box2dRow);
+                TimeSetting<Box2DEngine>(settingScene, seconds, *box2dRow);
+            }
+            if (!meffFirst)
+            {
                 TimeSetting<MeffEngine>(settingScene, seconds, meffRow);
             }
         }
-        for (Row* row : {&meffRow, &box2dRow})
+        std::vector<Row*> settingRows{&meffRow};
+        if (box2dRow)
+        {
+            settingRows.push_back(&*box2dRow);
+        }
+        for (Row* row : settingRows)
         {
             row->cost = Median(row->msPerSecond);
             row->cpuCost = Median(row->cpuMsPerSecond);
@@ -1167,16 +1239,31 @@ int RunSweep(const SweepOptions& options)
                              Describe(setting).c_str(), row->trace.failure.c_str());
             }
         }
-        std::printf("%-38s | %10.3g %10.3g | %10.3g %10.3g\n", Describe(setting).c_str(),
-                    cpu ? meffRow.cpuCost : meffRow.cost, meffRow.error,
-                    cpu ? box2dRow.cpuCost : box2dRow.cost, box2dRow.error);
+        std::printf("%-38s | %10.3g %10.3g | ", Describe(setting).c_str(),
+                    cpu ? meffRow.cpuCost : meffRow.cost, meffRow.error);
+        if (box2dRow)
+        {
+            std::printf("%10.3g %10.3g\n", cpu ? box2dRow->cpuCost : box2dRow->cost,
+                        box2dRow->error);
+        }
+        else
+        {
+            std::printf("%10s %10s\n", "-", "-");
+        }
         std::fflush(stdout);
         rows.push_back(std::move(meffRow));
-        rows.push_back(std::move(box2dRow));
+        if (box2dRow)
+        {
+            rows.push_back(std::move(*box2dRow));
+        }
     }
 
-    for (const char* engine : {"meff", "box2d"})
+    for (const char* engine : {"meff", "meff_colour", "meff_soft_step", "box2d"})
     {
+        if (ParetoFront(rows, engine, cpu).empty())
+        {
+            continue;
+        }
         std::printf("Pareto front, %s (cheapest first):\n", engine);
         for (const std::size_t r : ParetoFront(rows, engine, cpu))
         {
@@ -1219,7 +1306,9 @@ Command AddSweepCommand(CLI::App& parent)
         "sweep",
         "Measure what each solver setting costs and how accurate it is, in meff and in Box2D "
         "2.4.1, over a grid of velocity iterations, position iterations, time steps, block "
-        "solver and warm starting (see the README's \"Speed versus accuracy\").\n"
+        "solver and warm starting, with meff's colour back end and its soft step (substeps × "
+        "time step × joint stiffness) beside them (see the README's \"Speed versus "
+        "accuracy\").\n"
         "Writes DIR/sweep.csv, one row per engine and setting, and DIR/pareto.png (error "
         "against cost, if python3 with matplotlib is present).");
     app->add_option("scene", options->scenePath, "Scene file (JSON)")
