@@ -78,6 +78,19 @@ struct SoftJointState
     }
 };
 
+/// A line joint's (prismatic, wheel) slide axis and its perpendicular now: the axis fixed in A
+/// (frame.axis0 at the step's start) turned with A since.
+struct SlideAxes
+{
+    Vec2 axis, perp;
+};
+
+inline SlideAxes SlideAxesNow(const SoftJointState& state)
+{
+    const Vec2 axis = Mul(state.dA.dq, state.frame.axis0);
+    return {axis, Cross(Real(1), axis)};
+}
+
 // Per joint type (soft_<type>_joint.cpp): the type's part of the frame (anchors, centres and
 // masses are set already), its warm start, one update of its rows on its bodies `b`, and the
 // scaling of its accumulated impulses.

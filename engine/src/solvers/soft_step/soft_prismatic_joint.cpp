@@ -11,23 +11,6 @@
 namespace meff::detail
 {
 
-namespace
-{
-
-/// The slide axis and its perpendicular now (A turned them).
-struct Axes
-{
-    Vec2 axis, perp;
-};
-
-Axes AxesNow(const SoftJointState& state)
-{
-    const Vec2 axis = Mul(state.dA.dq, state.frame.axis0);
-    return {axis, Cross(Real(1), axis)};
-}
-
-} // namespace
-
 void PrepareSoft(PrismaticJoint& joint, SoftJointFrame& frame, const Position& poseA,
                  const Position& poseB, const SoftStepContext&)
 {
@@ -49,7 +32,7 @@ void PrepareSoft(PrismaticJoint& joint, SoftJointFrame& frame, const Position& p
 
 void WarmStartSoft(const PrismaticJoint& joint, const SoftJointState& state, RowBodies& b)
 {
-    const auto [axis, perp] = AxesNow(state);
+    const auto [axis, perp] = SlideAxesNow(state);
     const SoftAnchors& at = state.at;
     // The upper row's impulse acts with the opposite sign (its C is upper − translation).
     const Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
@@ -62,7 +45,7 @@ void SolveSoft(PrismaticJoint& joint, const SoftJointState& state, bool useBias,
 {
     const SoftStepContext& context = state.context;
     const SoftAnchors& at = state.at;
-    const auto [axis, perp] = AxesNow(state);
+    const auto [axis, perp] = SlideAxesNow(state);
     const RowJacobian axial = LineRow(axis, at.d, at.rA, at.rB);
     const Real axialMass = RowMass(InverseEffectiveMass(axial, b));
     if (joint.enableMotor)

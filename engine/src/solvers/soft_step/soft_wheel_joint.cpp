@@ -7,22 +7,6 @@
 namespace meff::detail
 {
 
-namespace
-{
-
-struct Axes
-{
-    Vec2 axis, perp;
-};
-
-Axes AxesNow(const SoftJointState& state)
-{
-    const Vec2 axis = Mul(state.dA.dq, state.frame.axis0);
-    return {axis, Cross(Real(1), axis)};
-}
-
-} // namespace
-
 void PrepareSoft(WheelJoint& joint, SoftJointFrame& frame, const Position& poseA,
                  const Position& poseB, const SoftStepContext& context)
 {
@@ -54,7 +38,7 @@ void PrepareSoft(WheelJoint& joint, SoftJointFrame& frame, const Position& poseA
 
 void WarmStartSoft(const WheelJoint& joint, const SoftJointState& state, RowBodies& b)
 {
-    const auto [axis, perp] = AxesNow(state);
+    const auto [axis, perp] = SlideAxesNow(state);
     const SoftAnchors& at = state.at;
     const Real axialImpulse = joint.springImpulse + joint.lowerImpulse - joint.upperImpulse;
     ApplyRowImpulse(LineRow(perp, at.d, at.rA, at.rB), joint.impulse, b);
@@ -66,7 +50,7 @@ void SolveSoft(WheelJoint& joint, const SoftJointState& state, bool useBias, Row
 {
     const SoftStepContext& context = state.context;
     const SoftAnchors& at = state.at;
-    const auto [axis, perp] = AxesNow(state);
+    const auto [axis, perp] = SlideAxesNow(state);
     const RowJacobian axial = LineRow(axis, at.d, at.rA, at.rB);
     const Real axialMass = RowMass(InverseEffectiveMass(axial, b));
     const Real translation = Dot(axis, at.d);
