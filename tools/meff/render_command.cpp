@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "output_file.h"
 #include "plot_program.h"
+#include "progress.h"
 
 #include "meff/box2d_mirror.h"
 #include "meff/render.h"
@@ -210,47 +211,6 @@ double LargestImpulse(const Scene& scene, int frames)
     return largest;
 }
 
-/// A progress bar on stderr, drawn only on a terminal (a log file would fill with \r lines).
-class Progress
-{
-  public:
-    Progress(std::string label, int total)
-        : m_label(std::move(label)), m_total(total), m_enabled(::isatty(STDERR_FILENO) == 1)
-    {
-    }
-    ~Progress() { Finish(); }
-
-    void Update(int done)
-    {
-        if (!m_enabled)
-        {
-            return;
-        }
-        constexpr int kWidth = 30;
-        const int filled = m_total > 0 ? int((long long)done * kWidth / m_total) : kWidth;
-        std::string bar(std::size_t(filled), '#');
-        bar.resize(kWidth, '.');
-        std::fprintf(stderr, "\r%s [%s] %d/%d frames", m_label.c_str(), bar.c_str(), done, m_total);
-        std::fflush(stderr);
-        m_shown = true;
-    }
-
-    void Finish()
-    {
-        if (m_shown)
-        {
-            std::fputc('\n', stderr);
-            m_shown = false;
-        }
-    }
-
-  private:
-    std::string m_label;
-    int m_total = 0;
-    bool m_enabled = false;
-    bool m_shown = false;
-};
-
 std::string FramePath(const std::filesystem::path& directory, int index)
 {
     char name[32];
@@ -429,7 +389,7 @@ int Run(const RenderOptions& options)
 
     const int count = frames / options.every + 1;
     const Real dt = Real(scene->world.dt);
-    Progress progress("rendering " + scene->name, count);
+    Progress progress("rendering " + scene->name, count, "frames");
     int written = 0;
     try
     {

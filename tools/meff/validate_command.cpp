@@ -1,13 +1,17 @@
 // `meff validate`: runs scenes in meff and in Box2D 2.4.1 side by side and compares them frame
 // by frame (see validation/include/meff/validation.h for what is compared and how).
 #include "commands.h"
+#include "junit.h"
 #include "output_file.h"
+#include "parallel.h"
 #include "plot_program.h"
+#include "progress.h"
 
 #include "meff/validation.h"
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -40,6 +44,9 @@ struct ValidateOptions
     std::string reportDir;
     std::string blockSolver = "scene";
     bool noPlot = false;
+    int jobs = 0; ///< 0: one per core
+    Shard shard;
+    std::string junitPath;
     std::optional<int> meffVelocityIterations; // hidden: proves the comparison can fail
 };
 
@@ -60,7 +67,8 @@ std::string FormatMaximum(const char* label, const char* unit, const RunMaximum&
     return text;
 }
 
-void PrintLine(const ValidationResult& result)
+/// The PASS/FAIL line of a scene and the lines under it, each ending in a newline.
+std::string ResultText(const ValidationResult& result)
 {
     std::string line = std::string(result.passed ? "PASS " : "FAIL ") + result.scene + ": " +
                        std::to_string(result.frames) + " frames, block solver " +
@@ -111,22 +119,85 @@ void PrintLine(const ValidationResult& result)
                     ? "; settled within " + Number(result.settle->position) + " m of Box2D"
                     : "; NOT settled";
     }
-    std::printf("%s\n", line.c_str());
+    std::string text = line + "\n";
     if (result.settle)
     {
         for (const std::string& failure : result.settle->failures)
         {
-            std::printf("  %s\n", failure.c_str());
+            text += "  " + failure + "\n";
         }
     }
     if (!result.failure.empty())
     {
-        std::printf("  %s\n", result.failure.c_str());
+        text += "  " + result.failure + "\n";
     }
     for (const std::string& note : result.notes)
     {
-        std::printf("  note: %s\n", note.c_str());
+        text += "  note: " + note + "\n";
     }
+    return text;
+}
+
+/// "position 0.00012 > 0.0001 at box3: meff (1, 2) m, Box2D (1, 2.0001) m"
+std::string DetailText(const validation::DivergenceDetail& detail)
+{
+    return detail.quantity + " " + Number(detail.error) + " > " + Number(detail.tolerance) +
+           " at " + detail.where + ": meff " + detail.meff + ", Box2D " + detail.box2d;
+}
+
+/// The scene as a JUnit test case: a failure carries the divergence frame, each quantity that
+/// exceeded, where, and both engines' values there.
+JUnitCase JUnitCaseOf(const ValidationResult& result, double seconds)
+{
+    JUnitCase testCase;
+    testCase.name = result.scene;
+    testCase.className = "meff.validate";
+    testCase.file = result.sourcePath;
+    testCase.seconds = seconds;
+    testCase.output = ResultText(result);
+    if (result.passed)
+    {
+        return testCase;
+    }
+    if (!result.failure.empty())
+    {
+        testCase.outcome = JUnitCase::Outcome::Error;
+        testCase.type = "simulation";
+        testCase.message = result.failure;
+        testCase.text = result.failure;
+        return testCase;
+    }
+    testCase.outcome = JUnitCase::Outcome::Failed;
+    if (result.divergenceFrame &&
+        (!result.chaotic || *result.divergenceFrame <= result.horizonFrames))
+    {
+        testCase.type = "divergence";
+        std::string what;
+        for (const std::string& quantity : result.divergenceQuantities)
+        {
+            what += (what.empty() ? "" : ", ") + quantity;
+        }
+        testCase.message =
+            "diverged from Box2D at frame " + std::to_string(*result.divergenceFrame) + ": " + what;
+        for (const validation::DivergenceDetail& detail : result.divergenceDetails)
+        {
+            testCase.text += "frame " + std::to_string(*result.divergenceFrame) + ": " +
+                             DetailText(detail) + "\n";
+        }
+    }
+    else
+    {
+        testCase.type = "settle";
+        testCase.message = "not settled where Box2D settled";
+    }
+    if (result.settle)
+    {
+        for (const std::string& failure : result.settle->failures)
+        {
+            testCase.text += failure + "\n";
+        }
+    }
+    return testCase;
 }
 
 nlohmann::json MaximumJson(const RunMaximum& maximum)
@@ -146,6 +217,17 @@ nlohmann::json SummaryJson(const ValidationResult& result)
     summary["divergence_frame"] =
         result.divergenceFrame ? nlohmann::json(*result.divergenceFrame) : nlohmann::json();
     summary["divergence_quantities"] = result.divergenceQuantities;
+    nlohmann::json details = nlohmann::json::array();
+    for (const validation::DivergenceDetail& detail : result.divergenceDetails)
+    {
+        details.push_back({{"quantity", detail.quantity},
+                           {"where", detail.where},
+                           {"meff", detail.meff},
+                           {"box2d", detail.box2d},
+                           {"error", detail.error},
+                           {"tolerance", detail.tolerance}});
+    }
+    summary["divergence"] = details;
     summary["max_position_error"] = result.position.value;
     summary["max_angle_error"] = result.angle.value;
     summary["max_velocity_error"] = result.velocity.value;
@@ -260,14 +342,28 @@ std::string DirectoryName(const std::string& sceneName, std::set<std::string>& u
 class Reporter
 {
   public:
-    Reporter(std::string directory, bool plot) : m_directory(std::move(directory)), m_plot(plot) {}
-
-    /// Writes summary.json, divergence.csv and errors.png; throws std::runtime_error when a
-    /// file cannot be written. A plot that cannot be drawn is said, not fatal.
-    void Write(const Scene& scene, const ValidationResult& result)
+    /// Looks for python3 with matplotlib once, before any thread writes.
+    Reporter(std::string directory, bool plot) : m_directory(std::move(directory))
     {
-        const std::filesystem::path directory =
-            std::filesystem::path(m_directory) / DirectoryName(result.scene, m_used);
+        if (plot)
+        {
+            m_python = FindPlottingPython();
+            if (m_python.empty())
+            {
+                std::fprintf(stderr, "meff validate: no plots: no python3 with matplotlib found "
+                                     "(install python3-matplotlib, or set MEFF_PYTHON); "
+                                     "summary.json and divergence.csv are written\n");
+            }
+        }
+    }
+
+    /// Writes DIRECTORY/summary.json, divergence.csv and errors.png; throws
+    /// std::runtime_error when a file cannot be written. A plot that cannot be drawn is said,
+    /// not fatal. Several threads may write at once, each to its own scene's folder.
+    void Write(const Scene& scene, const ValidationResult& result,
+               const std::string& directoryName) const
+    {
+        const std::filesystem::path directory = std::filesystem::path(m_directory) / directoryName;
         std::error_code error;
         std::filesystem::create_directories(directory, error);
         if (error)
@@ -283,7 +379,7 @@ class Reporter
         summary.Commit();
         csv.Commit();
         // A plot left from an earlier run would no longer match divergence.csv.
-        if (!m_plot || !Plot(result, directory, csv.Path()))
+        if (m_python.empty() || !Plot(result, directory, csv.Path()))
         {
             std::filesystem::remove(directory / "errors.png", error);
         }
@@ -292,20 +388,10 @@ class Reporter
   private:
     /// Draws errors.png; false when it could not be drawn.
     bool Plot(const ValidationResult& result, const std::filesystem::path& directory,
-              const std::string& csvPath)
+              const std::string& csvPath) const
     {
-        if (!m_python)
-        {
-            m_python = FindPlottingPython();
-            if (m_python->empty())
-            {
-                std::fprintf(stderr, "meff validate: no plots: no python3 with matplotlib found "
-                                     "(install python3-matplotlib, or set MEFF_PYTHON); "
-                                     "summary.json and divergence.csv are written\n");
-            }
-        }
         const std::string script = MEFF_PLOT_SCRIPT;
-        if (m_python->empty() || script.empty())
+        if (script.empty())
         {
             return false;
         }
@@ -313,7 +399,7 @@ class Reporter
         const std::filesystem::path temporary =
             directory / (".errors.png." + std::to_string(getpid()));
         const validation::Tolerances& tol = result.tolerances;
-        std::vector<std::string> arguments = {*m_python,
+        std::vector<std::string> arguments = {m_python,
                                               script,
                                               csvPath,
                                               temporary.string(),
@@ -359,9 +445,7 @@ class Reporter
     }
 
     std::string m_directory;
-    bool m_plot;
-    std::set<std::string> m_used;
-    std::optional<std::string> m_python;
+    std::string m_python; ///< empty: no plots
 };
 
 /// Creates `directory` if needed and proves a file can be written in it (a trial file,
@@ -388,15 +472,16 @@ bool CanWriteInto(const std::string& directory)
     return true;
 }
 
-int Validate(const ValidateOptions& options)
+/// Loads the scenes and builds each once: bad input (a file that does not load, or a scene the
+/// engine refuses) is reported before anything runs, and then nothing runs.
+std::optional<std::vector<Scene>> LoadScenes(const std::vector<std::string>& paths)
 {
-    // Every scene is loaded before anything runs: bad input runs nothing.
     std::vector<Scene> scenes;
     bool bad = false;
-    for (const std::string& path : options.scenePaths)
+    for (const std::string& path : paths)
     {
         std::optional<Scene> scene = LoadSceneOrReport(path);
-        if (scene)
+        if (scene && BuildWorldOrReport(*scene))
         {
             scenes.push_back(std::move(*scene));
         }
@@ -406,6 +491,46 @@ int Validate(const ValidateOptions& options)
         }
     }
     if (bad)
+    {
+        return std::nullopt;
+    }
+    return scenes;
+}
+
+/// One scene's outcome, kept until its turn to be printed comes.
+struct SceneOutcome
+{
+    ValidationResult result; ///< without perFrame, once the report is written
+    double seconds = 0;
+    std::string reportError;              ///< the report could not be written: why
+    std::vector<std::string> sceneErrors; ///< the engine refused the scene
+};
+
+void WriteJUnit(const ValidateOptions& options, const std::vector<JUnitCase>& cases, double seconds)
+{
+    std::string suite = "meff validate";
+    if (options.shard.count > 1)
+    {
+        suite += " (shard " + std::to_string(options.shard.index) + "/" +
+                 std::to_string(options.shard.count) + ")";
+    }
+    OutputFile file(options.junitPath);
+    const std::string xml = JUnitDocument(suite, cases, seconds);
+    std::fputs(xml.c_str(), file.Stream());
+    file.Commit();
+}
+
+int Validate(const ValidateOptions& options)
+{
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> paths;
+    for (const std::size_t index : ShardOf(options.scenePaths, options.shard))
+    {
+        paths.push_back(options.scenePaths[index]);
+    }
+    // Every scene is loaded and built before anything runs: bad input runs nothing.
+    const std::optional<std::vector<Scene>> scenes = LoadScenes(paths);
+    if (!scenes)
     {
         return kExitBadInput;
     }
@@ -419,6 +544,7 @@ int Validate(const ValidateOptions& options)
     }
 
     std::optional<Reporter> reporter;
+    std::vector<std::string> directories;
     if (!options.reportDir.empty())
     {
         // A report folder that cannot be written is bad input, said before anything runs.
@@ -427,37 +553,92 @@ int Validate(const ValidateOptions& options)
             return kExitBadInput;
         }
         reporter.emplace(options.reportDir, !options.noPlot);
+        // Named in input order, whatever order the threads finish in.
+        std::set<std::string> used;
+        for (const Scene& scene : *scenes)
+        {
+            directories.push_back(DirectoryName(scene.name, used));
+        }
     }
+
+    std::vector<SceneOutcome> outcomes(scenes->size());
+    std::vector<JUnitCase> cases;
     bool allPassed = true;
     bool writeFailed = false;
-    for (const Scene& scene : scenes)
+    bool refused = false;
+    Progress progress("validate", int(scenes->size()), "scenes");
+    const auto work = [&](std::size_t i)
     {
-        ValidationResult result;
+        const auto sceneStart = std::chrono::steady_clock::now();
+        SceneOutcome& outcome = outcomes[i];
         try
         {
-            result = validation::Validate(scene, run);
+            outcome.result = validation::Validate((*scenes)[i], run);
         }
         catch (const SceneError& error)
         {
-            for (const std::string& message : error.messages())
-            {
-                std::fprintf(stderr, "%s\n", message.c_str());
-            }
-            return kExitBadInput;
+            outcome.sceneErrors = error.messages();
+            return;
         }
-        PrintLine(result);
-        allPassed = allPassed && result.passed;
         if (reporter)
         {
             try
             {
-                reporter->Write(scene, result);
+                reporter->Write((*scenes)[i], outcome.result, directories[i]);
             }
             catch (const std::runtime_error& error)
             {
-                std::fprintf(stderr, "meff validate: %s\n", error.what());
-                writeFailed = true;
+                outcome.reportError = error.what();
             }
+        }
+        outcome.result.perFrame = {}; // written: no need to hold every frame until the end
+        outcome.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - sceneStart).count();
+    };
+    const auto finish = [&](std::size_t i)
+    {
+        const SceneOutcome& outcome = outcomes[i];
+        progress.Clear();
+        if (refused || !outcome.sceneErrors.empty())
+        {
+            // Checked before the run, so not expected; said as bad input all the same.
+            for (const std::string& message : outcome.sceneErrors)
+            {
+                std::fprintf(stderr, "%s\n", message.c_str());
+            }
+            refused = true;
+            return;
+        }
+        std::fputs(ResultText(outcome.result).c_str(), stdout);
+        std::fflush(stdout);
+        if (!outcome.reportError.empty())
+        {
+            std::fprintf(stderr, "meff validate: %s\n", outcome.reportError.c_str());
+            writeFailed = true;
+        }
+        allPassed = allPassed && outcome.result.passed;
+        cases.push_back(JUnitCaseOf(outcome.result, outcome.seconds));
+        outcomes[i] = {}; // printed: keep only the JUnit case
+        progress.Update(int(i + 1));
+    };
+    RunInOrder(scenes->size(), ResolveJobs(options.jobs), work, finish);
+    progress.Finish();
+    if (refused)
+    {
+        return kExitBadInput;
+    }
+    if (!options.junitPath.empty())
+    {
+        try
+        {
+            WriteJUnit(
+                options, cases,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        catch (const std::runtime_error& error)
+        {
+            std::fprintf(stderr, "meff validate: %s\n", error.what());
+            writeFailed = true;
         }
     }
     if (reporter && !writeFailed)
@@ -494,6 +675,13 @@ Command AddValidateCommand(CLI::App& parent)
                     "the scene says (default)")
         ->check(CLI::IsMember({"on", "off", "scene"}));
     app->add_flag("--no-plot", options->noPlot, "Skip the PNG plots");
+    AddJobsOption(app, options->jobs, "Validate scenes");
+    AddShardOption(app, options->shard, "scenes");
+    app->add_option("--junit", options->junitPath,
+                    "Also write JUnit XML: one test case per scene; a failure gives the "
+                    "divergence frame, each quantity that exceeded its tolerance, the body, "
+                    "contact point or joint, and both engines' values there")
+        ->type_name("FILE.xml");
     // Hidden: makes meff differ from Box2D on purpose, to show that validation can fail.
     app->add_option("--meff-velocity-iterations", options->meffVelocityIterations,
                     "meff's velocity iterations (Box2D keeps the scene's)")

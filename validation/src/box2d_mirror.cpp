@@ -4,6 +4,8 @@
 // then the joints in file order.
 #include "meff/box2d_mirror.h"
 
+#include <condition_variable>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 
@@ -266,17 +268,66 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
     throw std::invalid_argument("unknown joint type");
 }
 
-/// Restores g_blockSolve when a step ends, however it ends.
+/// Box2D's block-solver switch is one global for the whole process, so mirrors stepping on
+/// several threads (`meff validate --jobs N`) may step together only while they want the same
+/// value. A step waits until no step with the other value runs; when both values wait, the
+/// one that came second goes next (a step entering with the running value does not jump a
+/// waiting one), so neither starves. The value found before the first step is put back when
+/// the last one ends, as the single-threaded scope did.
+class BlockSolveGate
+{
+  public:
+    void Enter(bool value)
+    {
+        std::unique_lock lock(m_mutex);
+        ++m_waiting[value];
+        m_changed.wait(lock, [&]
+                       { return m_active == 0 || (m_current == value && m_waiting[!value] == 0); });
+        --m_waiting[value];
+        if (m_active == 0)
+        {
+            m_saved = g_blockSolve;
+        }
+        m_current = value;
+        g_blockSolve = value;
+        ++m_active;
+    }
+
+    void Leave()
+    {
+        {
+            const std::lock_guard lock(m_mutex);
+            if (--m_active == 0)
+            {
+                g_blockSolve = m_saved;
+            }
+        }
+        m_changed.notify_all();
+    }
+
+  private:
+    std::mutex m_mutex;
+    std::condition_variable m_changed;
+    int m_active = 0;      ///< steps running with m_current
+    int m_waiting[2] = {}; ///< steps waiting, by value
+    bool m_current = true;
+    bool m_saved = true;
+};
+
+BlockSolveGate& TheBlockSolveGate()
+{
+    static BlockSolveGate gate;
+    return gate;
+}
+
+/// Holds g_blockSolve at `value` for one step, however the step ends.
 class BlockSolveScope
 {
   public:
-    explicit BlockSolveScope(bool value) : m_saved(g_blockSolve) { g_blockSolve = value; }
-    ~BlockSolveScope() { g_blockSolve = m_saved; }
+    explicit BlockSolveScope(bool value) { TheBlockSolveGate().Enter(value); }
+    ~BlockSolveScope() { TheBlockSolveGate().Leave(); }
     BlockSolveScope(const BlockSolveScope&) = delete;
     BlockSolveScope& operator=(const BlockSolveScope&) = delete;
-
-  private:
-    bool m_saved;
 };
 
 } // namespace
@@ -372,6 +423,7 @@ Box2DMirror::~Box2DMirror()
 void Box2DMirror::Step()
 {
     m_listener->Clear();
+    ++m_steps;
     const BlockSolveScope scope(m_blockSolve);
     m_world->Step(m_dt, m_scene.world.solver.velocityIterations,
                   m_scene.world.solver.positionIterations);
@@ -409,6 +461,14 @@ FrameSample Box2DMirror::Sample() const
     sample.joints.reserve(m_joints.size());
     for (const b2Joint* joint : m_joints)
     {
+        if (m_steps == 0)
+        {
+            // No step, no impulse. Box2D's reaction would read directions its first step has
+            // not computed yet (a distance joint's m_u is uninitialized memory until then:
+            // 0 × garbage made frame 0 fail at random with a NaN reaction).
+            sample.joints.push_back({0, 0, 0});
+            continue;
+        }
         const b2Vec2 force = joint->GetReactionForce(invDt);
         sample.joints.push_back({force.x, force.y, joint->GetReactionTorque(invDt)});
     }

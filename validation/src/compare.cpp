@@ -223,6 +223,11 @@ FrameErrors CompareFrames(const FrameSample& meff, const FrameSample& box2d, dou
     return errors;
 }
 
+bool SameContactPoint(const ContactKey& a, const ContactKey& b)
+{
+    return MatchKeyOf(a) == MatchKeyOf(b);
+}
+
 std::string DescribeBody(const Scene& scene, int body)
 {
     if (body < 0 || static_cast<std::size_t>(body) >= scene.bodies.size())

@@ -310,6 +310,8 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
         {
             result.divergenceFrame = frame;
             result.divergenceQuantities = errors.exceeded;
+            result.divergenceDetails =
+                DescribeDivergence(scene, errors, meffFrame, box2dFrame, dt, result.tolerances);
         }
         result.perFrame.push_back(std::move(errors));
     };

@@ -28,7 +28,8 @@ class Box2DMirror
     Box2DMirror& operator=(const Box2DMirror&) = delete;
 
     /// One b2World::Step with the scene's dt and iteration counts. Box2D's block-solver switch
-    /// is a process-wide global: it is set for the step and restored afterwards.
+    /// is a process-wide global: it is set for the step and restored afterwards, and mirrors
+    /// on other threads step at the same time only while they want the same value.
     void Step();
     /// The state after the last step: bodies, PostSolve impulses, joint reactions.
     FrameSample Sample() const;
@@ -43,6 +44,7 @@ class Box2DMirror
     const Scene& m_scene;
     float m_dt = 0;
     bool m_blockSolve = true;
+    long long m_steps = 0; ///< steps taken
     std::unique_ptr<b2World> m_world;
     std::unique_ptr<Listener> m_listener;
     std::vector<b2Body*> m_bodies;

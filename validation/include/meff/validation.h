@@ -130,6 +130,25 @@ struct FrameErrors
 FrameErrors CompareFrames(const FrameSample& meff, const FrameSample& box2d, double dt,
                           const Tolerances& tolerances, int frame = 0);
 
+/// One quantity that exceeded its tolerance at the divergence frame, with both engines' values
+/// there: what a CI report shows about a failed scene.
+struct DivergenceDetail
+{
+    /// "position", "angle", "velocity", "contact_impulse", "joint_impulse" or "awake".
+    std::string quantity;
+    std::string where; ///< the body, contact point or joint (DescribeBody/Contact/Joint)
+    std::string meff;  ///< meff's value with its unit, e.g. "(1.25, 0.5) m"
+    std::string box2d; ///< Box2D's value, the same way
+    double error = 0;  ///< the difference compared (the tolerance's unit; awake: 1)
+    /// The allowance it exceeded (impulses: the larger of the absolute and relative ones).
+    double tolerance = 0;
+};
+
+/// Describes each quantity `errors` says exceeded, from the two engines' samples of that frame.
+std::vector<DivergenceDetail> DescribeDivergence(const Scene& scene, const FrameErrors& errors,
+                                                 const FrameSample& meff, const FrameSample& box2d,
+                                                 double dt, const Tolerances& tolerances);
+
 /// What may differ from the scene for one run.
 struct RunOptions
 {
@@ -175,7 +194,8 @@ struct ValidationResult
 
     std::vector<FrameErrors> perFrame; ///< frames 0..frames (0 is the initial state)
     std::optional<int> divergenceFrame;
-    std::vector<std::string> divergenceQuantities; ///< what exceeded at the divergence frame
+    std::vector<std::string> divergenceQuantities;   ///< what exceeded at the divergence frame
+    std::vector<DivergenceDetail> divergenceDetails; ///< the same, with both engines' values
 
     RunMaximum position;
     RunMaximum angle;
@@ -201,6 +221,9 @@ struct ValidationResult
 /// Builds both worlds from the scene, steps them in lockstep and compares every frame.
 /// Throws SceneError when the scene cannot be built.
 ValidationResult Validate(const Scene& scene, const RunOptions& options = {});
+
+/// The same point in both engines: the same unordered pair of shapes and the same feature key.
+bool SameContactPoint(const ContactKey& a, const ContactKey& b);
 
 /// "ball" for a body; "ball[1]/ground[0] key 0x10003" for a contact point.
 std::string DescribeBody(const Scene& scene, int body);
