@@ -2,6 +2,8 @@
 #include "engine_shapes.h"
 #include "meff/scene.h"
 
+#include "joint_frame.h"
+
 #include "meff/collision.h"
 
 #include <string>
@@ -88,11 +90,18 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     World& world = built.world;
     const BodyId bodyA = built.bodies.at(joint.bodyIndexA);
     const BodyId bodyB = built.bodies.at(joint.bodyIndexB);
+    const scene_detail::JointFrame frame =
+        scene_detail::ComputeJointFrame(world, bodyA, bodyB, joint);
     switch (joint.type)
     {
     case JointType::Revolute:
     {
-        RevoluteJointDef def = world.MakeRevoluteJointDef(bodyA, bodyB, ToEngine(joint.anchor));
+        RevoluteJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.localAnchorA = frame.localAnchorA;
+        def.localAnchorB = frame.localAnchorB;
+        def.referenceAngle = frame.referenceAngle;
         def.enableLimit = joint.enableLimit;
         def.lowerAngle = Real(joint.lowerAngle);
         def.upperAngle = Real(joint.upperAngle);
@@ -104,8 +113,13 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     }
     case JointType::Prismatic:
     {
-        PrismaticJointDef def =
-            world.MakePrismaticJointDef(bodyA, bodyB, ToEngine(joint.anchor), ToEngine(joint.axis));
+        PrismaticJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.localAnchorA = frame.localAnchorA;
+        def.localAnchorB = frame.localAnchorB;
+        def.localAxisA = frame.localAxisA;
+        def.referenceAngle = frame.referenceAngle;
         def.enableLimit = joint.enableLimit;
         def.lowerTranslation = Real(joint.lowerTranslation);
         def.upperTranslation = Real(joint.upperTranslation);
@@ -117,8 +131,12 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     }
     case JointType::Wheel:
     {
-        WheelJointDef def =
-            world.MakeWheelJointDef(bodyA, bodyB, ToEngine(joint.anchor), ToEngine(joint.axis));
+        WheelJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.localAnchorA = frame.localAnchorA;
+        def.localAnchorB = frame.localAnchorB;
+        def.localAxisA = frame.localAxisA;
         def.enableLimit = joint.enableLimit;
         def.lowerTranslation = Real(joint.lowerTranslation);
         def.upperTranslation = Real(joint.upperTranslation);
@@ -132,8 +150,11 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     }
     case JointType::Distance:
     {
-        DistanceJointDef def = world.MakeDistanceJointDef(bodyA, bodyB, ToEngine(joint.anchorA),
-                                                          ToEngine(joint.anchorB));
+        DistanceJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.localAnchorA = frame.localAnchorA;
+        def.localAnchorB = frame.localAnchorB;
         def.length = Real(joint.length);
         def.minLength = Real(joint.minLength);
         def.maxLength = Real(joint.maxLength);
@@ -144,7 +165,12 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     }
     case JointType::Weld:
     {
-        WeldJointDef def = world.MakeWeldJointDef(bodyA, bodyB, ToEngine(joint.anchor));
+        WeldJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.localAnchorA = frame.localAnchorA;
+        def.localAnchorB = frame.localAnchorB;
+        def.referenceAngle = frame.referenceAngle;
         def.hertz = Real(joint.stiffnessHz);
         def.dampingRatio = Real(joint.dampingRatio);
         def.collideConnected = joint.collideConnected;
@@ -153,14 +179,8 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     case JointType::Motor:
     {
         MotorJointDef def = world.MakeMotorJointDef(bodyA, bodyB);
-        if (joint.linearOffset)
-        {
-            def.linearOffset = ToEngine(*joint.linearOffset);
-        }
-        if (joint.angularOffset)
-        {
-            def.angularOffset = Real(*joint.angularOffset);
-        }
+        def.linearOffset = frame.linearOffset;
+        def.angularOffset = frame.angularOffset;
         def.maxForce = Real(joint.maxForce);
         def.maxTorque = Real(joint.maxTorque);
         def.correctionFactor = Real(joint.correctionFactor);

@@ -108,6 +108,13 @@ class ObjectReader
     std::vector<std::string> m_known;
 };
 
+/// The whole file; throws SceneError ("FILE: cannot open: REASON", "FILE: is a directory, ...").
+std::string ReadTextFile(const std::string& path);
+
+/// Reads and checks a parsed scene document (what ParseScene does after parsing); throws
+/// SceneError. The b2dJson importer gives it the scene it converted a level to.
+Scene ReadSceneDocument(const Json& document, const std::string& sourcePath);
+
 // Range checks: each reports through reader.Fail and returns whether the value passed.
 bool CheckPositive(ObjectReader& reader, std::string_view key, double value);
 bool CheckNonNegative(ObjectReader& reader, std::string_view key, double value);

@@ -536,9 +536,59 @@ void ReadBody(ObjectReader& reader, SceneBody& body)
     }
 }
 
+/// True when the joint gives its anchors in the bodies' frames (`local_anchor_a` and
+/// `local_anchor_b`, b2dJson's form); then reads them and refuses the world-point keys.
+bool ReadLocalAnchors(ObjectReader& reader, SceneJoint& joint,
+                      std::initializer_list<const char*> worldKeys)
+{
+    if (reader.Find("local_anchor_a") == nullptr && reader.Find("local_anchor_b") == nullptr)
+    {
+        return false;
+    }
+    joint.localAnchors = true;
+    Assign(joint.localAnchorA, reader.Vector("local_anchor_a", std::nullopt));
+    Assign(joint.localAnchorB, reader.Vector("local_anchor_b", std::nullopt));
+    for (const char* key : worldKeys)
+    {
+        if (reader.Find(key) != nullptr)
+        {
+            reader.Fail(key, "give the anchors either as world points or as local_anchor_a and "
+                             "local_anchor_b, not both");
+        }
+    }
+    return true;
+}
+
+/// `anchor` (a world point) or the two local anchors.
+void ReadAnchor(ObjectReader& reader, SceneJoint& joint)
+{
+    if (!ReadLocalAnchors(reader, joint, {"anchor"}))
+    {
+        Assign(joint.anchor, reader.Vector("anchor", std::nullopt));
+    }
+}
+
+void ReadReferenceAngle(ObjectReader& reader, SceneJoint& joint)
+{
+    if (reader.Find("reference_angle") != nullptr)
+    {
+        joint.referenceAngle = reader.Number("reference_angle", std::nullopt);
+    }
+}
+
+/// A world point of a body given in its own frame, in double from the file's numbers.
+SceneVec2 WorldPoint(const SceneBody& body, SceneVec2 local)
+{
+    const double c = std::cos(body.angle);
+    const double s = std::sin(body.angle);
+    return {body.position.x + c * local.x - s * local.y,
+            body.position.y + s * local.x + c * local.y};
+}
+
 void ReadRevoluteFields(ObjectReader& reader, SceneJoint& joint)
 {
-    Assign(joint.anchor, reader.Vector("anchor", std::nullopt));
+    ReadAnchor(reader, joint);
+    ReadReferenceAngle(reader, joint);
     const SceneJoint defaults;
     Assign(joint.enableLimit, reader.Boolean("enable_limit", defaults.enableLimit));
     const std::optional<double> lower = reader.Number("lower_angle", defaults.lowerAngle);
@@ -556,12 +606,27 @@ void ReadRevoluteFields(ObjectReader& reader, SceneJoint& joint)
            ReadNonNegative(reader, "max_motor_torque", defaults.maxMotorTorque));
 }
 
-void ReadDistanceFields(ObjectReader& reader, SceneJoint& joint)
+void ReadDistanceFields(ObjectReader& reader, const Scene& scene, SceneJoint& joint)
 {
-    const std::optional<SceneVec2> anchorA = reader.Vector("anchor_a", std::nullopt);
-    const std::optional<SceneVec2> anchorB = reader.Vector("anchor_b", std::nullopt);
-    Assign(joint.anchorA, anchorA);
-    Assign(joint.anchorB, anchorB);
+    std::optional<SceneVec2> anchorA;
+    std::optional<SceneVec2> anchorB;
+    if (ReadLocalAnchors(reader, joint, {"anchor_a", "anchor_b"}))
+    {
+        // The world points where the bodies are placed, for the default length.
+        if (joint.bodyIndexA < scene.bodies.size() && joint.bodyIndexB < scene.bodies.size() &&
+            reader.Find("local_anchor_a") != nullptr && reader.Find("local_anchor_b") != nullptr)
+        {
+            anchorA = WorldPoint(scene.bodies[joint.bodyIndexA], joint.localAnchorA);
+            anchorB = WorldPoint(scene.bodies[joint.bodyIndexB], joint.localAnchorB);
+        }
+    }
+    else
+    {
+        anchorA = reader.Vector("anchor_a", std::nullopt);
+        anchorB = reader.Vector("anchor_b", std::nullopt);
+        Assign(joint.anchorA, anchorA);
+        Assign(joint.anchorB, anchorB);
+    }
     // Computed in double from the file's numbers, so meff and the Box2D mirror both start
     // from this one value instead of each measuring in its own precision.
     std::optional<double> length;
@@ -601,11 +666,22 @@ void ReadDistanceFields(ObjectReader& reader, SceneJoint& joint)
 /// translation limits.
 void ReadSlideFields(ObjectReader& reader, SceneJoint& joint)
 {
-    Assign(joint.anchor, reader.Vector("anchor", std::nullopt));
-    const std::optional<SceneVec2> axis = reader.Vector("axis", std::nullopt);
+    ReadAnchor(reader, joint);
+    // The axis as a world direction, or in body A's frame (b2dJson's form).
+    const bool local = reader.Find("local_axis_a") != nullptr;
+    const char* axisKey = local ? "local_axis_a" : "axis";
+    if (local && reader.Find("axis") != nullptr)
+    {
+        reader.Fail("axis", "give either axis or local_axis_a, not both");
+    }
+    const std::optional<SceneVec2> axis = reader.Vector(axisKey, std::nullopt);
     if (axis && axis->x == 0 && axis->y == 0)
     {
-        reader.Fail("axis", "must not be [0, 0] (it is the direction the joint slides along)");
+        reader.Fail(axisKey, "must not be [0, 0] (it is the direction the joint slides along)");
+    }
+    else if (local)
+    {
+        joint.localAxisA = axis;
     }
     else
     {
@@ -631,6 +707,7 @@ void ReadSlideFields(ObjectReader& reader, SceneJoint& joint)
 void ReadPrismaticFields(ObjectReader& reader, SceneJoint& joint)
 {
     ReadSlideFields(reader, joint);
+    ReadReferenceAngle(reader, joint);
     Assign(joint.maxMotorForce, ReadNonNegative(reader, "max_motor_force", 0.0));
 }
 
@@ -644,7 +721,8 @@ void ReadWheelFields(ObjectReader& reader, SceneJoint& joint)
 
 void ReadWeldFields(ObjectReader& reader, SceneJoint& joint)
 {
-    Assign(joint.anchor, reader.Vector("anchor", std::nullopt));
+    ReadAnchor(reader, joint);
+    ReadReferenceAngle(reader, joint);
     Assign(joint.stiffnessHz, ReadNonNegative(reader, "stiffness_hz", 0.0));
     Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", 0.0));
 }
@@ -754,7 +832,7 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
         ReadRevoluteFields(reader, joint);
         break;
     case JointType::Distance:
-        ReadDistanceFields(reader, joint);
+        ReadDistanceFields(reader, scene, joint);
         break;
     case JointType::Prismatic:
         ReadPrismaticFields(reader, joint);
@@ -1144,6 +1222,22 @@ std::optional<std::size_t> Scene::FindJoint(std::string_view jointName) const
     return std::nullopt;
 }
 
+namespace scene_detail
+{
+
+Scene ReadSceneDocument(const Json& document, const std::string& sourcePath)
+{
+    Diagnostics diagnostics(sourcePath);
+    Scene scene = ReadScene(document, sourcePath, diagnostics);
+    if (diagnostics.HasErrors())
+    {
+        diagnostics.Throw();
+    }
+    return scene;
+}
+
+} // namespace scene_detail
+
 Scene ParseScene(std::string_view text, const std::string& sourcePath)
 {
     Diagnostics diagnostics(sourcePath);
@@ -1161,7 +1255,10 @@ Scene ParseScene(std::string_view text, const std::string& sourcePath)
     return scene;
 }
 
-Scene LoadScene(const std::string& path)
+namespace scene_detail
+{
+
+std::string ReadTextFile(const std::string& path)
 {
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
@@ -1195,7 +1292,14 @@ Scene LoadScene(const std::string& path)
         throw SceneError({path + ": larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
                           " MiB: not a scene file"});
     }
-    return ParseScene(text, path);
+    return text;
+}
+
+} // namespace scene_detail
+
+Scene LoadScene(const std::string& path)
+{
+    return ParseScene(scene_detail::ReadTextFile(path), path);
 }
 
 } // namespace meff

@@ -276,6 +276,7 @@ Command AddBenchCommand(CLI::App& parent)
     app->add_option("scenes", options->scenePaths, "Scene files (JSON)")
         ->required()
         ->check(CLI::ExistingFile);
+    AddFormatOption(app);
     app->add_option("--steps", options->steps, "Steps per run (default: the scene's frames)")
         ->check(CLI::Range(2, 1000000));
     app->add_option("--runs", options->runs, "Runs per engine and scene (default 5)")

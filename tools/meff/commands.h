@@ -2,6 +2,7 @@
 // top-level CLI11 app; main() runs the one the user chose.
 #pragma once
 
+#include "meff/b2djson.h"
 #include "meff/scene.h"
 
 #include <CLI/CLI.hpp>
@@ -51,7 +52,18 @@ Command AddSweepCommand(CLI::App& parent);
 /// (world.solver); `kind` stays empty when the option is not given.
 CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind);
 
-/// Loads a scene; on failure prints every problem to stderr, one per line, and returns nullopt.
+/// `meff import LEVEL.json -o SCENE.json`: a b2dJson level as a meff scene file
+Command AddImportCommand(CLI::App& parent);
+
+/// `meff export SCENE.json -o LEVEL.json [--hex-floats]`: a scene as a b2dJson level
+Command AddExportCommand(CLI::App& parent);
+
+/// Adds `--format auto|meff|b2djson` to a subcommand: how LoadSceneOrReport reads files.
+void AddFormatOption(CLI::App* app);
+
+/// Loads a scene in either format (see AddFormatOption); prints what a b2dJson level loses
+/// (one warning line each) to stderr. On failure prints every problem to stderr, one per line,
+/// and returns nullopt.
 std::optional<Scene> LoadSceneOrReport(const std::string& path);
 
 /// Builds a loaded scene's world; on failure prints every problem to stderr, one per line, and

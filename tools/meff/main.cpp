@@ -12,8 +12,8 @@ int main(int argc, char** argv)
     using namespace meff::cli;
 
     CLI::App app{"meff: a 2D rigid-body physics engine.\n"
-                 "Scenes are JSON files (see docs/scene-format.md); samples are in "
-                 "samples/scenes/.\n"
+                 "Scenes are JSON files (see docs/scene-format.md), or b2dJson levels "
+                 "(R.U.B.E.'s export, docs/b2djson.md); samples are in samples/scenes/.\n"
                  "Three solver back ends, chosen by a scene's world.solver or --solver: box2d (the "
                  "default: Box2D 2.4.1's step, bit for bit), colour (the same rows solved by graph "
                  "colour in SIMD lanes: fastest), soft_step (sub-stepped soft constraints: far "
@@ -25,8 +25,8 @@ int main(int argc, char** argv)
                "Run `meff COMMAND --help` for the options of a command.");
 
     const std::vector<Command> commands = {
-        AddRunCommand(app),   AddValidateCommand(app), AddRenderCommand(app),
-        AddBenchCommand(app), AddSweepCommand(app),
+        AddRunCommand(app),   AddValidateCommand(app), AddRenderCommand(app), AddBenchCommand(app),
+        AddSweepCommand(app), AddImportCommand(app),   AddExportCommand(app),
     };
 
     try

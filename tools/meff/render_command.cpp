@@ -467,6 +467,7 @@ Command AddRenderCommand(CLI::App& parent)
     app->add_option("scene", options->scenePath, "Scene file (JSON; see docs/scene-format.md)")
         ->required()
         ->type_name("SCENE.json");
+    AddFormatOption(app);
     app->add_option("--out", options->outDirectory, "Directory for the frames (created if missing)")
         ->required()
         ->type_name("DIR");

@@ -304,16 +304,42 @@ CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind)
         ->transform(CLI::CheckedTransformer(names));
 }
 
+namespace
+{
+/// --format of the subcommand that runs (one per process).
+SceneFormat g_sceneFormat = SceneFormat::Auto;
+} // namespace
+
+void AddFormatOption(CLI::App* app)
+{
+    app->add_option_function<std::string>(
+           "--format",
+           [](const std::string& format)
+           {
+               g_sceneFormat = format == "meff"      ? SceneFormat::Meff
+                               : format == "b2djson" ? SceneFormat::B2dJson
+                                                     : SceneFormat::Auto;
+           },
+           "Format of the scene files: meff (docs/scene-format.md), b2djson (R.U.B.E.'s "
+           "export, docs/b2djson.md), or auto: by the content (default)")
+        ->check(CLI::IsMember({"auto", "meff", "b2djson"}));
+}
+
 std::optional<Scene> LoadSceneOrReport(const std::string& path)
 {
     try
     {
-        Scene scene = LoadScene(path);
-        for (const std::string& warning : scene.warnings)
+        LoadedScene loaded = LoadSceneFile(path, g_sceneFormat);
+        // What a b2dJson level loses on the way, and what the loader warns about.
+        for (const std::string& warning : loaded.warnings)
         {
             std::fprintf(stderr, "%s\n", warning.c_str());
         }
-        return scene;
+        for (const std::string& warning : loaded.scene.warnings)
+        {
+            std::fprintf(stderr, "%s\n", warning.c_str());
+        }
+        return std::move(loaded.scene);
     }
     catch (const SceneError& error)
     {
@@ -349,9 +375,11 @@ Command AddRunCommand(CLI::App& parent)
                "reactions as CSV.\n"
                "Each output file is written whole or not at all. Numbers have enough digits "
                "to read back exactly.");
-    app->add_option("scene", options->scenePath, "Scene file (JSON; see docs/scene-format.md)")
+    app->add_option("scene", options->scenePath,
+                    "Scene file (JSON; see docs/scene-format.md), or a b2dJson level")
         ->required()
         ->type_name("SCENE.json");
+    AddFormatOption(app);
     app->add_option("--frames", options->frames,
                     "Number of steps to run (default: the scene's world.frames)")
         ->type_name("N")

@@ -1314,6 +1314,7 @@ Command AddSweepCommand(CLI::App& parent)
     app->add_option("scene", options->scenePath, "Scene file (JSON)")
         ->required()
         ->type_name("SCENE.json");
+    AddFormatOption(app);
     app->add_option("--out", options->outDir, "Output directory (default out/sweep/<scene>)")
         ->type_name("DIR");
     app->add_flag("--quick", options->quick,

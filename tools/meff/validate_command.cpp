@@ -662,6 +662,7 @@ Command AddValidateCommand(CLI::App& parent)
     app->add_option("scenes", options->scenePaths, "Scene files (JSON)")
         ->required()
         ->type_name("SCENE.json...");
+    AddFormatOption(app);
     app->add_option("--frames", options->frames,
                     "Number of steps to compare (default: each scene's world.frames)")
         ->type_name("N")

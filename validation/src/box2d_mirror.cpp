@@ -146,6 +146,32 @@ b2Fixture* CreateFixture(b2Body* body, const SceneShape& shape)
     throw std::invalid_argument("unknown shape type");
 }
 
+/// A joint given in the bodies' frames (the scene's local form, b2dJson's) replaces what
+/// Initialize computed from world points.
+template <typename Def>
+void ApplyLocalForm(const SceneJoint& joint, Def& def)
+{
+    if (joint.localAnchors)
+    {
+        def.localAnchorA = ToB2(joint.localAnchorA);
+        def.localAnchorB = ToB2(joint.localAnchorB);
+    }
+    if constexpr (requires { def.referenceAngle; })
+    {
+        if (joint.referenceAngle)
+        {
+            def.referenceAngle = static_cast<float>(*joint.referenceAngle);
+        }
+    }
+    if constexpr (requires { def.localAxisA; })
+    {
+        if (joint.localAxisA)
+        {
+            def.localAxisA = ToB2(*joint.localAxisA);
+        }
+    }
+}
+
 b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2Body* bodyB)
 {
     switch (joint.type)
@@ -154,6 +180,7 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
     {
         b2RevoluteJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchor));
+        ApplyLocalForm(joint, def);
         def.enableLimit = joint.enableLimit;
         def.lowerAngle = static_cast<float>(joint.lowerAngle);
         def.upperAngle = static_cast<float>(joint.upperAngle);
@@ -167,6 +194,7 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
     {
         b2PrismaticJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchor), ToB2(joint.axis));
+        ApplyLocalForm(joint, def);
         def.enableLimit = joint.enableLimit;
         def.lowerTranslation = static_cast<float>(joint.lowerTranslation);
         def.upperTranslation = static_cast<float>(joint.upperTranslation);
@@ -180,6 +208,7 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
     {
         b2WheelJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchor), ToB2(joint.axis));
+        ApplyLocalForm(joint, def);
         // meff normalizes the axis at creation, Box2D's wheel joint does not: hand it the
         // same unit vector (b2Vec2::Normalize is meff's Vec2::Normalize, operation for
         // operation).
@@ -204,6 +233,7 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
     {
         b2DistanceJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchorA), ToB2(joint.anchorB));
+        ApplyLocalForm(joint, def);
         def.length = static_cast<float>(joint.length);
         def.minLength = static_cast<float>(joint.minLength);
         def.maxLength = static_cast<float>(joint.maxLength);
@@ -221,6 +251,7 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
     {
         b2WeldJointDef def;
         def.Initialize(bodyA, bodyB, ToB2(joint.anchor));
+        ApplyLocalForm(joint, def);
         def.stiffness = 0.0f;
         def.damping = 0.0f;
         if (joint.stiffnessHz > 0)

@@ -123,6 +123,8 @@ struct SoftStepSettings
     /// limits) while solving, capped at 0.3 of the sub-step rate (72 Hz at 60 Hz × 4).
     Real jointHertz = 72;
     Real jointDampingRatio = 0;
+
+    friend bool operator==(const SoftStepSettings&, const SoftStepSettings&) = default;
 };
 
 /// How the solver works. Every member may be changed between steps.
@@ -147,6 +149,8 @@ struct SolverSettings
     /// SoftStep always measures it before the first sub-step.
     bool restitutionFromStepStart = false;
     SoftStepSettings softStep{}; ///< SoftStep only
+
+    friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 
 /// The name of a solver back end as scene files and the tools write it: "box2d", "colour",

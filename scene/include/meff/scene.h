@@ -31,6 +31,8 @@ struct SceneVec2
 {
     double x = 0;
     double y = 0;
+
+    friend bool operator==(const SceneVec2&, const SceneVec2&) = default;
 };
 
 /// "world": gravity, time step and solver settings.
@@ -44,6 +46,8 @@ struct SceneWorldSettings
     SolverSettings solver{};
     bool allowSleep = false; ///< let resting islands sleep (Box2D's rules)
     bool continuous = false; ///< Box2D's continuous physics (time of impact)
+
+    friend bool operator==(const SceneWorldSettings&, const SceneWorldSettings&) = default;
 };
 
 enum class SceneShapeType
@@ -61,6 +65,8 @@ struct SceneFilter
     std::uint16_t category = 0x0001;
     std::uint16_t mask = 0xFFFF;
     std::int16_t group = 0;
+
+    friend bool operator==(const SceneFilter&, const SceneFilter&) = default;
 };
 
 /// One entry of a body's "shapes". Only the geometry fields of its type are meaningful.
@@ -97,6 +103,8 @@ struct SceneShape
     double restitutionThreshold = 1; ///< m/s, ≥ 0
     SceneFilter filter;
     bool sensor = false;
+
+    friend bool operator==(const SceneShape&, const SceneShape&) = default;
 };
 
 /// One entry of "bodies".
@@ -116,6 +124,8 @@ struct SceneBody
     bool allowSleep = true;         ///< may sleep, when the world allows sleeping
     bool awake = true;              ///< false: starts asleep (dynamic and kinematic bodies)
     std::vector<SceneShape> shapes; ///< in file order, which is also creation order
+
+    friend bool operator==(const SceneBody&, const SceneBody&) = default;
 };
 
 /// One entry of "joints". Anchors are world points at creation. Only the fields of its type
@@ -151,6 +161,16 @@ struct SceneJoint
     double maxLength = 0;    ///< m; the file's value or `length`
     double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring (distance, weld, mouse)
     double dampingRatio = 0; ///< ≥ 0 (distance, weld, mouse)
+    // revolute, prismatic, wheel, weld, distance: the anchors in the bodies' own frames, as
+    // Box2D's joint definitions and b2dJson files hold them, instead of world points
+    bool localAnchors = false; ///< true: localAnchorA/B hold the anchors (anchor is unused)
+    SceneVec2 localAnchorA;    ///< body A's frame (m)
+    SceneVec2 localAnchorB;    ///< body B's frame (m)
+    /// prismatic, wheel: the axis in body A's frame (non-zero); unset: `axis`, a world direction
+    std::optional<SceneVec2> localAxisA;
+    /// revolute, prismatic, weld: angleB − angleA where the joint angle is zero (rad); unset:
+    /// the bodies' relative angle at creation
+    std::optional<double> referenceAngle;
     // motor
     std::optional<SceneVec2> linearOffset; ///< B's origin in A's frame (m); unset: as created
     std::optional<double> angularOffset;   ///< angleB − angleA (rad); unset: as created
@@ -160,6 +180,8 @@ struct SceneJoint
     double maxForce = 1; ///< N, ≥ 0
     // mouse
     SceneVec2 target; ///< world point body B's anchor is dragged towards (m)
+
+    friend bool operator==(const SceneJoint&, const SceneJoint&) = default;
 };
 
 /// "validate.tolerances": how far meff may drift from Box2D before validation fails.
@@ -171,6 +193,8 @@ struct SceneTolerances
     double impulse = 1e-3;  ///< N·s
     /// Impulses also pass when within this fraction of Box2D's value (whichever allows more).
     double impulseRelative = 1e-3;
+
+    friend bool operator==(const SceneTolerances&, const SceneTolerances&) = default;
 };
 
 /// "validate.settle": checks of the final frame, for chaotic scenes.
@@ -179,6 +203,8 @@ struct SceneSettleCheck
     double position = 0.05;              ///< m: every body's final position vs Box2D's
     std::optional<double> angle;         ///< rad: every body's final angle vs Box2D's
     std::optional<double> minimumHeight; ///< m: no dynamic body's origin ends below this y
+
+    friend bool operator==(const SceneSettleCheck&, const SceneSettleCheck&) = default;
 };
 
 /// "validate" beyond tolerances: how a chaotic scene (stacks, pyramids: round-off grows until
@@ -188,6 +214,8 @@ struct SceneValidation
     bool chaotic = false;  ///< "chaotic"
     int horizonFrames = 0; ///< "horizon_frames": frames that must agree (chaotic scenes)
     std::optional<SceneSettleCheck> settle; ///< "settle"
+
+    friend bool operator==(const SceneValidation&, const SceneValidation&) = default;
 };
 
 /// "render.camera": what the renderer shows.
@@ -195,6 +223,8 @@ struct SceneCamera
 {
     SceneVec2 center;   ///< world point at the middle of the image (m)
     double height = 10; ///< world height the image spans (m), > 0
+
+    friend bool operator==(const SceneCamera&, const SceneCamera&) = default;
 };
 
 /// What "analytic" says the exact answer is.
@@ -215,6 +245,8 @@ struct SceneAnalytic
     std::vector<std::size_t> joints;
     std::size_t body = 0;     ///< bounce: the ball ("body"), index into Scene::bodies
     double contactHeight = 0; ///< bounce: height of its centre of mass when touching (m)
+
+    friend bool operator==(const SceneAnalytic&, const SceneAnalytic&) = default;
 };
 
 /// A loaded, validated scene with every default filled in.
@@ -238,6 +270,9 @@ struct Scene
     std::optional<std::size_t> FindBody(std::string_view bodyName) const;
     /// Index into joints of the joint with this name, or nullopt.
     std::optional<std::size_t> FindJoint(std::string_view jointName) const;
+
+    /// Every field equal (sourcePath included).
+    friend bool operator==(const Scene&, const Scene&) = default;
 };
 
 /// A scene that cannot be used. messages() holds every problem found, one line each, in the

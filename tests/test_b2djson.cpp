@@ -1,0 +1,417 @@
+// b2dJson (R.U.B.E.'s format): the round trip meff → b2dJson → meff gives every sample back
+// field for field, the level alone (without meff's authoring forms) builds the same world bit
+// for bit, hand-written levels (tests/b2djson/) import to exactly the values they spell in each
+// of the format's conventions, and bad levels are refused naming the file and the JSON path.
+#include "meff/b2djson.h"
+#include "meff/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace meff;
+
+namespace
+{
+
+std::vector<std::string> SampleScenes()
+{
+    std::vector<std::string> paths;
+    for (const char* folder : {"samples/scenes", "samples/extreme"})
+    {
+        for (const auto& entry :
+             std::filesystem::directory_iterator(std::string(MEFF_SOURCE_DIR) + "/" + folder))
+        {
+            if (entry.path().extension() == ".json")
+            {
+                paths.push_back(entry.path().string());
+            }
+        }
+    }
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
+
+std::string Level(const std::string& name)
+{
+    return std::string(MEFF_SOURCE_DIR) + "/tests/b2djson/" + name;
+}
+
+/// The messages a level is refused with, or none.
+std::vector<std::string> ErrorsOf(const std::string& text)
+{
+    try
+    {
+        ImportB2dJson(text, "level.json");
+    }
+    catch (const SceneError& error)
+    {
+        return error.messages();
+    }
+    return {};
+}
+
+/// Drops the joints' "meff.joint" custom properties: their frames are then only what b2dJson's
+/// own fields say (local anchors, reference angles, local axes, offsets).
+std::string WithoutAuthoringForms(const std::string& text)
+{
+    nlohmann::json level = nlohmann::json::parse(text);
+    const auto strip = [](nlohmann::json& object)
+    {
+        if (object.contains("customProperties"))
+        {
+            object.erase("customProperties");
+        }
+    };
+    for (nlohmann::json& joint : level["joint"])
+    {
+        strip(joint);
+    }
+    return level.dump();
+}
+
+float Bits(std::uint32_t bits)
+{
+    return std::bit_cast<float>(bits);
+}
+
+} // namespace
+
+TEST_CASE("b2dJson round trip: every sample comes back as the same scene")
+{
+    const std::vector<std::string> paths = SampleScenes();
+    REQUIRE(paths.size() >= 40); // samples/scenes and samples/extreme
+    for (const std::string& path : paths)
+    {
+        INFO(path);
+        const Scene original = LoadScene(path);
+        for (const bool hex : {false, true})
+        {
+            INFO("hex floats " << hex);
+            const std::string level = ExportB2dJson(original, {.hexFloats = hex});
+            REQUIRE(LooksLikeB2dJson(level));
+            const LoadedScene back = ImportB2dJson(level, path);
+            CHECK(back.warnings.empty());
+            // Piece by piece first, so that a failure says where.
+            CHECK(back.scene.world == original.world);
+            REQUIRE(back.scene.bodies.size() == original.bodies.size());
+            for (std::size_t i = 0; i < original.bodies.size(); ++i)
+            {
+                INFO("body " << original.bodies[i].name);
+                CHECK(back.scene.bodies[i] == original.bodies[i]);
+            }
+            REQUIRE(back.scene.joints.size() == original.joints.size());
+            for (std::size_t j = 0; j < original.joints.size(); ++j)
+            {
+                INFO("joint " << original.joints[j].name);
+                CHECK(back.scene.joints[j] == original.joints[j]);
+            }
+            CHECK(back.scene == original);
+            // And the level the scene makes again is the same text.
+            CHECK(ExportB2dJson(back.scene, {.hexFloats = hex}) == level);
+            // The meff file `meff import` writes loads as the same scene.
+            CHECK(ParseScene(back.meffText, path) == original);
+        }
+    }
+}
+
+TEST_CASE("b2dJson round trip: the level's joint fields build the same world, bit for bit")
+{
+    // Without meff.joint, anchors come back in the bodies' frames: a different scene text, but
+    // the engine must get the very same numbers, so the two runs agree to the bit, step after
+    // step. (A box without meff.box comes back as a polygon, whose centroid and inertia the
+    // engine computes by the general formula, as Box2D's b2PolygonShape::Set does: the same
+    // to float round-off, not to the bit.)
+    for (const std::string& path : SampleScenes())
+    {
+        INFO(path);
+        const Scene original = LoadScene(path);
+        const Scene imported =
+            ImportB2dJson(WithoutAuthoringForms(ExportB2dJson(original)), path).scene;
+        BuiltScene a = BuildWorld(original);
+        BuiltScene b = BuildWorld(imported);
+        for (std::size_t j = 0; j < a.joints.size(); ++j)
+        {
+            CHECK(a.world.GetAnchorA(a.joints[j]).x == b.world.GetAnchorA(b.joints[j]).x);
+            CHECK(a.world.GetAnchorB(b.joints[j]).y == b.world.GetAnchorB(b.joints[j]).y);
+        }
+        const Real dt = Real(original.world.dt);
+        const int frames = std::min(original.world.frames, 120); // enough to collide and swing
+        bool same = a.world.GetStateHash() == b.world.GetStateHash();
+        for (int frame = 1; frame <= frames && same; ++frame)
+        {
+            a.world.Step(dt);
+            b.world.Step(dt);
+            same = a.world.GetStateHash() == b.world.GetStateHash();
+            INFO("frame " << frame);
+            CHECK(same);
+        }
+    }
+}
+
+TEST_CASE("b2dJson import: world settings and bodies, in every convention")
+{
+    const LoadedScene loaded = LoadSceneFile(Level("world_and_bodies.json"));
+    const Scene& scene = loaded.scene;
+    // World: gravity's y as hex bits (C1200000 = -10), step rate and iterations as R.U.B.E.
+    // writes them, the flags; meff.frames read back.
+    CHECK(scene.world.gravity == SceneVec2{0, -10});
+    CHECK(scene.world.dt == 1.0 / 30);
+    CHECK(scene.world.solver.velocityIterations == 10);
+    CHECK(scene.world.solver.positionIterations == 4);
+    CHECK(scene.world.allowSleep);
+    CHECK(scene.world.solver.warmStarting);
+    CHECK(scene.world.continuous);
+    CHECK(scene.world.frames == 90);
+    CHECK(scene.name == "world_and_bodies");
+
+    // The inactive body (body[4]) is left out: four bodies.
+    REQUIRE(scene.bodies.size() == 4);
+    const SceneBody& ground = scene.bodies[0];
+    CHECK(ground.name == "ground");
+    CHECK(ground.type == BodyType::Static);
+    CHECK(ground.position == SceneVec2{0, 0}); // the zero vector written as 0
+    REQUIRE(ground.shapes.size() == 1);
+    CHECK(ground.shapes[0].type == SceneShapeType::Segment);
+    CHECK(ground.shapes[0].friction == 0.5); // "3F000000"
+    CHECK(ground.shapes[0].density == 0);    // absent: b2dJson's 0, not meff's default 1
+
+    const SceneBody& crate = scene.bodies[1];
+    CHECK(crate.name == "sleepy_crate"); // a space is not allowed in meff's names
+    CHECK(crate.type == BodyType::Dynamic);
+    CHECK(crate.position == SceneVec2{1.5, 3});     // "3FC00000"
+    CHECK(crate.angle == double(Bits(0x3F490FDB))); // π/4 as float bits
+    CHECK(crate.linearVelocity == SceneVec2{1, 0});
+    CHECK(crate.angularVelocity == 0.5);
+    CHECK(crate.linearDamping == 0.1);
+    CHECK(crate.angularDamping == 0.25);
+    CHECK(crate.gravityScale == 2);
+    CHECK(crate.bullet);
+    CHECK_FALSE(crate.allowSleep);
+    CHECK(crate.fixedRotation);
+    CHECK_FALSE(crate.awake); // b2dJson's loader: no "awake" means asleep
+    REQUIRE(crate.shapes.size() == 1);
+    CHECK(crate.shapes[0].type == SceneShapeType::Polygon);
+    CHECK(crate.shapes[0].vertices ==
+          std::vector<SceneVec2>{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
+
+    CHECK(scene.bodies[2].name == "sleepy_crate-2"); // the same name twice
+    CHECK(scene.bodies[2].awake);
+    CHECK(scene.bodies[2].shapes[0].restitution == 0.2);
+    CHECK(scene.bodies[3].name == "body3"); // unnamed
+    CHECK(scene.bodies[3].type == BodyType::Kinematic);
+    CHECK(scene.bodies[3].linearVelocity == SceneVec2{-1, 0});
+
+    // One line for the custom properties (one on the world, one on a body; meff.frames is
+    // meff's own), one for the images, and one each for sub-stepping, the inactive body and
+    // the changed names.
+    const std::vector<std::string> expected = {
+        "world_and_bodies.json: warning: subStepping: meff has no sub-stepping (a Box2D "
+        "debugging aid); the level is stepped normally",
+        "world_and_bodies.json: warning: 2 custom properties left out (meff has no use for "
+        "them)",
+        "world_and_bodies.json: warning: 1 image left out (meff draws shapes, not images)",
+        "world_and_bodies.json: warning: inactive bodies left out (Box2D does not simulate "
+        "them), with their fixtures: body[4]",
+        "world_and_bodies.json: warning: names changed to meff's (unique; letters, digits, '_', "
+        "'-', '.'; at most 64): \"sleepy crate\" -> sleepy_crate, \"sleepy crate\" -> "
+        "sleepy_crate-2"};
+    REQUIRE(loaded.warnings.size() == expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i)
+    {
+        // The file is named as given; compare from its base name on.
+        const std::string& warning = loaded.warnings[i];
+        CHECK(warning.substr(warning.find("world_and_bodies.json")) == expected[i]);
+    }
+}
+
+TEST_CASE("b2dJson import: circle, polygon, edge, chain and loop fixtures, filters, sensors")
+{
+    const LoadedScene loaded = LoadSceneFile(Level("fixtures.json"));
+    const std::vector<SceneShape>& terrain = loaded.scene.bodies.at(0).shapes;
+    // chain: 3 edges; loop: 4 edges (closed); the edge; the two-point polygon; the sensor.
+    REQUIRE(terrain.size() == 3 + 4 + 1 + 1 + 1);
+    CHECK(terrain[0].type == SceneShapeType::Segment);
+    CHECK(terrain[0].point1 == SceneVec2{-12, 4});
+    CHECK(terrain[2].point2 == SceneVec2{12, 4});
+    CHECK(terrain[6].point1 == SceneVec2{-1, 7}); // the loop's closing edge
+    CHECK(terrain[6].point2 == SceneVec2{-1, 6});
+    CHECK(terrain[7].point1 == SceneVec2{-4, 0});
+    CHECK(terrain[8].point2 == SceneVec2{8, 1}); // a two-point polygon is an edge
+    CHECK(terrain[9].sensor);
+    CHECK(terrain[9].type == SceneShapeType::Polygon);
+
+    const SceneShape& red = loaded.scene.bodies.at(1).shapes.at(0);
+    CHECK(red.type == SceneShapeType::Circle);
+    CHECK(red.center == SceneVec2{0.1, 0});
+    CHECK(red.radius == 0.4);
+    CHECK(red.filter.category == 2);
+    CHECK(red.filter.mask == 65533);
+    CHECK(red.filter.group == -1);
+    const SceneShape& blue = loaded.scene.bodies.at(2).shapes.at(0);
+    CHECK(blue.filter.category == 4);
+    CHECK(blue.filter.mask == 0xFFFF); // absent: Box2D's default
+    CHECK(blue.vertices.size() == 3);
+    REQUIRE(loaded.warnings.size() == 2);
+    CHECK(loaded.warnings[0].find("edges with ghost vertices") != std::string::npos);
+    CHECK(loaded.warnings[1].find("chain fixtures imported as 7 two-sided segments") !=
+          std::string::npos);
+}
+
+TEST_CASE("b2dJson import: every joint kind, anchors in the bodies' frames")
+{
+    const Scene scene = LoadSceneFile(Level("joints.json")).scene;
+    REQUIRE(scene.joints.size() == 9);
+    const SceneJoint& shoulder = scene.joints[0];
+    CHECK(shoulder.type == JointType::Revolute);
+    CHECK(shoulder.localAnchors);
+    CHECK(shoulder.localAnchorA == SceneVec2{-10, 5});
+    CHECK(shoulder.localAnchorB == SceneVec2{-1, 0});
+    CHECK(shoulder.referenceAngle == 0.3);
+    CHECK(shoulder.enableLimit);
+    CHECK(shoulder.lowerAngle == -0.5);
+    CHECK(shoulder.upperAngle == 0.5);
+    CHECK(shoulder.enableMotor);
+    CHECK(shoulder.motorSpeed == 1);
+    CHECK(shoulder.maxMotorTorque == 5);
+
+    const SceneJoint& rod = scene.joints[1];
+    CHECK(rod.type == JointType::Distance);
+    CHECK(rod.length == 3);
+    CHECK(rod.minLength == 3); // Box2D 2.3's rod: no spring, so rigid
+    CHECK(rod.maxLength == 3);
+    const SceneJoint& spring = scene.joints[2];
+    CHECK(spring.stiffnessHz == 2);
+    CHECK(spring.dampingRatio == 0.3);
+    CHECK(spring.minLength == 0); // 2.3's spring has no limits
+    CHECK(spring.maxLength == double(std::numeric_limits<float>::max()));
+
+    const SceneJoint& rail = scene.joints[3];
+    CHECK(rail.type == JointType::Prismatic);
+    REQUIRE(rail.localAxisA);
+    CHECK(*rail.localAxisA == SceneVec2{0, 1});
+    CHECK(rail.lowerTranslation == -0.5);
+    CHECK(rail.upperTranslation == 1);
+    CHECK(rail.maxMotorForce == 50);
+
+    const SceneJoint& axle = scene.joints[4];
+    CHECK(axle.type == JointType::Wheel);
+    CHECK(axle.stiffnessHz == 4);
+    CHECK(axle.dampingRatio == 0.7);
+    CHECK(axle.motorSpeed == -5);
+
+    const SceneJoint& glue = scene.joints[5];
+    CHECK(glue.type == JointType::Weld);
+    CHECK(glue.stiffnessHz == 3);
+    CHECK(glue.referenceAngle == 0);
+
+    const SceneJoint& carrier = scene.joints[6];
+    CHECK(carrier.type == JointType::Motor);
+    CHECK(carrier.linearOffset == SceneVec2{12, 5});
+    CHECK(carrier.angularOffset == 0.2);
+    CHECK(carrier.maxForce == 100);
+
+    const SceneJoint& grab = scene.joints[7];
+    CHECK(grab.type == JointType::Mouse);
+    CHECK(grab.anchor == SceneVec2{15, 1.2}); // b2dJson's anchorB is a world point
+    CHECK(grab.target == SceneVec2{16, 3});
+    CHECK(grab.stiffnessHz == 5);
+
+    const SceneJoint& cord = scene.joints[8];
+    CHECK(cord.type == JointType::Distance); // a rope: a distance joint with a maximum
+    CHECK(cord.minLength == 0);
+    CHECK(cord.maxLength == 3.5);
+    CHECK(cord.stiffnessHz == 0);
+
+    // The engine gets the level's local anchors as they are: the shoulder's world anchors are
+    // where body A's and body B's frames put them.
+    BuiltScene built = BuildWorld(scene);
+    const Vec2 a = built.world.GetAnchorA(built.joints[0]);
+    CHECK(a.x == -10);
+    CHECK(a.y == 5);
+}
+
+TEST_CASE("b2dJson import: bad levels are refused with the file and the JSON path")
+{
+    using Messages = std::vector<std::string>;
+    CHECK(ErrorsOf(R"({"body": [{"type": 2, "fixture": [{"density": 1,
+                       "circle": {"radius": -1}}]}]})") ==
+          Messages{"level.json: body[0].fixture[0].circle.radius: must be > 0, got -1.0"});
+    CHECK(ErrorsOf(R"({"body": [{"type": 2, "position": {"x": "zz", "y": 0}}]})") ==
+          Messages{"level.json: body[0].position: must be a vector {\"x\": X, \"y\": Y}, or 0 "
+                   "for the zero vector, got {\"x\": \"zz\", \"y\": 0}"});
+    CHECK(ErrorsOf(R"({"body": [{"type": 7}]})") ==
+          Messages{"level.json: body[0].type: must be 0 (static), 1 (kinematic) or 2 (dynamic), "
+                   "got 7"});
+    CHECK(ErrorsOf(R"({"body": [{"type": 0}], "joint": [{"type": "revolute",
+                       "bodyA": 0, "bodyB": 3}]})") ==
+          Messages{"level.json: joint[0].bodyB: must be the index of a body in \"body\" (0 to "
+                   "0), got 3"});
+    CHECK(ErrorsOf(R"({"body": [{"type": 0}, {"type": 2, "fixture": [{"density": 1,
+                       "circle": {"radius": 1}}]}], "joint": [{"type": "pulley", "bodyA": 0,
+                       "bodyB": 1}]})") ==
+          Messages{"level.json: joint[0].type: meff has no pulley joints yet (pulley, gear and "
+                   "friction joints are not in the scene format), got \"pulley\""});
+    CHECK(ErrorsOf(R"({"body": [{"type": 2, "fixture": [{"density": 1, "polygon":
+                       {"vertices": {"x": [0, 1], "y": [0, 0, 1]}}}]}]})") ==
+          Messages{"level.json: body[0].fixture[0].polygon.vertices: must be {\"x\": [...], "
+                   "\"y\": [...]} with as many x as y, got {\"x\": [0, 1], \"y\": [0, 0, 1]}"});
+    // meff's own rules, said about the level's fields: a dynamic body needs mass.
+    CHECK(ErrorsOf(R"({"body": [{"type": 2, "fixture": [{"circle": {"radius": 1}}]}]})") ==
+          Messages{"level.json: body[0].fixture: a dynamic body needs mass: give one of its "
+                   "circles, boxes or polygons a density > 0 (segments and chains have none)"});
+    CHECK(ErrorsOf(R"({"body": [{"type": 2, "fixture": [{"density": 1, "friction": -1,
+                       "circle": {"radius": 1}}]}]})") ==
+          Messages{"level.json: body[0].fixture[0].friction: must be >= 0, got -1.0"});
+    CHECK(ErrorsOf("{\"body\": [") ==
+          Messages{"level.json: line 1, column 11: syntax error while parsing value - unexpected "
+                   "end of input; expected '[', '{', or a literal"});
+}
+
+TEST_CASE("b2dJson import: a mass set by hand is said, once")
+{
+    const LoadedScene loaded = ImportB2dJson(R"({"body": [{"name": "crate", "type": 2,
+        "massData-mass": 5, "fixture": [{"density": 1, "circle": {"radius": 1}}]}]})",
+                                             "level.json");
+    REQUIRE(loaded.warnings.size() == 1);
+    CHECK(loaded.warnings[0] == "level.json: warning: massData: mass set by hand is not kept "
+                                "(meff computes mass from fixture densities): crate: 5 kg set, "
+                                "3.14159 kg from its fixtures");
+}
+
+TEST_CASE("b2dJson values: hex floats and the zero vector")
+{
+    // The importer reads "3FC00000" as 1.5f and 0 as the zero vector; the exporter writes
+    // them so (ExportB2dJson with hexFloats). Checked through a level.
+    const LoadedScene loaded = ImportB2dJson(R"({"gravity": 0, "body": [{"type": 2,
+        "position": {"x": "3fc00000", "y": "BF800000"}, "fixture": [{"density": 1,
+        "circle": {"radius": "3F000000"}}]}]})",
+                                             "level.json");
+    CHECK(loaded.scene.world.gravity == SceneVec2{0, 0});
+    CHECK(loaded.scene.bodies[0].position == SceneVec2{1.5, -1}); // lower case hex too
+    CHECK(loaded.scene.bodies[0].shapes[0].radius == 0.5);
+    const std::string level = ExportB2dJson(loaded.scene, {.hexFloats = true});
+    CHECK(level.find("\"3FC00000\"") != std::string::npos);
+    CHECK(level.find("\"gravity\": 0") != std::string::npos);
+    CHECK(ImportB2dJson(level, "level.json").scene == loaded.scene);
+}
+
+TEST_CASE("b2dJson and meff files are told apart by their content")
+{
+    CHECK(LooksLikeB2dJson(R"({"body": []})"));
+    CHECK(LooksLikeB2dJson(R"({"gravity": 0})"));
+    CHECK_FALSE(LooksLikeB2dJson(R"({"meff_scene": 1, "bodies": []})"));
+    CHECK_FALSE(LooksLikeB2dJson(R"({"bodies": []})"));
+    CHECK_FALSE(LooksLikeB2dJson("not json"));
+    // LoadSceneFile goes by content, or by the format it is told.
+    CHECK(LoadSceneFile(Level("joints.json")).scene.joints.size() == 9);
+    CHECK_THROWS_AS(LoadSceneFile(Level("joints.json"), SceneFormat::Meff), SceneError);
+}
