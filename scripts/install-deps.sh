@@ -10,5 +10,6 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
     g++ cmake make pkg-config \
     catch2 libbox2d-dev libosmesa6-dev libpng-dev nlohmann-json3-dev libcli11-dev \
+    libfreetype-dev fonts-dejavu-core \
     libbenchmark-dev python3 python3-matplotlib \
     clang-14 libclang-rt-14-dev >/dev/null

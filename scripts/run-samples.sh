@@ -13,7 +13,8 @@ for scene in samples/scenes/*.json; do
         --contacts "out/trajectories/$name.contacts.csv" --joints "out/trajectories/$name.joints.csv"
 done
 "$MEFF" validate samples/scenes/*.json --report out/validation
-"$MEFF" render samples/scenes/newtons_cradle.json --out out/frames/newtons_cradle --every 4 --joints
+"$MEFF" render samples/scenes/newtons_cradle.json --out out/frames/newtons_cradle --every 4 --joints \
+    --overwrite
 echo
 echo "Trajectories:       out/trajectories/<scene>.csv (+ .contacts.csv, .joints.csv)"
 echo "Validation reports: out/validation/<scene>/summary.json, divergence.csv, errors.png"

@@ -455,25 +455,168 @@ double NiceCeil(double value)
     return 10.0 * power;
 }
 
-Image RenderFrame(OffscreenRenderer& renderer, const World& world, const FrameOptions& options)
+std::vector<LegendEntry> PaletteLegend(const DrawFlags& flags)
 {
-    DebugDraw& draw = renderer.BeginFrame(options.camera);
-    world.Draw(draw, options.flags);
-    if (options.overlay)
+    const DrawPalette& colors = flags.colors;
+    return {{colors.staticBody, "static"},
+            {colors.kinematicBody, "kinematic"},
+            {colors.dynamicBody, "dynamic"},
+            {colors.sleepingBody, "sleeping"},
+            {colors.joint, "joint"},
+            {colors.contactPoint, "contact point"},
+            {colors.contactNormal, "contact normal"},
+            {colors.contactImpulse, "contact impulse"},
+            {colors.jointReaction, "joint reaction"},
+            {colors.aabb, "AABB"},
+            // DrawTransform's axes (Box2D's convention), which the GL draw colours itself.
+            {DrawColor{1, 0, 0}, "x axis"},
+            {DrawColor{0, 1, 0}, "y axis"}};
+}
+
+namespace
+{
+
+bool SameColor(const DrawColor& a, const DrawColor& b)
+{
+    return a.r == b.r && a.g == b.g && a.b == b.b;
+}
+
+/// Passes every call on, noting which colours were drawn.
+class ColorNotingDraw final : public DebugDraw
+{
+  public:
+    explicit ColorNotingDraw(DebugDraw& target) : m_target(target) {}
+
+    void DrawPolygon(std::span<const Vec2> vertices, const DrawColor& color) override
     {
-        options.overlay(draw);
+        Note(color);
+        m_target.DrawPolygon(vertices, color);
+    }
+    void DrawSolidPolygon(std::span<const Vec2> vertices, const DrawColor& color) override
+    {
+        Note(color);
+        m_target.DrawSolidPolygon(vertices, color);
+    }
+    void DrawCircle(Vec2 center, Real radius, const DrawColor& color) override
+    {
+        Note(color);
+        m_target.DrawCircle(center, radius, color);
+    }
+    void DrawSolidCircle(Vec2 center, Real radius, Vec2 axis, const DrawColor& color) override
+    {
+        Note(color);
+        m_target.DrawSolidCircle(center, radius, axis, color);
+    }
+    void DrawSegment(Vec2 p1, Vec2 p2, const DrawColor& color) override
+    {
+        Note(color);
+        m_target.DrawSegment(p1, p2, color);
+    }
+    void DrawTransform(const Transform& xf) override
+    {
+        Note(DrawColor{1, 0, 0});
+        Note(DrawColor{0, 1, 0});
+        m_target.DrawTransform(xf);
+    }
+    void DrawPoint(Vec2 p, Real size, const DrawColor& color) override
+    {
+        Note(color);
+        m_target.DrawPoint(p, size, color);
     }
 
-    // Text is as tall as about 1/35 of the image (at least the font's own 7 pixels), so that
-    // it reads at every size without covering the scene.
-    int scale = std::clamp(renderer.Height() / 240, 1, 4);
-    // ...but never wider than the image, if a smaller size fits.
-    while (scale > 1 && TextWidth(options.caption, scale) + 6 * scale > renderer.Width())
+    bool Used(const DrawColor& color) const
     {
-        --scale;
+        return std::any_of(m_used.begin(), m_used.end(),
+                           [&](const DrawColor& used) { return SameColor(used, color); });
     }
-    const int margin = 3 * scale;
-    const int lineHeight = TextHeight(scale) + 2 * margin;
+
+  private:
+    void Note(const DrawColor& color)
+    {
+        if (!Used(color))
+        {
+            m_used.push_back(color);
+        }
+    }
+
+    DebugDraw& m_target;
+    std::vector<DrawColor> m_used;
+};
+
+/// Swatches and labels along the bottom edge, wrapping onto more rows when they do not fit,
+/// on a translucent backing.
+void DrawColorLegend(Image& image, const std::vector<LegendEntry>& entries, int pixelSize,
+                     int margin)
+{
+    if (entries.empty())
+    {
+        return;
+    }
+    const int lineHeight = TextHeight(pixelSize);
+    const int swatch = std::max(6, lineHeight * 2 / 3);
+    const int rowHeight = lineHeight + margin;
+    // Lay out first, to know how many rows there are.
+    std::vector<std::pair<int, int>> places; // x, row
+    int x = margin;
+    int row = 0;
+    int widest = 0;
+    for (const LegendEntry& entry : entries)
+    {
+        const int width = swatch + margin + TextWidth(entry.label, pixelSize);
+        if (x > margin && x + width > image.width - margin)
+        {
+            x = margin;
+            ++row;
+        }
+        places.emplace_back(x, row);
+        x += width + 3 * margin;
+        widest = std::max(widest, x - 2 * margin);
+    }
+    const int rows = row + 1;
+    const int top = image.height - rows * rowHeight - margin;
+    FillRect(image, 0, top - margin, std::min(image.width, widest + margin),
+             rows * rowHeight + 2 * margin, kBackground, 0.75);
+    for (std::size_t i = 0; i < entries.size(); ++i)
+    {
+        const auto [left, r] = places[i];
+        const int y = top + r * rowHeight;
+        const int swatchTop = y + (lineHeight - swatch) / 2;
+        const Rgb outline = ToRgb(entries[i].color);
+        FillRect(image, left, swatchTop, swatch, swatch, outline, 1.0);
+        FillRect(image, left + 1, swatchTop + 1, swatch - 2, swatch - 2,
+                 FillColor(entries[i].color), 1.0);
+        DrawText(image, left + swatch + margin, y, entries[i].label, kTextColor, pixelSize);
+    }
+}
+
+} // namespace
+
+Image RenderFrame(OffscreenRenderer& renderer, const World& world, const FrameOptions& options)
+{
+    DrawList drawing;
+    world.Draw(drawing, options.flags);
+    if (options.overlay)
+    {
+        options.overlay(drawing);
+    }
+    return RenderFrame(renderer, drawing, options);
+}
+
+Image RenderFrame(OffscreenRenderer& renderer, const DrawList& drawing, const FrameOptions& options)
+{
+    DebugDraw& gl = renderer.BeginFrame(options.camera);
+    ColorNotingDraw draw(gl);
+    drawing.Replay(draw);
+
+    // Text is about 1/34 of the image's height (at least 9 pixels, legible), ...
+    int pixelSize = std::clamp(renderer.Height() / 34, 9, 48);
+    // ...but the caption never wider than the image, if a smaller size fits.
+    while (pixelSize > 9 && TextWidth(options.caption, pixelSize) + pixelSize > renderer.Width())
+    {
+        --pixelSize;
+    }
+    const int margin = std::max(2, pixelSize / 4);
+    const int lineHeight = TextHeight(pixelSize) + 2 * margin;
     const int legendTop = lineHeight;
     std::string legendLabel;
     int arrowLeft = 0;
@@ -481,14 +624,14 @@ Image RenderFrame(OffscreenRenderer& renderer, const World& world, const FrameOp
     if (options.legendImpulse)
     {
         const std::string prefix = "impulse";
-        arrowLeft = margin + TextWidth(prefix, scale) + 2 * margin;
+        arrowLeft = margin + TextWidth(prefix, pixelSize) + 2 * margin;
         arrowLength = int(std::lround(*options.legendImpulse * double(options.flags.impulseScale) /
                                       double(renderer.PixelSize())));
         char value[64];
         std::snprintf(value, sizeof value, "= %g N\xC2\xB7s", *options.legendImpulse);
         legendLabel = value;
-        const double y = legendTop + margin + 0.5 * TextHeight(scale);
-        DrawArrow(draw, renderer.ScreenToWorld(arrowLeft, y),
+        const double y = legendTop + margin + 0.5 * TextHeight(pixelSize);
+        DrawArrow(gl, renderer.ScreenToWorld(arrowLeft, y),
                   renderer.ScreenToWorld(arrowLeft + arrowLength, y), options.flags.arrowHead,
                   DrawColor{kTextColor.r / 255.0f, kTextColor.g / 255.0f, kTextColor.b / 255.0f});
     }
@@ -496,16 +639,31 @@ Image RenderFrame(OffscreenRenderer& renderer, const World& world, const FrameOp
     Image image = renderer.EndFrame();
     if (!options.caption.empty())
     {
-        FillRect(image, 0, 0, TextWidth(options.caption, scale) + 2 * margin, lineHeight,
+        FillRect(image, 0, 0, TextWidth(options.caption, pixelSize) + 2 * margin, lineHeight,
                  kBackground, 0.75);
-        DrawText(image, margin, margin, options.caption, kTextColor, scale);
+        DrawText(image, margin, margin, options.caption, kTextColor, pixelSize);
     }
     if (options.legendImpulse)
     {
-        DrawText(image, margin, legendTop + margin, "impulse", kTextColor, scale);
+        DrawText(image, margin, legendTop + margin, "impulse", kTextColor, pixelSize);
         DrawText(image, arrowLeft + arrowLength + 2 * margin, legendTop + margin, legendLabel,
-                 kTextColor, scale);
+                 kTextColor, pixelSize);
     }
+    // Every colour the frame used, said once: the palette's, then the overlay's.
+    std::vector<LegendEntry> used;
+    std::vector<LegendEntry> candidates = PaletteLegend(options.flags);
+    candidates.insert(candidates.end(), options.overlayLegend.begin(), options.overlayLegend.end());
+    for (const LegendEntry& entry : candidates)
+    {
+        const bool listed =
+            std::any_of(used.begin(), used.end(),
+                        [&](const LegendEntry& e) { return SameColor(e.color, entry.color); });
+        if (draw.Used(entry.color) && !listed)
+        {
+            used.push_back(entry);
+        }
+    }
+    DrawColorLegend(image, used, pixelSize, margin);
     return image;
 }
 

@@ -38,12 +38,17 @@ FrameOptions RedOptions()
     return options;
 }
 
-/// The mean column of the pixels that carry the circle's fill colour, or -1 if none do.
+/// The colour legend's band along the bottom edge (9-pixel text and its margins in the small
+/// test images), where a swatch of each body colour is drawn.
+constexpr int kLegendBand = 30;
+
+/// The mean column of the pixels that carry the circle's fill colour above the legend, or -1 if
+/// none do.
 double FillCentroidX(const Image& image, Rgb fill)
 {
     double sum = 0;
     int count = 0;
-    for (int y = 0; y < image.height; ++y)
+    for (int y = 0; y < image.height - kLegendBand; ++y)
     {
         for (int x = 0; x < image.width; ++x)
         {
@@ -111,8 +116,8 @@ TEST_CASE("A red circle is drawn where the camera puts it", "[render]")
     // Away from it: background.
     CHECK(image.At(140 + 15, 80) == kBackground);
     CHECK(image.At(140, 80 + 15) == kBackground);
-    CHECK(image.At(20, 180) == kBackground);
-    CHECK(image.At(199, 199) == kBackground);
+    CHECK(image.At(20, 160) == kBackground);
+    CHECK(image.At(199, 199 - kLegendBand) == kBackground);
     // The fill's centroid is the circle's centre, to a fraction of a pixel.
     CHECK(FillCentroidX(image, fill) == Approx(140).margin(1.0));
 }
@@ -161,22 +166,115 @@ TEST_CASE("Renderer sizes outside 1..8192 are refused", "[render]")
     CHECK(one.Supersample() >= 1);
 }
 
-TEST_CASE("Text uses the built-in 5x7 font", "[render]")
+namespace
 {
-    CHECK(TextWidth("", 1) == 0);
-    CHECK(TextWidth("I", 1) == 5);
-    CHECK(TextWidth("ab", 2) == 22);
-    CHECK(TextWidth("N\xC2\xB7s", 1) == 17); // the middle dot is one character
-    CHECK(TextHeight(3) == 21);
 
-    Image image(20, 10, Rgb{255, 255, 255});
-    DrawText(image, 1, 1, "I", Rgb{0, 0, 0}, 1);
-    // 'I': a bar across the top and bottom rows, a stem in the middle column.
-    CHECK(image.At(2, 1) == Rgb{0, 0, 0});
-    CHECK(image.At(3, 4) == Rgb{0, 0, 0});
-    CHECK(image.At(1, 4) == Rgb{255, 255, 255});
-    CHECK(image.At(4, 7) == Rgb{0, 0, 0});
-    CHECK(image.At(10, 4) == Rgb{255, 255, 255});
+/// The pixels `text` changes on a white image, as a string of bytes (to compare drawings).
+std::vector<std::uint8_t> TextPixels(const std::string& text, int pixelSize, Image* out = nullptr)
+{
+    Image image(60, 40, Rgb{255, 255, 255});
+    DrawText(image, 2, 2, text, Rgb{0, 0, 0}, pixelSize);
+    if (out != nullptr)
+    {
+        *out = image;
+    }
+    return image.pixels;
+}
+
+/// Whether any pixel in rows [top, bottom) of the image has colour `color`.
+bool HasColorInRows(const Image& image, int top, int bottom, Rgb color)
+{
+    for (int y = std::max(0, top); y < std::min(image.height, bottom); ++y)
+    {
+        for (int x = 0; x < image.width; ++x)
+        {
+            if (image.At(x, y) == color)
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("Text is drawn in DejaVu Sans through FreeType", "[render]")
+{
+    CHECK(FontPath().find("DejaVuSans.ttf") != std::string::npos);
+    CHECK(TextWidth("", 14) == 0);
+    // A proportional font: narrow letters take less room than wide ones (a pixel font gives
+    // every character the same cell).
+    CHECK(TextWidth("il", 14) < TextWidth("WM", 14));
+    CHECK(TextWidth("WM", 28) > TextWidth("WM", 14));
+    // DejaVu's line at 14 px per em: ascender to descender about 1.16 em.
+    CHECK(TextHeight(14) >= 15);
+    CHECK(TextHeight(14) <= 18);
+
+    // The pixel font drew 'g' like '9' and 'p' like 'ρ'; these glyphs differ.
+    CHECK(TextPixels("g", 14) != TextPixels("9", 14));
+    CHECK(TextPixels("p", 14) != TextPixels("\xCF\x81", 14)); // ρ, which DejaVu has
+    // Deterministic, anti-aliased (grey levels between black and white), and only where the
+    // text is.
+    Image image;
+    CHECK(TextPixels("Ag", 14, &image) == TextPixels("Ag", 14));
+    bool grey = false;
+    bool dark = false;
+    for (int y = 0; y < image.height; ++y)
+    {
+        for (int x = 0; x < image.width; ++x)
+        {
+            const Rgb pixel = image.At(x, y);
+            dark = dark || pixel.r < 60;
+            grey = grey || (pixel.r > 60 && pixel.r < 200);
+            if (x >= 2 + TextWidth("Ag", 14) + 2 || y >= 2 + TextHeight(14) + 2)
+            {
+                CHECK(pixel == Rgb{255, 255, 255});
+            }
+        }
+    }
+    CHECK(dark);
+    CHECK(grey);
+}
+
+TEST_CASE("The legend shows a swatch for every colour the frame uses, and only those", "[render]")
+{
+    // A static ground and one dynamic box, awake: the legend has "static" and "dynamic" and
+    // nothing else (no sleeping, joint or contact colours).
+    World world{WorldDef{}};
+    const BodyId ground = world.CreateBody(BodyDef{});
+    world.CreateShape(ground, ShapeDef{}, MakeBox(5, 0.5f));
+    const BodyId box = world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = {0, 3}});
+    world.CreateShape(box, ShapeDef{}, MakeBox(0.5f, 0.5f));
+    OffscreenRenderer renderer(320, 240);
+    FrameOptions options;
+    options.camera = Camera{{0, 1.5f}, 10}; // the bodies well above the bottom edge
+    const DrawPalette& palette = options.flags.colors;
+    // The legend's rows: the bottom 30 pixels (text of 9 px per em plus margins), where the
+    // camera puts no body.
+    const auto legendHas = [&](const Image& image, const DrawColor& color)
+    { return HasColorInRows(image, image.height - 30, image.height, FillColor(color)); };
+    const Image plain = RenderFrame(renderer, world, options);
+    CHECK(legendHas(plain, palette.staticBody));
+    CHECK(legendHas(plain, palette.dynamicBody));
+    CHECK_FALSE(legendHas(plain, palette.sleepingBody));
+    CHECK_FALSE(legendHas(plain, palette.joint));
+    CHECK_FALSE(legendHas(plain, palette.contactPoint));
+
+    // An overlay's colour is explained when the overlay draws it, with its label.
+    const DrawColor blue{0.0f, 0.4f, 1.0f};
+    options.overlay = [&](DebugDraw& draw) { draw.DrawSegment({-1, 0}, {1, 0}, blue); };
+    options.overlayLegend = {{blue, "Box2D 2.4.1"}};
+    CHECK(legendHas(RenderFrame(renderer, world, options), blue));
+    // ...and not when it does not.
+    options.overlay = nullptr;
+    CHECK_FALSE(legendHas(RenderFrame(renderer, world, options), blue));
+
+    // Drawing from a recording gives the very bytes drawing from the world gives.
+    DrawList drawing;
+    world.Draw(drawing, options.flags);
+    CHECK(RenderFrame(renderer, drawing, options).pixels ==
+          RenderFrame(renderer, world, options).pixels);
 }
 
 TEST_CASE("PNGs round-trip exactly and are written whole", "[render]")

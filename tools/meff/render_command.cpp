@@ -3,6 +3,7 @@
 // assembled into a GIF or MP4 by ffmpeg.
 #include "commands.h"
 #include "output_file.h"
+#include "parallel.h"
 #include "plot_program.h"
 #include "progress.h"
 
@@ -16,11 +17,13 @@
 #include <cinttypes>
 #include <climits>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -48,6 +51,9 @@ struct RenderOptions
     bool overlayBox2D = false;
     std::string gifPath;
     std::string mp4Path;
+    bool overwrite = false;
+    int jobs = 0; ///< 0: one per core
+    Shard shard;
 };
 
 /// Every message of this command is one line starting with this.
@@ -126,11 +132,131 @@ std::string FindOnPath(const std::string& program)
     return {};
 }
 
+/// The colour of Box2D's outlines (--overlay-box2d).
+constexpr DrawColor kBox2DColor{0.0f, 0.40f, 1.0f};
+
+/// OSMesa contexts for the threads that draw: each frame takes a free one and gives it back.
+class RendererPool
+{
+  public:
+    /// Throws render::RenderError when a context cannot be made.
+    void Create(int count, int width, int height)
+    {
+        for (int i = 0; i < count; ++i)
+        {
+            m_renderers.push_back(std::make_unique<render::OffscreenRenderer>(width, height));
+            m_free.push_back(m_renderers.back().get());
+        }
+    }
+
+    int Supersample() const { return m_renderers.front()->Supersample(); }
+
+    /// Runs draw(renderer) with a renderer no other thread is using.
+    template <typename DrawFunction>
+    render::Image Draw(const DrawFunction& draw)
+    {
+        render::OffscreenRenderer* renderer = nullptr;
+        {
+            std::unique_lock lock(m_mutex);
+            m_returned.wait(lock, [&] { return !m_free.empty(); });
+            renderer = m_free.back();
+            m_free.pop_back();
+        }
+        const auto giveBack = [&]
+        {
+            {
+                const std::lock_guard lock(m_mutex);
+                m_free.push_back(renderer);
+            }
+            m_returned.notify_one();
+        };
+        try
+        {
+            render::Image image = draw(*renderer);
+            giveBack();
+            return image;
+        }
+        catch (...)
+        {
+            giveBack();
+            throw;
+        }
+    }
+
+  private:
+    std::vector<std::unique_ptr<render::OffscreenRenderer>> m_renderers;
+    std::vector<render::OffscreenRenderer*> m_free;
+    std::mutex m_mutex;
+    std::condition_variable m_returned;
+};
+
+/// Whether `name` is a frame file: frame_ and 5 or more digits, .png; its number in `index`.
+bool IsFrameFile(const std::string& name, long long& index)
+{
+    constexpr std::string_view prefix = "frame_";
+    constexpr std::string_view suffix = ".png";
+    if (name.size() < prefix.size() + 5 + suffix.size() || name.rfind(prefix, 0) != 0 ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    {
+        return false;
+    }
+    const std::string digits =
+        name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    if (digits.size() > 12 ||
+        !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    {
+        return false;
+    }
+    index = std::stoll(digits);
+    return true;
+}
+
+/// The frames an earlier render left in `directory` (those of this shard's share, when the
+/// frames are sharded: other machines' shares may be there too): refused without
+/// `overwrite`, removed with it. False (said) when refused or a removal fails.
+bool ClearOldFrames(const std::filesystem::path& directory, const Shard& shard, bool overwrite)
+{
+    std::vector<std::filesystem::path> old;
+    std::error_code error;
+    for (std::filesystem::directory_iterator it(directory, error), end; !error && it != end;
+         it.increment(error))
+    {
+        long long index = 0;
+        if (IsFrameFile(it->path().filename().string(), index) &&
+            InShard(std::size_t(index), shard))
+        {
+            old.push_back(it->path());
+        }
+    }
+    if (old.empty())
+    {
+        return true;
+    }
+    std::sort(old.begin(), old.end());
+    if (!overwrite)
+    {
+        Fail(directory.string() + " already holds " + std::to_string(old.size()) + " frame" +
+             (old.size() == 1 ? "" : "s") + " (" + old.front().filename().string() +
+             (old.size() > 1 ? " ... " + old.back().filename().string() : "") +
+             "); give --overwrite to replace them, or another --out");
+        return false;
+    }
+    for (const std::filesystem::path& path : old)
+    {
+        if (!std::filesystem::remove(path, error) && error)
+        {
+            Fail("cannot remove " + path.string() + ": " + error.message());
+            return false;
+        }
+    }
+    return true;
+}
+
 /// Box2D's bodies as outlines: what the mirror computed for the same frame. Where they hide
 /// exactly behind meff's outlines, the engines agree.
 void DrawBox2D(const Scene& scene, const validation::Box2DMirror& mirror, DebugDraw& draw)
 {
-    const DrawColor color{0.0f, 0.40f, 1.0f};
+    const DrawColor color = kBox2DColor;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
     {
         const b2Body* body = mirror.Body(i);
@@ -305,6 +431,14 @@ int Run(const RenderOptions& options)
         }
     }
 
+    if (!moviePath.empty() && options.shard.count > 1)
+    {
+        Fail(std::string(gif ? "--gif" : "--mp4") +
+             " needs every frame, and --shard renders only a share of them: assemble the "
+             "frames after all shards are done");
+        return kExitBadInput;
+    }
+
     const std::optional<Scene> scene = LoadSceneOrReport(options.scenePath);
     if (!scene)
     {
@@ -327,6 +461,12 @@ int Run(const RenderOptions& options)
             throw std::runtime_error("cannot create " + directory.string() + ": " +
                                      error.message());
         }
+        // Frames of an earlier render would mix with these (a shorter run leaves the old
+        // ones after its last): refused unless --overwrite, which removes them first.
+        if (!ClearOldFrames(directory, options.shard, options.overwrite))
+        {
+            return kExitBadInput;
+        }
         // A trial file, discarded unwritten: proves the directory (and the movie's) can be
         // written to before a single frame is drawn.
         OutputFile probe(FramePath(directory, 0));
@@ -341,10 +481,12 @@ int Run(const RenderOptions& options)
         return kExitBadInput;
     }
 
-    std::optional<render::OffscreenRenderer> renderer;
+    // One OSMesa context per thread that draws.
+    const int jobs = ResolveJobs(options.jobs);
+    RendererPool renderers;
     try
     {
-        renderer.emplace(width, height);
+        renderers.Create(jobs, width, height);
     }
     catch (const render::RenderError& error)
     {
@@ -384,45 +526,95 @@ int Run(const RenderOptions& options)
     if (options.overlayBox2D)
     {
         mirror.emplace(*scene);
-        frameOptions.overlay = [&](DebugDraw& draw) { DrawBox2D(*scene, *mirror, draw); };
+        frameOptions.overlayLegend.push_back({kBox2DColor, "Box2D 2.4.1"});
     }
 
+    // The frames to draw: every K-th, this shard's share of them (by their number).
     const int count = frames / options.every + 1;
+    std::vector<int> mine;
+    for (int k = 0; k < count; ++k)
+    {
+        if (InShard(std::size_t(k), options.shard))
+        {
+            mine.push_back(k);
+        }
+    }
     const Real dt = Real(scene->world.dt);
-    Progress progress("rendering " + scene->name, count, "frames");
+    Progress progress("rendering " + scene->name, int(mine.size()), "frames");
     int written = 0;
+    // One thread steps the world and records a batch of frames; the batch is then drawn,
+    // encoded and written on `jobs` threads. Every frame goes through the same recording, so
+    // the files are the same for every --jobs.
+    struct Pending
+    {
+        int index = 0; ///< the file's number
+        render::DrawList drawing;
+        std::string caption;
+    };
+    const std::size_t batchSize = std::size_t(std::max(1, 2 * jobs));
+    std::vector<Pending> batch;
+    int stepped = 0;
+    const auto stepTo = [&](int frame)
+    {
+        for (; stepped < frame; ++stepped)
+        {
+            built->world.Step(dt);
+            if (mirror)
+            {
+                mirror->Step();
+            }
+        }
+    };
+    const auto drawBatch = [&]
+    {
+        RunInOrder(
+            batch.size(), jobs,
+            [&](std::size_t i)
+            {
+                render::FrameOptions options = frameOptions;
+                options.caption = batch[i].caption;
+                const render::Image image = renderers.Draw(
+                    [&](render::OffscreenRenderer& renderer)
+                    { return render::RenderFrame(renderer, batch[i].drawing, options); });
+                const std::vector<std::uint8_t> png = render::EncodePng(image);
+                OutputFile file(FramePath(directory, batch[i].index));
+                std::fwrite(png.data(), 1, png.size(), file.Stream());
+                file.Commit();
+            },
+            [&](std::size_t)
+            {
+                ++written;
+                progress.Update(written);
+            });
+        batch.clear();
+    };
     try
     {
-        for (int frame = 0; frame <= frames; ++frame)
+        for (const int k : mine)
         {
-            if (frame > 0)
+            const int frame = k * options.every;
+            stepTo(frame);
+            Pending& pending = batch.emplace_back();
+            pending.index = k;
+            built->world.Draw(pending.drawing, flags);
+            if (mirror)
             {
-                built->world.Step(dt);
-                if (mirror)
-                {
-                    mirror->Step();
-                }
-            }
-            if (frame % options.every != 0)
-            {
-                continue;
+                DrawBox2D(*scene, *mirror, pending.drawing);
             }
             char caption[256];
-            std::snprintf(caption, sizeof caption, "%s  frame %d  t = %.3f s%s",
-                          scene->name.c_str(), frame, frame * scene->world.dt,
-                          mirror ? "  (blue: Box2D)" : "");
-            frameOptions.caption = caption;
-            const render::Image image = render::RenderFrame(*renderer, built->world, frameOptions);
-            const std::vector<std::uint8_t> png = render::EncodePng(image);
-            OutputFile file(FramePath(directory, written));
-            std::fwrite(png.data(), 1, png.size(), file.Stream());
-            file.Commit();
-            ++written;
-            progress.Update(written);
+            std::snprintf(caption, sizeof caption, "%s  frame %d  t = %.3f s", scene->name.c_str(),
+                          frame, frame * scene->world.dt);
+            pending.caption = caption;
+            if (batch.size() == batchSize)
+            {
+                drawBatch();
+            }
         }
+        drawBatch();
     }
     catch (const SimulationError& error)
     {
+        drawBatch(); // the frames recorded before the failure
         progress.Finish();
         std::fprintf(stderr,
                      "%s: simulation failed at step %" PRIu64 ": %s; %d frames were written\n",
@@ -447,7 +639,7 @@ int Run(const RenderOptions& options)
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %d frame%s (%dx%d, %dx supersampled) written to %s in %.3f s%s%s\n",
                 scene->name.c_str(), written, written == 1 ? "" : "s", width, height,
-                renderer->Supersample(), directory.string().c_str(), seconds,
+                renderers.Supersample(), directory.string().c_str(), seconds,
                 moviePath.empty() ? "" : "; ", moviePath.c_str());
     return kExitOk;
 }
@@ -499,6 +691,12 @@ Command AddRenderCommand(CLI::App& parent)
                                        "Also assemble the frames into an H.264 MP4 (ffmpeg)")
                            ->type_name("FILE");
     gif->excludes(mp4);
+    app->add_flag("--overwrite", options->overwrite,
+                  "DIR may hold frames of an earlier render: remove them first (without it, "
+                  "such a folder is refused)");
+    AddJobsOption(app, options->jobs, "Draw and write frames");
+    AddShardOption(app, options->shard,
+                   "frames (frame k to shard k mod N + 1; each shard steps the whole run)");
     return {app, [options] { return Run(*options); }};
 }
 

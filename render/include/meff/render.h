@@ -106,6 +106,61 @@ class OffscreenRenderer
     std::unique_ptr<Impl> m_impl;
 };
 
+/// A frame's drawing recorded (World::Draw, overlays) to be drawn later, on another thread or
+/// more than once: Replay makes the same calls, with the same numbers, in the same order, so
+/// an image drawn from it is the image drawn from the world itself.
+class DrawList final : public DebugDraw
+{
+  public:
+    void DrawPolygon(std::span<const Vec2> vertices, const DrawColor& color) override;
+    void DrawSolidPolygon(std::span<const Vec2> vertices, const DrawColor& color) override;
+    void DrawCircle(Vec2 center, Real radius, const DrawColor& color) override;
+    void DrawSolidCircle(Vec2 center, Real radius, Vec2 axis, const DrawColor& color) override;
+    void DrawSegment(Vec2 p1, Vec2 p2, const DrawColor& color) override;
+    void DrawTransform(const Transform& xf) override;
+    void DrawPoint(Vec2 p, Real size, const DrawColor& color) override;
+
+    void Replay(DebugDraw& draw) const;
+    std::size_t Size() const { return m_commands.size(); }
+
+  private:
+    enum class Kind
+    {
+        Polygon,
+        SolidPolygon,
+        Circle,
+        SolidCircle,
+        Segment,
+        Transform,
+        Point,
+    };
+    struct Command
+    {
+        Kind kind = Kind::Segment;
+        DrawColor color{};
+        Vec2 a{};              ///< centre, first point, or the transform's position
+        Vec2 b{};              ///< axis, second point, or the transform's (cos, sin)
+        Real value = 0;        ///< radius or point size
+        std::size_t first = 0; ///< polygons: their vertices in m_points
+        std::size_t count = 0;
+    };
+    void Add(Kind kind, std::span<const Vec2> vertices, const DrawColor& color);
+
+    std::vector<Command> m_commands;
+    std::vector<Vec2> m_points;
+};
+
+/// A colour the legend may explain, and what it stands for.
+struct LegendEntry
+{
+    DrawColor color{};
+    std::string label{};
+};
+
+/// The legend entries of `flags.colors`: body types, sleeping bodies, joints, contact points
+/// and normals, impulses, reactions, AABBs and the centre-of-mass axes.
+std::vector<LegendEntry> PaletteLegend(const DrawFlags& flags);
+
 /// One frame: what to draw on top of the world and the text to print.
 struct FrameOptions
 {
@@ -117,21 +172,36 @@ struct FrameOptions
     /// With a value: a legend under the caption, an arrow standing for this impulse (N·s)
     /// drawn at flags.impulseScale, so arrows in the image can be read off against it.
     std::optional<double> legendImpulse{};
+    /// Colours the overlay draws, for the legend (PaletteLegend(flags) covers World::Draw's).
+    std::vector<LegendEntry> overlayLegend{};
 };
 
-/// Draws `world` (World::Draw), the overlay, the legend arrow and the text into one image.
+/// Draws `world` (World::Draw), the overlay, the legend arrow and the text into one image:
+/// records the drawing into a DrawList and renders that.
 Image RenderFrame(OffscreenRenderer& renderer, const World& world, const FrameOptions& options);
+/// Draws a recorded frame (`drawing`: the world and its overlay; options.overlay is not
+/// called), then the caption, the impulse arrow and the colour legend: a swatch and a label for
+/// every legend colour (PaletteLegend(options.flags), then options.overlayLegend) that the
+/// drawing used, in that order, along the bottom edge.
+Image RenderFrame(OffscreenRenderer& renderer, const DrawList& drawing,
+                  const FrameOptions& options);
 
 /// A "nice" value (1, 2 or 5 times a power of ten) at least `value` (> 0).
 double NiceCeil(double value);
 
-// Text: a 5×7 bitmap font built in (printable ASCII and the middle dot ·), drawn `scale`
-// pixels per font pixel with one pixel between characters.
-/// Width and height in pixels of `text` at `scale`.
-int TextWidth(std::string_view text, int scale);
-int TextHeight(int scale);
-/// Draws `text` with its top-left corner at (x, y); pixels outside the image are skipped.
-void DrawText(Image& image, int x, int y, std::string_view text, Rgb color, int scale);
+// Text: DejaVu Sans (Debian's fonts-dejavu-core, the file CMake found when meff was built,
+// FontPath()) drawn through FreeType, anti-aliased, at `pixelSize` pixels per em. Text is UTF-8.
+// Safe to call from several threads (one FreeType face, behind a lock). Throws RenderError when
+// the font cannot be loaded.
+/// Width in pixels of `text` at `pixelSize` (the pen's advance, whole pixels per glyph).
+int TextWidth(std::string_view text, int pixelSize);
+/// Height in pixels of a line of text at `pixelSize`: the font's ascender to its descender.
+int TextHeight(int pixelSize);
+/// Draws `text` with the top-left corner of its line at (x, y), blending the glyphs' coverage
+/// over the image; pixels outside the image are skipped.
+void DrawText(Image& image, int x, int y, std::string_view text, Rgb color, int pixelSize);
+/// The font file text is drawn with.
+const std::string& FontPath();
 /// Blends `color` over a rectangle at opacity `alpha` in [0, 1] (a backing for text).
 void FillRect(Image& image, int x, int y, int width, int height, Rgb color, double alpha);
 
