@@ -18,6 +18,13 @@ endforeach()
 set(MEFF_INSTALLED_COMPONENTS ${MEFF_INSTALLED_TARGETS})
 list(TRANSFORM MEFF_INSTALLED_COMPONENTS REPLACE "^meff_" "")
 
+# The meff tool, for meff_add_validation_tests (cmake/MeffValidationTests.cmake): imported by
+# the package as meff::meff.
+if(TARGET meff)
+    list(APPEND MEFF_INSTALLED_TARGETS meff)
+    install(FILES ${CMAKE_CURRENT_LIST_DIR}/MeffValidationTests.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/meff)
+endif()
 install(TARGETS ${MEFF_INSTALLED_TARGETS} EXPORT meffTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

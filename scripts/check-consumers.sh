@@ -6,7 +6,9 @@
 #   3. the same game built with pkg-config's flags for meff;
 #   4. a game that adds meff's source tree with add_subdirectory: only the engine is built, with
 #      every optional dependency of meff (Box2D, OSMesa, libpng, CLI11, nlohmann-json, Catch2,
-#      Google Benchmark, Python) hidden from CMake, and the game's build type left alone.
+#      Google Benchmark, Python) hidden from CMake, and the game's build type left alone;
+#   5. a game's folder of levels turned into CTest tests by meff_add_validation_tests, run by
+#      the installed meff tool.
 # Everything is written under ${MEFF_CONSUMER_DIR:-build-consumers}.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -56,5 +58,11 @@ cmake -S tests/consumers/add_subdirectory -B "$WORK/add_subdirectory" \
 cmake --build "$WORK/add_subdirectory" -j"$(nproc)" >/dev/null
 check_contract_off "$WORK/add_subdirectory/compile_commands.json" game.cpp
 "$WORK/add_subdirectory/game"
+
+echo "== 5. meff_add_validation_tests: a game's folder of levels as CTest tests =="
+cmake -S tests/consumers/validation_tests -B "$WORK/validation_tests" \
+    -DCMAKE_PREFIX_PATH="$WORK/prefix" -DLEVELS="$SOURCE/tests/b2djson" >/dev/null
+ctest --test-dir "$WORK/validation_tests" --output-on-failure
+ls "$WORK/validation_tests/junit"
 
 echo "All consumer builds passed."

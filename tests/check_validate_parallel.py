@@ -12,7 +12,8 @@ Passes when, on the given scenes:
   * a scene made to diverge (meff at 4 velocity iterations against Box2D's 8) is a JUnit
     <failure> naming the divergence frame, the quantity, where, and both engines' values, and
     the scene's summary.json lists the same details;
-  * bad --shard and --jobs values are refused with exit status 2.
+  * bad --shard and --jobs values, and a JUnit file that cannot be written, are refused with
+    exit status 2 before anything runs.
 """
 import filecmp
 import os
@@ -126,7 +127,8 @@ with open(os.path.join(report, os.listdir(report)[0], "summary.json")) as summar
 if not summary["divergence"] or summary["divergence"][0]["quantity"] != quantity:
     sys.exit(f"FAIL: summary.json's divergence does not match: {summary['divergence']}")
 
-for bad in (["--shard", "0/3"], ["--shard", "4/3"], ["--shard", "1-3"], ["--jobs", "0"]):
+for bad in (["--shard", "0/3"], ["--shard", "4/3"], ["--shard", "1-3"], ["--jobs", "0"],
+            ["--junit", os.path.join(WORK, "no", "such", "folder.xml")]):
     run(["validate", SCENES[0], "--no-plot"] + bad, 2)
 print(f"validate --jobs/--shard/--junit: {len(SCENES)} scenes, jobs 1 = jobs 2, 3 shards cover "
       f"each once, failure at frame {frame} ({quantity} at {detail.group(1)})")

@@ -543,6 +543,19 @@ int Validate(const ValidateOptions& options)
         run.blockSolver = options.blockSolver == "on";
     }
 
+    if (!options.junitPath.empty())
+    {
+        // As for the report folder: a JUnit file that cannot be written is said before the run.
+        try
+        {
+            OutputFile probe(options.junitPath);
+        }
+        catch (const std::runtime_error& error)
+        {
+            std::fprintf(stderr, "meff validate: %s\n", error.what());
+            return kExitBadInput;
+        }
+    }
     std::optional<Reporter> reporter;
     std::vector<std::string> directories;
     if (!options.reportDir.empty())
