@@ -38,7 +38,9 @@
 // of the grid steps onto exactly).
 #include "commands.h"
 #include "output_file.h"
+#include "parallel.h"
 #include "plot_program.h"
+#include "progress.h"
 
 #include "meff/box2d_mirror.h"
 
@@ -82,6 +84,10 @@ struct SweepOptions
     std::optional<int> runs;
     bool noPlot = false;
     std::string cost = "wall";
+    /// Settings measured at once. 1 by default, unlike validate's: the costs are timings, and
+    /// runs sharing the cores time each other's turns (the errors are the same for every N).
+    int jobs = 1;
+    Shard shard;
 };
 
 struct Setting
@@ -1183,14 +1189,27 @@ int RunSweep(const SweepOptions& options)
 
     const bool cpu = options.cost == "cpu";
     std::printf("%zu settings (Box2D's by both engines); cost: ms of %s time per simulated second, "
-                "median of "
-                "%d timed run(s)\n",
-                grid.size(), cpu ? "CPU" : "wall", runs);
+                "median of %d timed run(s)%s\n",
+                grid.size(), cpu ? "CPU" : "wall", runs,
+                options.shard.count > 1 ? (", shard " + std::to_string(options.shard.index) + "/" +
+                                           std::to_string(options.shard.count))
+                                              .c_str()
+                                        : "");
     std::printf("%-38s | %10s %10s | %10s %10s\n", "setting", "meff ms/s", "error m", "Box2D ms/s",
                 "error m");
-    std::vector<Row> rows;
+    // This shard's settings, measured on --jobs threads and printed in grid order.
+    std::vector<std::size_t> mine;
     for (std::size_t n = 0; n < grid.size(); ++n)
     {
+        if (InShard(n, options.shard))
+        {
+            mine.push_back(n);
+        }
+    }
+    std::vector<std::pair<Row, std::optional<Row>>> measured(mine.size());
+    const auto measure = [&](std::size_t i)
+    {
+        const std::size_t n = mine[i];
         const Setting& setting = grid[n];
         const Scene settingScene = WithSetting(scene, setting);
         const std::string meffName = MeffEngineName(setting);
@@ -1233,7 +1252,19 @@ int RunSweep(const SweepOptions& options)
             {
                 row->msPerSecond.push_back(kNaN);
             }
-            if (row->trace.failed)
+        }
+        measured[i] = {std::move(meffRow), std::move(box2dRow)};
+    };
+    std::vector<Row> rows;
+    Progress progress("sweep " + scene.name, int(mine.size()), "settings");
+    const auto report = [&](std::size_t i)
+    {
+        auto& [meffRow, box2dRow] = measured[i];
+        const Setting& setting = grid[mine[i]];
+        progress.Clear();
+        for (const Row* row : {&meffRow, box2dRow ? &*box2dRow : nullptr})
+        {
+            if (row != nullptr && row->trace.failed)
             {
                 std::fprintf(stderr, "meff sweep: %s, %s: %s\n", row->engine.c_str(),
                              Describe(setting).c_str(), row->trace.failure.c_str());
@@ -1256,7 +1287,10 @@ int RunSweep(const SweepOptions& options)
         {
             rows.push_back(std::move(*box2dRow));
         }
-    }
+        progress.Update(int(i + 1));
+    };
+    RunInOrder(mine.size(), ResolveJobs(options.jobs), measure, report);
+    progress.Finish();
 
     for (const char* engine : {"meff", "meff_colour", "meff_soft_step", "box2d"})
     {
@@ -1332,6 +1366,13 @@ Command AddSweepCommand(CLI::App& parent)
                     "shared machine (sweep.csv has both)")
         ->check(CLI::IsMember({"wall", "cpu"}));
     app->add_flag("--no-plot", options->noPlot, "Skip the PNG plot");
+    app->add_option("--jobs,-j", options->jobs,
+                    "Measure N settings at once (default 1: the costs are timings, and runs "
+                    "sharing cores slow each other; every error is the same for any N)")
+        ->type_name("N")
+        ->check(CLI::Range(1, 1024));
+    AddShardOption(app, options->shard,
+                   "settings (setting n to shard n mod N + 1; sweep.csv then holds that share)");
     return {app, [options] { return RunSweep(*options); }};
 }
 
