@@ -237,17 +237,35 @@ TEST_CASE("b2dJson import: circle, polygon, edge, chain and loop fixtures, filte
 {
     const LoadedScene loaded = LoadSceneFile(Level("fixtures.json"));
     const std::vector<SceneShape>& terrain = loaded.scene.bodies.at(0).shapes;
-    // chain: 3 edges; loop: 4 edges (closed); the edge; the two-point polygon; the sensor.
-    REQUIRE(terrain.size() == 3 + 4 + 1 + 1 + 1);
-    CHECK(terrain[0].type == SceneShapeType::Segment);
-    CHECK(terrain[0].point1 == SceneVec2{-12, 4});
-    CHECK(terrain[2].point2 == SceneVec2{12, 4});
-    CHECK(terrain[6].point1 == SceneVec2{-1, 7}); // the loop's closing edge
-    CHECK(terrain[6].point2 == SceneVec2{-1, 6});
-    CHECK(terrain[7].point1 == SceneVec2{-4, 0});
-    CHECK(terrain[8].point2 == SceneVec2{8, 1}); // a two-point polygon is an edge
-    CHECK(terrain[9].sensor);
-    CHECK(terrain[9].type == SceneShapeType::Polygon);
+    // The open chain, the old-style loop, the edge with ghosts, the chain closed by repeating
+    // its first point, the two-point polygon, the sensor.
+    REQUIRE(terrain.size() == 6);
+    const SceneShape& hills = terrain[0];
+    CHECK(hills.type == SceneShapeType::Chain);
+    CHECK_FALSE(hills.loop);
+    CHECK(hills.points == std::vector<SceneVec2>{{12, 4}, {4, 0}, {-4, 0}, {-12, 4}});
+    // No ghosts in the level: the loader continues the end segments straight on.
+    CHECK(hills.prev == SceneVec2{20, 8});
+    CHECK(hills.next == SceneVec2{-20, 8});
+    const SceneShape& box = terrain[1]; // "loop": R.U.B.E. before r197
+    CHECK(box.type == SceneShapeType::Chain);
+    CHECK(box.loop);
+    CHECK(box.points.size() == 4);
+    const SceneShape& ledge = terrain[2];
+    CHECK(ledge.type == SceneShapeType::Segment);
+    CHECK(ledge.oneSided); // ghost vertices: Box2D 2.4's one-sided edge
+    CHECK(ledge.point1 == SceneVec2{4, 0});
+    CHECK(ledge.prev == SceneVec2{12, 4});
+    CHECK(ledge.next == SceneVec2{-12, 4});
+    const SceneShape& ring = terrain[3]; // a chain whose last point repeats its first
+    CHECK(ring.type == SceneShapeType::Chain);
+    CHECK(ring.loop);
+    CHECK(ring.points == std::vector<SceneVec2>{{3, 9}, {-3, 9}, {-3, 10}, {3, 10}});
+    CHECK(terrain[4].type == SceneShapeType::Segment); // a two-point polygon is an edge
+    CHECK_FALSE(terrain[4].oneSided);
+    CHECK(terrain[4].point2 == SceneVec2{8, 1});
+    CHECK(terrain[5].sensor);
+    CHECK(terrain[5].type == SceneShapeType::Polygon);
 
     const SceneShape& red = loaded.scene.bodies.at(1).shapes.at(0);
     CHECK(red.type == SceneShapeType::Circle);
@@ -260,9 +278,8 @@ TEST_CASE("b2dJson import: circle, polygon, edge, chain and loop fixtures, filte
     CHECK(blue.filter.category == 4);
     CHECK(blue.filter.mask == 0xFFFF); // absent: Box2D's default
     CHECK(blue.vertices.size() == 3);
-    REQUIRE(loaded.warnings.size() == 2);
-    CHECK(loaded.warnings[0].find("edges with ghost vertices") != std::string::npos);
-    CHECK(loaded.warnings[1].find("chain fixtures imported as 7 two-sided segments") !=
+    REQUIRE(loaded.warnings.size() == 1);
+    CHECK(loaded.warnings[0].find("edges with ghost vertices are one-sided, as in Box2D 2.4") !=
           std::string::npos);
 }
 

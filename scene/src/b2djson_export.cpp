@@ -325,9 +325,47 @@ class Exporter
             break;
         case SceneShapeType::Segment:
             out["edge"] = {{"vertex1", Vector(shape.point1)}, {"vertex2", Vector(shape.point2)}};
+            // A one-sided segment is Box2D 2.4's edge with ghost vertices.
+            if (shape.oneSided && shape.prev && shape.next)
+            {
+                out["edge"]["hasVertex0"] = true;
+                out["edge"]["hasVertex3"] = true;
+                out["edge"]["vertex0"] = Vector(*shape.prev);
+                out["edge"]["vertex3"] = Vector(*shape.next);
+            }
+            break;
+        case SceneShapeType::Chain:
+            out["chain"] = Chain(shape);
             break;
         }
         return out;
+    }
+
+    /// As b2dJson writes a b2ChainShape: a loop with its first point repeated at the end and
+    /// its neighbours as ghosts (Box2D 2.3's CreateLoop), an open chain with its ghosts.
+    Json Chain(const SceneShape& shape) const
+    {
+        std::vector<SceneVec2> points = shape.points;
+        std::optional<SceneVec2> prev = shape.prev;
+        std::optional<SceneVec2> next = shape.next;
+        if (shape.loop)
+        {
+            prev = points[points.size() - 1];
+            next = points[1];
+            points.push_back(points.front());
+        }
+        Json chain = {{"vertices", Points(points)}};
+        if (prev)
+        {
+            chain["hasPrevVertex"] = true;
+            chain["prevVertex"] = Vector(*prev);
+        }
+        if (next)
+        {
+            chain["hasNextVertex"] = true;
+            chain["nextVertex"] = Vector(*next);
+        }
+        return chain;
     }
 
     Json Points(const std::vector<SceneVec2>& points) const

@@ -413,6 +413,8 @@ class Importer
         LevelObject world(m_converter, level, "");
         const CustomProperties custom = world.Custom();
         m_foreignProperties += custom.foreign;
+        // A level meff wrote (it names its scene) means Box2D 2.4 by its ghost vertices.
+        m_writtenByMeff = custom.meff.count("meff.name") != 0;
         ConvertScene(world, custom, scene);
         ConvertBodies(world, scene);
         ConvertJoints(world, scene);
@@ -670,7 +672,7 @@ class Importer
         return out;
     }
 
-    /// Appends the fixture's shape (or shapes: a chain becomes one segment per edge).
+    /// Appends the fixture's shape.
     void ConvertFixture(LevelObject& fixture, const std::string& bodyPath, Out& shapes)
     {
         const CustomProperties custom = fixture.Custom();
@@ -757,48 +759,92 @@ class Importer
             LevelObject geometry(m_converter, *edge, fixture.PathOf("edge"));
             const std::optional<SceneVec2> a = geometry.Vector("vertex1", std::nullopt);
             const std::optional<SceneVec2> b = geometry.Vector("vertex2", std::nullopt);
-            if (geometry.Boolean("hasVertex0", false) || geometry.Boolean("hasVertex3", false))
+            if (!a || !b)
             {
+                return;
+            }
+            Out shape = {{"type", "segment"}, {"points", {Pair(*a), Pair(*b)}}};
+            std::map<std::string, std::string> from = {{"type", fixture.PathOf("edge")},
+                                                       {"points", fixture.PathOf("edge")}};
+            // Ghost vertices make Box2D 2.4's edge one-sided (b2EdgeShape::SetOneSided); a
+            // missing one is the end segment continued, as the scene loader fills it in.
+            const bool before = geometry.Boolean("hasVertex0", false);
+            const bool after = geometry.Boolean("hasVertex3", false);
+            if (before || after)
+            {
+                shape["one_sided"] = true;
+                Ghost(geometry, before, "vertex0", "prev", shape, from);
+                Ghost(geometry, after, "vertex3", "next", shape, from);
                 m_oneSidedEdges.push_back(fixture.Path());
             }
-            if (a && b)
-            {
-                add({{"type", "segment"}, {"points", {Pair(*a), Pair(*b)}}},
-                    {{"type", fixture.PathOf("edge")}, {"points", fixture.PathOf("edge")}});
-            }
+            add(shape, from);
         }
         else if (fixture.Find("chain") != nullptr || fixture.Find("loop") != nullptr)
         {
-            const bool loop = fixture.Find("chain") == nullptr;
-            const char* key = loop ? "loop" : "chain";
-            LevelObject geometry(m_converter, *fixture.Find(key), fixture.PathOf(key));
-            const std::optional<std::vector<SceneVec2>> points = geometry.Points("vertices");
-            if (!points)
-            {
-                return;
-            }
-            if (points->size() < 2)
-            {
-                m_converter.Error(geometry.PathOf("vertices"), "a chain needs at least 2 points");
-                return;
-            }
-            // meff has no chain shape (yet): each edge becomes a two-sided segment.
-            const std::size_t edges = loop ? points->size() : points->size() - 1;
-            for (std::size_t e = 0; e < edges; ++e)
-            {
-                const SceneVec2 p1 = (*points)[e];
-                const SceneVec2 p2 = (*points)[(e + 1) % points->size()];
-                add({{"type", "segment"}, {"points", {Pair(p1), Pair(p2)}}},
-                    {{"type", geometry.Path()},
-                     {"points", IndexPath(JoinPath(geometry.PathOf("vertices"), "x"), e)}});
-            }
-            m_chainEdges.emplace_back(fixture.Path(), edges);
+            ConvertChain(fixture, add);
         }
         else
         {
             m_converter.Error(fixture.Path(),
                               "has no shape (one of circle, polygon, edge, chain, loop)");
         }
+    }
+
+    /// A ghost vertex the level gives (`has`) as `levelKey`, into the shape's `key`.
+    void Ghost(LevelObject& geometry, bool has, const char* levelKey, const char* key, Out& shape,
+               std::map<std::string, std::string>& from)
+    {
+        if (!has)
+        {
+            return;
+        }
+        if (const std::optional<SceneVec2> ghost = geometry.Vector(levelKey, std::nullopt))
+        {
+            shape[key] = Pair(*ghost);
+            from[key] = geometry.PathOf(levelKey);
+        }
+    }
+
+    /// A chain, or a loop: R.U.B.E.'s "loop" (before r197), or a chain whose last point
+    /// repeats its first (how Box2D 2.3's CreateLoop stores one, and b2dJson writes it).
+    template <typename Add>
+    void ConvertChain(LevelObject& fixture, const Add& add)
+    {
+        const bool oldLoop = fixture.Find("chain") == nullptr;
+        const char* key = oldLoop ? "loop" : "chain";
+        LevelObject geometry(m_converter, *fixture.Find(key), fixture.PathOf(key));
+        std::optional<std::vector<SceneVec2>> points = geometry.Points("vertices");
+        if (!points)
+        {
+            return;
+        }
+        const bool closed = points->size() >= 4 && points->front() == points->back() && !oldLoop;
+        Out shape = {{"type", "chain"}};
+        std::map<std::string, std::string> from = {{"type", fixture.PathOf(key)},
+                                                   {"points", geometry.PathOf("vertices")}};
+        if (oldLoop || closed)
+        {
+            if (closed)
+            {
+                points->pop_back();
+            }
+            shape["loop"] = true;
+            from["loop"] = fixture.PathOf(key);
+        }
+        Out list = Out::array();
+        for (const SceneVec2& point : *points)
+        {
+            list.push_back(Pair(point));
+        }
+        shape["points"] = list;
+        if (!oldLoop && !closed)
+        {
+            Ghost(geometry, geometry.Boolean("hasPrevVertex", false), "prevVertex", "prev", shape,
+                  from);
+            Ghost(geometry, geometry.Boolean("hasNextVertex", false), "nextVertex", "next", shape,
+                  from);
+        }
+        add(shape, from);
     }
 
     template <typename Add>
@@ -1379,25 +1425,11 @@ class Importer
                              "solves them): " +
                              List(m_immovableJoints));
         }
-        if (!m_oneSidedEdges.empty())
+        if (!m_oneSidedEdges.empty() && !m_writtenByMeff)
         {
-            m_converter.Warn("edges with ghost vertices (hasVertex0/hasVertex3) imported as "
-                             "two-sided segments (meff has no one-sided edges): " +
+            m_converter.Warn("edges with ghost vertices are one-sided, as in Box2D 2.4 (two-sided "
+                             "in 2.3, which R.U.B.E. targets): " +
                              List(m_oneSidedEdges));
-        }
-        if (!m_chainEdges.empty())
-        {
-            std::vector<std::string> chains;
-            std::size_t edges = 0;
-            for (const auto& [path, count] : m_chainEdges)
-            {
-                chains.push_back(path);
-                edges += count;
-            }
-            m_converter.Warn("chain fixtures imported as " + std::to_string(edges) +
-                             " two-sided segments, one per edge (meff has no chain shape "
-                             "yet): " +
-                             List(chains));
         }
         std::vector<std::string> renamed = m_bodyNames.Changed();
         for (const std::string& name : m_jointNames.Changed())
@@ -1433,7 +1465,7 @@ class Importer
     std::vector<std::string> m_inactiveJoints;
     std::vector<std::string> m_immovableJoints;
     std::vector<std::string> m_oneSidedEdges;
-    std::vector<std::pair<std::string, std::size_t>> m_chainEdges;
+    bool m_writtenByMeff = false;
 };
 
 /// The loader's messages, "FILE: SCENE.PATH: MESSAGE", said about the level's paths.
