@@ -364,9 +364,10 @@ TEST_CASE("Scene errors: prismatic and wheel joint fields", "[scene][errors][pri
                    "x.json: joints[1].max_motor_torque: must be >= 0, got -1",
                    "x.json: joints[1].stiffness_hz: must be >= 0, got -4",
                    "x.json: joints[1].max_motor_force: unknown field (known fields here: type, "
-                   "name, body_a, body_b, collide_connected, anchor, axis, enable_limit, "
-                   "lower_translation, upper_translation, enable_motor, motor_speed, "
-                   "max_motor_torque, stiffness_hz, damping_ratio)",
+                   "name, body_a, body_b, collide_connected, local_anchor_a, local_anchor_b, "
+                   "anchor, local_axis_a, axis, enable_limit, lower_translation, "
+                   "upper_translation, enable_motor, motor_speed, max_motor_torque, "
+                   "stiffness_hz, damping_ratio)",
                    "x.json: joints[2].axis: required field is missing"});
 }
 
@@ -475,7 +476,8 @@ TEST_CASE("Scene errors: weld, motor and mouse joint fields", "[scene][errors][j
               "x.json: joints[0].anchor: required field is missing",
               "x.json: joints[0].stiffness_hz: must be >= 0, got -1",
               "x.json: joints[0].max_force: unknown field (known fields here: type, name, body_a, "
-              "body_b, collide_connected, anchor, stiffness_hz, damping_ratio)",
+              "body_b, collide_connected, local_anchor_a, local_anchor_b, anchor, "
+              "reference_angle, stiffness_hz, damping_ratio)",
               "x.json: joints[1].linear_offset: must be [x, y] with two finite numbers, got [1]",
               "x.json: joints[1].max_torque: must be >= 0, got -2",
               "x.json: joints[1].correction_factor: must be in [0, 1], got 1.5",
