@@ -157,6 +157,65 @@ TEST_CASE("b2dJson round trip: the level's joint fields build the same world, bi
     }
 }
 
+TEST_CASE("b2dJson round trip: the soft step's settings travel as meff.soft_step")
+{
+    // No sample uses the soft step, so a scene is given every member of world.soft_step away
+    // from its default (and then only some), and must come back equal.
+    Scene original = LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/scenes/chain20.json");
+    original.world.solver.kind = SolverKind::SoftStep;
+    SoftStepSettings& soft = original.world.solver.softStep;
+    soft.substeps = 8;
+    soft.relaxIterations = 2;
+    soft.contacts = SoftContactModel::Soft;
+    soft.contactCorrection = Real(0.2);
+    soft.contactHertz = Real(45.5);
+    soft.contactDampingRatio = Real(0.7);
+    soft.maxPushOutSpeed = Real(1.25);
+    soft.jointHertz = Real(60.1);
+    soft.jointDampingRatio = Real(0.3);
+    const Scene defaultsOnly = [&]
+    {
+        Scene scene = original;
+        scene.world.solver.softStep = SoftStepSettings{};
+        return scene;
+    }();
+    Scene some = original;
+    some.world.solver.softStep = SoftStepSettings{};
+    some.world.solver.softStep.substeps = 2;
+    some.world.solver.softStep.jointDampingRatio = Real(0.1);
+    const Scene* const scenes[] = {&original, &defaultsOnly, &some};
+    for (const Scene* scene : scenes)
+    {
+        for (const bool hex : {false, true})
+        {
+            INFO("substeps " << scene->world.solver.softStep.substeps << ", hex floats " << hex);
+            const std::string level = ExportB2dJson(*scene, {.hexFloats = hex});
+            const nlohmann::json parsed = nlohmann::json::parse(level);
+            bool named = false;
+            for (const nlohmann::json& property : parsed["customProperties"])
+            {
+                named = named || property["name"] == "meff.soft_step";
+            }
+            // Written only when it says something.
+            CHECK(named == (scene != &defaultsOnly));
+            CHECK(level.find("\"soft_step\"") != std::string::npos); // meff.solver
+            const LoadedScene back = ImportB2dJson(level, scene->sourcePath);
+            CHECK(back.warnings.empty());
+            CHECK(back.scene.world.solver.softStep == scene->world.solver.softStep);
+            CHECK(back.scene == *scene);
+            CHECK(ExportB2dJson(back.scene, {.hexFloats = hex}) == level);
+            CHECK(ParseScene(back.meffText, scene->sourcePath) == *scene);
+        }
+    }
+
+    // A bad value in the property is the loader's message, said about the property.
+    using Messages = std::vector<std::string>;
+    CHECK(ErrorsOf(R"({"customProperties": [{"name": "meff.solver", "string": "soft_step"},
+                       {"name": "meff.soft_step", "string": "{\"substeps\": 0}"}]})") ==
+          Messages{"level.json: customProperties[1] (meff.soft_step).substeps: must be an "
+                   "integer in [1, 1000], got 0"});
+}
+
 TEST_CASE("b2dJson import: world settings and bodies, in every convention")
 {
     const LoadedScene loaded = LoadSceneFile(Level("world_and_bodies.json"));

@@ -89,6 +89,10 @@ class Exporter
                 Property(custom, name, "bool", value);
             }
         }
+        if (const std::optional<Json> soft = SoftStep())
+        {
+            Property(custom, "meff.soft_step", "string", soft->dump());
+        }
         if (const std::optional<Json> validate = Validate())
         {
             Property(custom, "meff.validate", "string", validate->dump());
@@ -128,6 +132,47 @@ class Exporter
     {
         list.push_back({{"name", name},
                         {type, value.is_number_float() ? Number(value.get<double>()) : value}});
+    }
+
+    /// world.soft_step (SoftStepSettings) with the members that differ from the defaults, or
+    /// nothing when none does. The Real members go as the doubles they convert to, which the
+    /// loader turns back into the same floats.
+    std::optional<Json> SoftStep() const
+    {
+        const SoftStepSettings& soft = m_scene.world.solver.softStep;
+        const SoftStepSettings defaults;
+        Json out = Json::object();
+        if (soft.substeps != defaults.substeps)
+        {
+            out["substeps"] = soft.substeps;
+        }
+        if (soft.relaxIterations != defaults.relaxIterations)
+        {
+            out["relax_iterations"] = soft.relaxIterations;
+        }
+        if (soft.contacts != defaults.contacts)
+        {
+            out["contacts"] = soft.contacts == SoftContactModel::Rigid ? "rigid" : "soft";
+        }
+        const std::tuple<const char*, Real, Real> numbers[] = {
+            {"contact_correction", soft.contactCorrection, defaults.contactCorrection},
+            {"contact_hertz", soft.contactHertz, defaults.contactHertz},
+            {"contact_damping_ratio", soft.contactDampingRatio, defaults.contactDampingRatio},
+            {"max_push_out_speed", soft.maxPushOutSpeed, defaults.maxPushOutSpeed},
+            {"joint_hertz", soft.jointHertz, defaults.jointHertz},
+            {"joint_damping_ratio", soft.jointDampingRatio, defaults.jointDampingRatio}};
+        for (const auto& [name, value, fallback] : numbers)
+        {
+            if (value != fallback)
+            {
+                out[name] = double(value);
+            }
+        }
+        if (out.empty())
+        {
+            return std::nullopt;
+        }
+        return out;
     }
 
     /// The "validate" section when anything in it differs from the defaults.

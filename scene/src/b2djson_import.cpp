@@ -507,6 +507,13 @@ class Importer
                 put(key, *flag, custom.meff.at(name).second);
             }
         }
+        // world.soft_step is a section of its own: the loader checks each member, its
+        // messages naming the property.
+        if (std::optional<Json> soft = PropertyJson(m_converter, custom, "meff.soft_step"))
+        {
+            put("soft_step", std::move(*soft),
+                custom.meff.at("meff.soft_step").second + " (meff.soft_step)");
+        }
         scene["world"] = settings;
         m_converter.From("world", "");
         for (const char* section : {"validate", "render", "analytic"})
