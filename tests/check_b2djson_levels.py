@@ -10,7 +10,9 @@ LEVEL_DIR (every body, fixture and joint kind, every convention of the format):
     content) and every level passes against Box2D 2.4.1; the JUnit XML is well-formed, has one
     test case per level, names each level's file, and counts no failure or error;
   * `meff export` of a sample scene gives a level that `meff run` takes directly and that
-    imports back; `--format b2djson` forced on a meff scene is refused (exit status 2).
+    imports back; `meff render`, `bench` and `sweep` take a level directly too (by content, and
+    with `--format b2djson`); `--format b2djson` forced on a meff scene is refused (exit
+    status 2).
 """
 import glob
 import os
@@ -69,9 +71,23 @@ level = os.path.join(WORK, "exported.json")
 run(["export", SAMPLE, "-o", level])
 run(["run", level, "--frames", "30"])
 run(["import", level, "-o", os.path.join(WORK, "back.json")])
+# The other commands take a level directly too, by its content and with --format b2djson.
+first = levels[0]
+frames = os.path.join(WORK, "frames")
+run(["render", first, "--frames", "2", "--size", "80x60", "--out", frames])
+if sorted(os.listdir(frames)) != [f"frame_{k:05d}.png" for k in range(3)]:
+    sys.exit(f"FAIL: render of {first} wrote {sorted(os.listdir(frames))}")
+benched = run(["bench", "--format", "b2djson", first, "--steps", "10", "--runs", "1"])
+if os.path.splitext(os.path.basename(first))[0] not in benched.stdout:
+    sys.exit(f"FAIL: bench of {first} does not name it:\n{benched.stdout}")
+swept = os.path.join(WORK, "sweep")
+run(["sweep", level, "--format", "b2djson", "--quick", "--no-plot", "--shard", "1/9", "--out",
+     swept])
+if not os.path.isfile(os.path.join(swept, "sweep.csv")):
+    sys.exit(f"FAIL: sweep of {level} wrote no sweep.csv")
 refused = run(["run", SAMPLE, "--format", "b2djson"], expect=2)
 if SAMPLE not in refused.stderr:
     sys.exit(f"FAIL: forcing b2djson on a meff scene should name the file: {refused.stderr!r}")
 print(f"b2dJson levels: {len(levels)} imported and validated with --jobs 2 --junit "
-      f"({len(cases)} passing test cases); {os.path.basename(SAMPLE)} exported, run and "
-      "imported back")
+      f"({len(cases)} passing test cases); {os.path.basename(SAMPLE)} exported, run, swept and "
+      "imported back; a level rendered and benched")
