@@ -18,7 +18,8 @@
 // meff alone; each back end is its own "engine" in sweep.csv (meff, meff_colour,
 // meff_soft_step, box2d) with its own Pareto front.
 // Every setting runs the same simulated time (--seconds, 4 s by default), so a finer dt takes
-// proportionally more steps. --quick runs a 9-setting grid over 2 s, for tests.
+// proportionally more steps. --quick runs 12 settings (9 in both engines, 3 by meff alone)
+// over 2 s, for tests.
 //
 // Each setting is run once to measure (untimed: the measuring would disturb the timing), then
 // --runs times to time, each timed run repeating the simulation until it has taken 20 ms.
@@ -1351,8 +1352,10 @@ Command AddSweepCommand(CLI::App& parent)
     AddFormatOption(app);
     app->add_option("--out", options->outDir, "Output directory (default out/sweep/<scene>)")
         ->type_name("DIR");
-    app->add_flag("--quick", options->quick,
-                  "A small grid (9 settings) over 2 s, one timed run each: for tests");
+    app->add_flag(
+        "--quick", options->quick,
+        "A small grid (12 settings: 9 in both engines, 3 by meff alone) over 2 s, one timed run "
+        "each: for tests");
     app->add_option("--seconds", options->seconds,
                     "Simulated time of every run (default 4, or 2 with --quick)")
         ->check(CLI::Range(1.0 / kSampleHz, 600.0));

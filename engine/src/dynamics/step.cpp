@@ -20,6 +20,7 @@
 #include "dynamics/world_state.h"
 #include "meff/world.h"
 
+#include <chrono>
 #include <exception>
 #include <string>
 
@@ -57,6 +58,35 @@ class SteppingGuard
     int m_exceptions;
 };
 
+/// Adds the time from its construction to its destruction to `total` (ms): a stage's share of
+/// World::GetProfile.
+class StageTimer
+{
+  public:
+    explicit StageTimer(double& total) : m_total(total), m_start(std::chrono::steady_clock::now())
+    {
+    }
+    ~StageTimer()
+    {
+        m_total +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_start)
+                .count();
+    }
+    StageTimer(const StageTimer&) = delete;
+    StageTimer& operator=(const StageTimer&) = delete;
+
+  private:
+    double& m_total;
+    std::chrono::steady_clock::time_point m_start;
+};
+
+template <typename Stage>
+void Timed(double& total, Stage&& stage)
+{
+    const StageTimer timer(total);
+    stage();
+}
+
 } // namespace
 
 void World::Step(Real dt)
@@ -79,21 +109,24 @@ void World::Step(Real dt)
     }
     const SteppingGuard stepping(world);
 
+    StepProfile& profile = world.profile;
+    profile = {};
+    const StageTimer whole(profile.step);
     const StepContext step = BeginStep(world, dt);
     try
     {
         if (world.newShapes)
         {
-            FindNewContacts(world);
+            Timed(profile.findContacts, [&] { FindNewContacts(world); });
         }
-        Collide(world);
+        Timed(profile.collide, [&] { Collide(world); });
 
-        Solve(world, step);
-        SynchronizeShapes(world);
-        FindNewContacts(world);
+        Timed(profile.solve, [&] { Solve(world, step); });
+        Timed(profile.synchronize, [&] { SynchronizeShapes(world); });
+        Timed(profile.findContacts, [&] { FindNewContacts(world); });
         if (world.continuous)
         {
-            SolveContinuous(world, step);
+            Timed(profile.continuous, [&] { SolveContinuous(world, step); });
         }
     }
     catch (const SimulationError&)

@@ -1279,6 +1279,10 @@ std::uint64_t World::GetStepCount() const
 {
     return State().stepCount;
 }
+const StepProfile& World::GetProfile() const
+{
+    return State().profile;
+}
 const SolverSettings& World::GetSolverSettings() const
 {
     return State().solver;

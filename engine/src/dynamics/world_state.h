@@ -91,6 +91,7 @@ struct WorldState
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;
+    StepProfile profile; ///< the last step's stage timings (World::GetProfile)
     /// A step failed (a non-finite state, or an exception from the pre-solve callback left it
     /// half done); stepping is refused until RestoreSnapshot.
     bool failed = false;
