@@ -15,7 +15,9 @@ does what the README promises:
 
 WORK_DIR is emptied first and holds everything a case writes.
 """
+import json
 import os
+import re
 import signal
 import stat
 import subprocess
@@ -330,6 +332,55 @@ def case_bench_threads():
                                       "--steps", "2"])
         if status != 2 or "--threads" not in stderr or stdout:
             fail("--threads %s: status %d" % (threads, status))
+
+
+def case_bench_scenes():
+    """Every scene of samples/bench/ loads and steps under each back end, timed by
+    `meff bench --against none` (meff alone): one line per scene with its body count, its
+    contacts and finite times, and a JSON report that says it ran against nothing."""
+    folder = os.path.join(SOURCE, "samples", "bench")
+    scenes = sorted(os.path.join(folder, name) for name in os.listdir(folder)
+                    if name.endswith(".json"))
+    if len(scenes) < 11:
+        fail("expected the 11 bench scenes, found %d" % len(scenes))
+    bodies = {}
+    for path in scenes:
+        with open(path) as scene:
+            content = json.load(scene)
+        bodies[content["name"]] = len(content["bodies"])
+    for solver in ("box2d", "colour", "soft_step"):
+        report = os.path.join(WORK, solver + ".json")
+        status, stdout, stderr = run(["bench"] + scenes + ["--against", "none", "--steps", "3",
+                                                           "--runs", "1", "--solver", solver,
+                                                           "--json", report], timeout=600)
+        if status != 0 or stderr:
+            fail("--solver %s: status %d, stderr %r" % (solver, status, stderr))
+        lines = stdout.splitlines()
+        if (len(lines) != len(scenes) + 2 or "Box2D" in lines[0]
+                or "(--against none)" not in lines[-1]):
+            fail("--solver %s: expected a header without Box2D, a line per scene and the note "
+                 "on meff alone, got %r" % (solver, stdout))
+        for line in lines[1:-1]:
+            # scene, bodies, contacts | median (min-max), and nothing after: no Box2D columns.
+            match = re.fullmatch(r"(\S+) +(\d+) +(\d+) \| +([\d.]+) \( *([\d.]+)- *([\d.]+)\)",
+                                 line)
+            if not match:
+                fail("--solver %s: not a line of meff's times alone: %r" % (solver, line))
+            name, count, contacts = match[1], int(match[2]), int(match[3])
+            median, low, high = (float(match[i]) for i in (4, 5, 6))
+            # Every scene but joint_grid (whose circles never collide) has touching shapes.
+            touching = contacts > 0 or (name == "joint_grid" and contacts == 0)
+            if count != bodies.get(name) or not touching or not 0 < low <= median <= high:
+                fail("--solver %s: line %r (the scene has %s bodies)" % (solver, line,
+                                                                          bodies.get(name)))
+        with open(report) as text:
+            entries = json.load(text)
+        if sorted(entry["scene"] for entry in entries) != sorted(bodies):
+            fail("--solver %s: the JSON report's scenes %r" % (solver, entries))
+        for entry in entries:
+            if (entry["against"] != "none" or entry["steps"] != 3 or entry["runs"] != 1
+                    or "box2d_ms_per_step" in entry or entry["meff_ms_per_step"]["median"] <= 0):
+                fail("--solver %s: JSON entry %r" % (solver, entry))
 
 
 def main():
