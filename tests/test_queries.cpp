@@ -251,6 +251,8 @@ bool RayCastShape(const World& world, ShapeId id, const RayCastInput& input, Ray
         return world.GetChain(id).IsNull()
                    ? RayCast(world.GetChainSegment(id), xf, input, output)
                    : RayCast(world.GetChainSegment(id).segment, xf, input, output);
+    case ShapeType::Capsule:
+        return RayCast(world.GetCapsule(id), xf, input, output);
     }
     return false;
 }
@@ -268,6 +270,8 @@ bool TestPointShape(const World& world, ShapeId id, Vec2 point)
         return TestPoint(world.GetSegment(id), xf, point);
     case ShapeType::ChainSegment:
         return TestPoint(world.GetChainSegment(id), xf, point);
+    case ShapeType::Capsule:
+        return TestPoint(world.GetCapsule(id), xf, point);
     }
     return false;
 }
@@ -284,6 +288,8 @@ DistanceProxy ProxyOf(const World& world, ShapeId id)
         return MakeProxy(world.GetSegment(id));
     case ShapeType::ChainSegment:
         return MakeProxy(world.GetChainSegment(id));
+    case ShapeType::Capsule:
+        return MakeProxy(world.GetCapsule(id));
     }
     return {};
 }
@@ -883,7 +889,8 @@ TEST_CASE("Shape ray casts and point tests agree with Box2D bit for bit", "[quer
             contains = TestPoint(pair.segment, xf, point);
             break;
         case ShapeType::ChainSegment:
-            FAIL("RandomShape makes no chain segments");
+        case ShapeType::Capsule:
+            FAIL("RandomShape makes no chain segments or capsules");
             break;
         }
         REQUIRE(hit == b2Hit);

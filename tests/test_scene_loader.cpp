@@ -171,7 +171,7 @@ TEST_CASE("Scene errors: unknown fields", "[scene][errors]")
     CHECK(ErrorsOf(SceneWithShape(R"({ "type": "circle", "radius": 1, "frition": 0.2 })")) ==
           Messages{"x.json: bodies[0].shapes[0].frition: unknown field (known fields here: type, "
                    "radius, center, density, friction, restitution, restitution_threshold, "
-                   "filter, sensor)"});
+                   "tangent_speed, rolling_resistance, filter, sensor)"});
 }
 
 TEST_CASE("Scene errors: a key given twice in one object", "[scene][errors]")
@@ -340,7 +340,9 @@ TEST_CASE("Scene errors: joint values out of range", "[scene][errors]")
                    "give a length > 0",
                    "x.json: joints[2].max_length: must be >= min_length (0.7), got 0.5",
                    "x.json: joints[4].type: must be one of \"revolute\", \"distance\", "
-                   "\"prismatic\", \"wheel\", \"weld\", \"motor\", \"mouse\", got \"gear\""});
+                   "\"prismatic\", \"wheel\", \"weld\", \"motor\", \"mouse\", \"friction\", "
+                   "\"pulley\", got "
+                   "\"gear\""});
 }
 
 TEST_CASE("Scene errors: prismatic and wheel joint fields", "[scene][errors][prismatic][wheel]")
@@ -485,7 +487,8 @@ TEST_CASE("Scene errors: weld, motor and mouse joint fields", "[scene][errors][j
               "\"ground\"",
               "x.json: joints[2].max_force: required field is missing",
               "x.json: joints[3].type: must be one of \"revolute\", \"distance\", \"prismatic\", "
-              "\"wheel\", \"weld\", \"motor\", \"mouse\", got \"spring\""});
+              "\"wheel\", \"weld\", \"motor\", \"mouse\", \"friction\", \"pulley\", got "
+              "\"spring\""});
 }
 
 TEST_CASE("Scene files: weld, motor and mouse joints load their fields", "[scene][joints]")

@@ -249,6 +249,9 @@ Camera FitCamera(const World& world, int width, int height)
             case ShapeType::ChainSegment:
                 box = ComputeAABB(world.GetChainSegment(shape), xf);
                 break;
+            case ShapeType::Capsule:
+                box = ComputeAABB(world.GetCapsule(shape), xf);
+                break;
             }
             bounds = any ? Combine(bounds, box) : box;
             any = true;

@@ -7,9 +7,11 @@
 #include "joint_frame.h"
 
 #include "meff/b2djson.h"
+#include "meff/box2d_v3_features.h"
 #include "meff/collision.h"
 
 #include <cmath>
+#include <string>
 #include <tuple>
 
 namespace meff
@@ -341,6 +343,16 @@ class Exporter
         {
             out["filter-groupIndex"] = shape.filter.group;
         }
+        // meff's surface fields, which R.U.B.E. has no place for, go as meff.* properties.
+        Json custom = Json::array();
+        if (shape.tangentSpeed != 0)
+        {
+            Property(custom, "meff.tangent_speed", "float", shape.tangentSpeed);
+        }
+        if (shape.rollingResistance != 0)
+        {
+            Property(custom, "meff.rolling_resistance", "float", shape.rollingResistance);
+        }
         switch (shape.type)
         {
         case SceneShapeType::Circle:
@@ -361,8 +373,7 @@ class Exporter
                                    {"half_height", shape.halfHeight},
                                    {"center", Pair(shape.center)},
                                    {"angle", shape.angle}};
-            out["customProperties"] =
-                Json::array({{{"name", "meff.box"}, {"string", authored.dump()}}});
+            Property(custom, "meff.box", "string", authored.dump());
             break;
         }
         case SceneShapeType::Polygon:
@@ -382,6 +393,12 @@ class Exporter
         case SceneShapeType::Chain:
             out["chain"] = Chain(shape);
             break;
+        case SceneShapeType::Capsule:
+            break; // refused by ExportB2dJson before anything is written
+        }
+        if (!custom.empty())
+        {
+            out["customProperties"] = custom;
         }
         return out;
     }
@@ -503,6 +520,14 @@ class Exporter
             out["maxTorque"] = Number(joint.maxTorque);
             out["correctionFactor"] = Number(joint.correctionFactor);
             break;
+        case JointType::Friction:
+            out["type"] = "friction";
+            anchors();
+            out["maxForce"] = Number(joint.maxForce);
+            out["maxTorque"] = Number(joint.maxTorque);
+            break;
+        case JointType::Pulley:
+            Refuse(joint, index, "pulley");
         case JointType::Mouse:
             out["type"] = "mouse";
             out["anchorB"] = Vector(joint.anchor); // b2dJson's mouse anchor is a world point
@@ -520,6 +545,15 @@ class Exporter
                 Json::array({{{"name", "meff.joint"}, {"string", form->dump()}}});
         }
         return out;
+    }
+
+    /// Throws for a joint b2dJson has no form for, naming it.
+    [[noreturn]] void Refuse(const SceneJoint& joint, std::size_t index, const char* type) const
+    {
+        throw SceneError({m_scene.sourcePath + ": joints[" + std::to_string(index) + "] (\"" +
+                          joint.name + "\"): a " + type +
+                          " joint cannot be exported: b2dJson (R.U.B.E.) has no " + type +
+                          " joint that Box2D 2.4.1 builds from it"});
     }
 
     /// A rod or spring is a "distance" joint as Box2D 2.3 (R.U.B.E.) has it; a slack link
@@ -551,6 +585,7 @@ class Exporter
         case JointType::Wheel:
         case JointType::Weld:
         case JointType::Distance:
+        case JointType::Friction:
             if (!joint.localAnchors)
             {
                 if (joint.type == JointType::Distance)
@@ -569,7 +604,7 @@ class Exporter
                 form["axis"] = Pair(joint.axis);
             }
             if (joint.type != JointType::Wheel && joint.type != JointType::Distance &&
-                !joint.referenceAngle)
+                joint.type != JointType::Friction && !joint.referenceAngle)
             {
                 form["reference_angle"] = nullptr; // as created
             }
@@ -603,6 +638,12 @@ class Exporter
 
 std::string ExportB2dJson(const Scene& scene, const B2dJsonExportOptions& options)
 {
+    const std::vector<std::string> lacking =
+        FieldsBox2D241Lacks(scene, "b2dJson cannot hold it, so the scene is not exported");
+    if (!lacking.empty())
+    {
+        throw SceneError(lacking);
+    }
     return FormatJson(Exporter(scene, options).Level());
 }
 

@@ -708,6 +708,24 @@ class Importer
             material_put("restitution_threshold", *threshold, "restitutionThreshold");
         }
         material_put("sensor", fixture.Boolean("sensor", false), "sensor");
+        // meff's surface fields, which R.U.B.E. has no place for, travel as meff.* properties.
+        for (const auto& [key, name] : {std::pair{"tangent_speed", "meff.tangent_speed"},
+                                        std::pair{"rolling_resistance", "meff.rolling_resistance"}})
+        {
+            if (const Json* value = PropertyValue(m_converter, custom, name, "float"))
+            {
+                const std::string& path = custom.meff.at(name).second;
+                if (const std::optional<double> number = ReadNumber(*value))
+                {
+                    material[key] = *number;
+                    materialFrom[key] = path;
+                }
+                else
+                {
+                    m_converter.Error(path, "must hold a number in \"float\"", value);
+                }
+            }
+        }
         Out filter = Out::object();
         const auto filterPut = [&](const char* key, const char* levelKey, long long fallback,
                                    long long low, long long high)
@@ -1011,18 +1029,19 @@ class Importer
             m_inactiveJoints.push_back(joint.Path());
             return std::nullopt;
         }
-        static const std::set<std::string> kMissing = {"pulley", "gear", "friction"};
+        static const std::set<std::string> kMissing = {"pulley", "gear"};
         if (kMissing.count(type) != 0)
         {
             m_converter.Error(joint.PathOf("type"),
-                              "meff has no " + type +
-                                  " joints yet (pulley, gear and friction "
-                                  "joints are not in the scene format)",
+                              "meff does not read b2dJson " + type +
+                                  " joints (meff's export refuses them too: write the joint in "
+                                  "a meff scene)",
                               joint.Find("type"));
             return std::nullopt;
         }
-        static const std::set<std::string> kKnown = {"revolute", "distance", "prismatic", "wheel",
-                                                     "weld",     "motor",    "mouse",     "rope"};
+        static const std::set<std::string> kKnown = {"revolute", "distance", "prismatic",
+                                                     "wheel",    "weld",     "motor",
+                                                     "mouse",    "rope",     "friction"};
         if (kKnown.count(type) == 0)
         {
             m_converter.Error(joint.PathOf("type"),
@@ -1080,7 +1099,7 @@ class Importer
             }
         };
         if (type == "revolute" || type == "weld" || type == "prismatic" || type == "wheel" ||
-            type == "distance" || type == "rope")
+            type == "distance" || type == "rope" || type == "friction")
         {
             localAnchors();
         }
@@ -1166,6 +1185,11 @@ class Importer
             number("max_force", "maxForce");
             number("max_torque", "maxTorque");
             number("correction_factor", "correctionFactor");
+        }
+        if (type == "friction")
+        {
+            number("max_force", "maxForce");
+            number("max_torque", "maxTorque");
         }
         if (type == "mouse")
         {
@@ -1314,7 +1338,7 @@ class Importer
             {"revolute", JointType::Revolute},   {"distance", JointType::Distance},
             {"prismatic", JointType::Prismatic}, {"wheel", JointType::Wheel},
             {"weld", JointType::Weld},           {"motor", JointType::Motor},
-            {"mouse", JointType::Mouse}};
+            {"mouse", JointType::Mouse},         {"friction", JointType::Friction}};
         SceneJoint frame;
         const auto type = kTypes.find(joint.value("type", ""));
         if (type == kTypes.end())

@@ -187,6 +187,26 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(def);
     }
+    case JointType::Friction:
+    {
+        FrictionJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.localAnchorA = frame.localAnchorA;
+        def.localAnchorB = frame.localAnchorB;
+        def.maxForce = Real(joint.maxForce);
+        def.maxTorque = Real(joint.maxTorque);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(def);
+    }
+    case JointType::Pulley:
+    {
+        PulleyJointDef def = world.MakePulleyJointDef(
+            bodyA, bodyB, ToEngine(joint.groundAnchorA), ToEngine(joint.groundAnchorB),
+            ToEngine(joint.anchorA), ToEngine(joint.anchorB), Real(joint.ratio));
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(def);
+    }
     case JointType::Mouse:
     {
         // The anchor grabs body B; then the pointer moves to the target (Box2D's testbed

@@ -15,8 +15,12 @@ EngineShape ToEngineShape(const SceneShape& shape)
     case SceneShapeType::Circle:
         return Circle{ToEngine(shape.center), Real(shape.radius)};
     case SceneShapeType::Box:
-        return MakeOffsetBox(Real(shape.halfWidth), Real(shape.halfHeight), ToEngine(shape.center),
-                             Real(shape.angle));
+    {
+        Polygon box = MakeOffsetBox(Real(shape.halfWidth), Real(shape.halfHeight),
+                                    ToEngine(shape.center), Real(shape.angle));
+        box.radius = Real(shape.rounding); // rounded above the skin, else sharp
+        return box;
+    }
     case SceneShapeType::Polygon:
     {
         std::vector<Vec2> points;
@@ -25,8 +29,12 @@ EngineShape ToEngineShape(const SceneShape& shape)
         {
             points.push_back(ToEngine(vertex));
         }
-        return MakePolygon(points);
+        Polygon polygon = MakePolygon(points);
+        polygon.radius = Real(shape.rounding);
+        return polygon;
     }
+    case SceneShapeType::Capsule:
+        return Capsule{ToEngine(shape.centerA), ToEngine(shape.centerB), Real(shape.radius)};
     case SceneShapeType::Segment:
     {
         Segment segment;
@@ -52,6 +60,8 @@ ShapeDef ToShapeDef(const SceneShape& shape)
     def.friction = Real(shape.friction);
     def.restitution = Real(shape.restitution);
     def.restitutionThreshold = Real(shape.restitutionThreshold);
+    def.tangentSpeed = Real(shape.tangentSpeed);
+    def.rollingResistance = Real(shape.rollingResistance);
     def.filter.categoryBits = shape.filter.category;
     def.filter.maskBits = shape.filter.mask;
     def.filter.groupIndex = shape.filter.group;
@@ -71,6 +81,10 @@ std::string SceneField(const SceneShape& shape, const std::string& engineField)
     {
         return "";
     }
+    if (engineField == "Polygon::radius")
+    {
+        return "radius";
+    }
     if (engineField.rfind("Polygon::", 0) == 0)
     {
         if (shape.type != SceneShapeType::Box)
@@ -87,12 +101,28 @@ std::string SceneField(const SceneShape& shape, const std::string& engineField)
     {
         return "points";
     }
+    if (engineField == "Capsule::center1")
+    {
+        return "center_a";
+    }
+    if (engineField == "Capsule::center2")
+    {
+        return "center_b";
+    }
     const std::size_t colon = engineField.rfind("::");
     const std::string member =
         colon == std::string::npos ? engineField : engineField.substr(colon + 2);
     if (member == "restitutionThreshold")
     {
         return "restitution_threshold";
+    }
+    if (member == "tangentSpeed")
+    {
+        return "tangent_speed";
+    }
+    if (member == "rollingResistance")
+    {
+        return "rolling_resistance";
     }
     return member; // radius, center, density, friction, restitution
 }
@@ -114,7 +144,17 @@ std::optional<Refusal> CheckGeometry(const EngineShape& geometry)
     {
         return CheckSegment(segment->segment, Tolerances{}.linearSlop);
     }
+    if (const Capsule* capsule = std::get_if<Capsule>(&geometry))
+    {
+        return CheckCapsule(*capsule, Tolerances{}.linearSlop);
+    }
     return std::nullopt; // MakePolygon and MakeOffsetBox checked it already
+}
+
+/// Rounded as the world decides (World::CreateShape): a radius above the skin.
+bool IsRounded(const Polygon& polygon)
+{
+    return polygon.radius > Tolerances{}.polygonSkin;
 }
 
 std::optional<Refusal> CheckShapeMass(const EngineShape& geometry, Real density, bool fixed)
@@ -123,7 +163,13 @@ std::optional<Refusal> CheckShapeMass(const EngineShape& geometry, Real density,
     {
         return CheckMass(*circle, density, fixed);
     }
-    return CheckMass(std::get<Polygon>(geometry), density, fixed);
+    if (const Capsule* capsule = std::get_if<Capsule>(&geometry))
+    {
+        return CheckMass(*capsule, density, fixed);
+    }
+    const Polygon& polygon = std::get<Polygon>(geometry);
+    return IsRounded(polygon) ? CheckRoundedMass(polygon, density, fixed)
+                              : CheckMass(polygon, density, fixed);
 }
 
 MassData ShapeMass(const EngineShape& geometry, Real density)
@@ -132,7 +178,13 @@ MassData ShapeMass(const EngineShape& geometry, Real density)
     {
         return ComputeMass(*circle, density);
     }
-    return ComputeMass(std::get<Polygon>(geometry), density);
+    if (const Capsule* capsule = std::get_if<Capsule>(&geometry))
+    {
+        return ComputeMass(*capsule, density);
+    }
+    const Polygon& polygon = std::get<Polygon>(geometry);
+    return IsRounded(polygon) ? ComputeRoundedMass(polygon, density)
+                              : ComputeMass(polygon, density);
 }
 
 } // namespace

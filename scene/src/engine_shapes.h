@@ -19,7 +19,7 @@ inline Vec2 ToEngine(SceneVec2 v)
     return {Real(v.x), Real(v.y)};
 }
 
-using EngineShape = std::variant<Circle, Polygon, Segment, ChainSegment>;
+using EngineShape = std::variant<Circle, Polygon, Segment, ChainSegment, Capsule>;
 
 /// The engine's geometry for a shape other than a chain (which World::CreateChain makes):
 /// boxes through MakeOffsetBox and polygons through MakePolygon, which throw InvalidArgument

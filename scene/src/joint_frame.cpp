@@ -74,6 +74,15 @@ JointFrame ComputeJointFrame(const World& world, BodyId a, BodyId b, const Scene
             world.MakeDistanceJointDef(a, b, ToEngine(joint.anchorA), ToEngine(joint.anchorB)),
             frame);
         break;
+    case JointType::Friction:
+        TakeAnchors(world.MakeFrictionJointDef(a, b, anchor), frame);
+        break;
+    case JointType::Pulley:
+        TakeAnchors(world.MakePulleyJointDef(a, b, ToEngine(joint.groundAnchorA),
+                                             ToEngine(joint.groundAnchorB), ToEngine(joint.anchorA),
+                                             ToEngine(joint.anchorB), Real(joint.ratio)),
+                    frame);
+        break;
     case JointType::Motor:
     {
         const MotorJointDef def = world.MakeMotorJointDef(a, b);

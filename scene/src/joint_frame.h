@@ -12,7 +12,8 @@ namespace meff::scene_detail
 
 struct JointFrame
 {
-    Vec2 localAnchorA{};     ///< m, body A's frame (revolute, prismatic, wheel, weld, distance)
+    Vec2 localAnchorA{};     ///< m, body A's frame (revolute, prismatic, wheel, weld, distance,
+                             ///< friction)
     Vec2 localAnchorB{};     ///< m, body B's frame
     Real referenceAngle = 0; ///< rad (revolute, prismatic, weld)
     Vec2 localAxisA{1, 0};   ///< body A's frame, as given (prismatic, wheel; not normalized)

@@ -405,10 +405,47 @@ void ReadChain(ObjectReader& reader, SceneShape& shape)
     }
 }
 
+/// A box's or polygon's optional "radius": the rounding of a Box2D v3 rounded polygon, above
+/// the skin every sharp polygon has (a smaller one would change nothing).
+void ReadRounding(ObjectReader& reader, SceneShape& shape)
+{
+    if (reader.Find("radius") == nullptr)
+    {
+        return; // sharp
+    }
+    const std::optional<double> radius = ReadPositive(reader, "radius", std::nullopt);
+    // Compared as the engine compares it (World::CreateShape), in its float.
+    const Real skin = Tolerances{}.polygonSkin;
+    if (radius && !(Real(*radius) > skin))
+    {
+        reader.Fail("radius", "must be above the polygon skin (" + scene_detail::FormatReal(skin) +
+                                  " m; every sharp polygon is rounded that much), or left out");
+        return;
+    }
+    Assign(shape.rounding, radius);
+}
+
+/// A capsule: two distinct centres and a radius > 0 (World::CreateShape's CheckCapsule).
+void ReadCapsule(ObjectReader& reader, SceneShape& shape)
+{
+    const std::optional<SceneVec2> a = reader.Vector("center_a", std::nullopt);
+    const std::optional<SceneVec2> b = reader.Vector("center_b", std::nullopt);
+    Assign(shape.radius, ReadPositive(reader, "radius", std::nullopt));
+    if (a && b && !(Distance(ToEngine(*a), ToEngine(*b)) > Tolerances{}.linearSlop))
+    {
+        reader.Fail("center_b", "must be more than " +
+                                    scene_detail::FormatReal(Tolerances{}.linearSlop) +
+                                    " m from center_a (a capsule with one centre is a circle)");
+        return;
+    }
+    Assign(shape.centerA, a);
+    Assign(shape.centerB, b);
+}
+
 void ReadShape(ObjectReader& reader, SceneShape& shape)
 {
     const std::optional<std::size_t> type =
-        ReadChoice(reader, "type", {"circle", "box", "polygon", "segment", "chain"});
+        ReadChoice(reader, "type", {"circle", "box", "polygon", "segment", "chain", "capsule"});
     if (!type)
     {
         // Which other fields belong here depends on the type: say nothing more.
@@ -429,10 +466,15 @@ void ReadShape(ObjectReader& reader, SceneShape& shape)
         Assign(shape.halfHeight, halfHeight);
         Assign(shape.center, reader.Vector("center", SceneVec2{}));
         Assign(shape.angle, reader.Number("angle", 0.0));
+        ReadRounding(reader, shape);
         break;
     }
     case SceneShapeType::Polygon:
         ReadPolygonVertices(reader, shape);
+        ReadRounding(reader, shape);
+        break;
+    case SceneShapeType::Capsule:
+        ReadCapsule(reader, shape);
         break;
     case SceneShapeType::Segment:
         ReadSegmentSides(reader, ReadSegmentPoints(reader, shape), shape);
@@ -454,6 +496,9 @@ void ReadShape(ObjectReader& reader, SceneShape& shape)
     }
     Assign(shape.restitutionThreshold,
            ReadNonNegative(reader, "restitution_threshold", defaults.restitutionThreshold));
+    Assign(shape.tangentSpeed, reader.Number("tangent_speed", defaults.tangentSpeed));
+    Assign(shape.rollingResistance,
+           ReadNonNegative(reader, "rolling_resistance", defaults.rollingResistance));
     if (const Json* filter = reader.Object("filter", false))
     {
         ObjectReader filterReader(reader.Diag(), *filter, reader.PathOf("filter"));
@@ -750,6 +795,26 @@ void ReadMotorFields(ObjectReader& reader, SceneJoint& joint)
     Assign(joint.correctionFactor, factor);
 }
 
+/// Friction: the anchor and the two bounds, whose defaults are FrictionJointDef's (0: a
+/// joint that holds nothing until given a force or torque).
+void ReadFrictionFields(ObjectReader& reader, SceneJoint& joint)
+{
+    ReadAnchor(reader, joint);
+    const FrictionJointDef defaults;
+    Assign(joint.maxForce, ReadNonNegative(reader, "max_force", double(defaults.maxForce)));
+    Assign(joint.maxTorque, ReadNonNegative(reader, "max_torque", double(defaults.maxTorque)));
+}
+
+/// Pulley: the two ground anchors, the rope's ends on the bodies (world points) and the ratio.
+void ReadPulleyFields(ObjectReader& reader, SceneJoint& joint)
+{
+    Assign(joint.groundAnchorA, reader.Vector("ground_anchor_a", std::nullopt));
+    Assign(joint.groundAnchorB, reader.Vector("ground_anchor_b", std::nullopt));
+    Assign(joint.anchorA, reader.Vector("anchor_a", std::nullopt));
+    Assign(joint.anchorB, reader.Vector("anchor_b", std::nullopt));
+    Assign(joint.ratio, ReadPositive(reader, "ratio", 1.0));
+}
+
 void ReadMouseFields(ObjectReader& reader, SceneJoint& joint)
 {
     const std::optional<SceneVec2> anchor = reader.Vector("anchor", std::nullopt);
@@ -787,11 +852,13 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
                const std::map<std::string, std::size_t>& bodyIndexByName, SceneJoint& joint)
 {
     // In JointType's order.
-    const std::optional<std::size_t> type = ReadChoice(
-        reader, "type", {"revolute", "distance", "prismatic", "wheel", "weld", "motor", "mouse"});
+    const std::optional<std::size_t> type =
+        ReadChoice(reader, "type",
+                   {"revolute", "distance", "prismatic", "wheel", "weld", "motor", "mouse",
+                    "friction", "pulley"});
     constexpr JointType kTypes[] = {JointType::Revolute, JointType::Distance, JointType::Prismatic,
                                     JointType::Wheel,    JointType::Weld,     JointType::Motor,
-                                    JointType::Mouse};
+                                    JointType::Mouse,    JointType::Friction, JointType::Pulley};
     Assign(joint.name, ReadName(reader));
     const std::optional<std::size_t> bodyA =
         ReadBodyReference(reader, "body_a", bodyIndexByName, joint.bodyA);
@@ -848,6 +915,12 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
         break;
     case JointType::Mouse:
         ReadMouseFields(reader, joint);
+        break;
+    case JointType::Friction:
+        ReadFrictionFields(reader, joint);
+        break;
+    case JointType::Pulley:
+        ReadPulleyFields(reader, joint);
         break;
     }
     reader.Finish();

@@ -383,6 +383,53 @@ def case_bench_scenes():
                 fail("--solver %s: JSON entry %r" % (solver, entry))
 
 
+def case_bench_against_meff_profile():
+    """`--against meff:<back end>` pairs meff with itself under another back end, and
+    `--profile` splits meff's ms/step into the step's stages. meff against meff with the same
+    back end (meff:box2d on a Box2D-order scene) must end at exactly the same positions
+    (|dp| 0: the engine is deterministic); the
+    stages are non-negative and add up to the step; the JSON names the peer and its keys are
+    "peer_..."; an unknown peer is refused up front naming --against."""
+    report = os.path.join(WORK, "bench.json")
+    status, stdout, stderr = run(["bench", STACK, "--against", "meff:box2d", "--profile",
+                                  "--runs", "2", "--steps", "30", "--json", report])
+    if status != 0 or stderr:
+        fail("status %d, stderr %r" % (status, stderr))
+    lines = stdout.splitlines()
+    if "meff:box2d ms/step" not in lines[0] or "differ only in their solver" not in lines[-1]:
+        fail("header or note: %r" % stdout)
+    if not lines[1].rstrip().endswith("0.00e+00"):
+        fail("meff against itself must end at the same positions: %r" % lines[1])
+    match = re.fullmatch(r"  meff stages ms/step: find contacts ([\d.]+), collide ([\d.]+), "
+                         r"solve ([\d.]+), synchronize ([\d.]+), continuous ([\d.]+), "
+                         r"other ([\d.]+) \(step ([\d.]+)\)", lines[2])
+    if not match:
+        fail("not a stage line: %r" % lines[2])
+    stages = [float(match[i]) for i in range(1, 7)]
+    step = float(match[7])
+    # Printed to 4 decimals: six rounded stages and the rounded step, each off by at most
+    # 0.00005 ms, agree within 7 × 0.00005 ms (the JSON's full figures are checked below).
+    if step <= 0 or float(match[3]) <= 0 or abs(sum(stages) - step) > 7 * 0.00005 + 1e-12:
+        fail("stages %r do not add up to the step %r" % (stages, step))
+    with open(report) as text:
+        entry = json.load(text)[0]
+    profile = entry.get("meff_stage_ms_per_step", {})
+    if (entry["against"] != "meff:box2d" or "box2d_ms_per_step" in entry
+            or entry["peer_ms_per_step"]["median"] <= 0 or entry["max_position_difference_m"] != 0
+            or sorted(profile) != sorted(["step", "find_contacts", "collide", "solve",
+                                          "synchronize", "continuous", "other"])):
+        fail("JSON entry %r" % entry)
+    # "other" is the step less the named stages, so in full precision they add up to the step
+    # (to double rounding: 1e-9 of it).
+    parts = sum(value for key, value in profile.items() if key != "step")
+    if abs(parts - profile["step"]) > 1e-9 * profile["step"]:
+        fail("the JSON's stages add up to %r, its step is %r" % (parts, profile["step"]))
+    status, stdout, stderr = run(["bench", STACK, "--against", "meff:fast", "--runs", "1",
+                                  "--steps", "2"])
+    if status != 2 or "--against" not in stderr or "meff:fast" not in stderr or stdout:
+        fail("--against meff:fast: status %d" % status)
+
+
 def main():
     if not os.path.isdir(WORK):
         os.makedirs(WORK)

@@ -359,8 +359,8 @@ struct Trace
 /// How far a joint is from satisfied: a revolute or weld joint's anchors should coincide; a
 /// distance joint's should be between its minimum and maximum length apart. Prismatic and wheel
 /// joints let their anchors part along the axis, so the anchor distance says nothing about them;
-/// motor and mouse joints are force-limited springs with no hard constraint. Those are not
-/// measured (0).
+/// motor and mouse joints are force-limited springs with no hard constraint; friction joints
+/// hold no pose; a pulley's anchors part as the rope runs. Those are not measured (0).
 double JointError(const SceneJoint& joint, double anchorDistance)
 {
     switch (joint.type)
@@ -374,6 +374,8 @@ double JointError(const SceneJoint& joint, double anchorDistance)
     case JointType::Wheel:
     case JointType::Motor:
     case JointType::Mouse:
+    case JointType::Friction:
+    case JointType::Pulley:
         return 0.0;
     }
     return 0.0;

@@ -142,8 +142,10 @@ b2Fixture* CreateFixture(b2Body* body, const SceneShape& shape)
         const b2FixtureDef def = MakeFixtureDef(shape, &chain);
         return body->CreateFixture(&def);
     }
+    case SceneShapeType::Capsule:
+        break; // Box2D v3's: refused by Validate (FieldsBox2D241Lacks)
     }
-    throw std::invalid_argument("unknown shape type");
+    throw std::invalid_argument("Box2D 2.4.1 has no such shape (a capsule)");
 }
 
 /// A joint given in the bodies' frames (the scene's local form, b2dJson's) replaces what
@@ -280,6 +282,24 @@ b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2B
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(&def);
     }
+    case JointType::Friction:
+    {
+        b2FrictionJointDef def;
+        def.Initialize(bodyA, bodyB, ToB2(joint.anchor));
+        ApplyLocalForm(joint, def);
+        def.maxForce = static_cast<float>(joint.maxForce);
+        def.maxTorque = static_cast<float>(joint.maxTorque);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Pulley:
+    {
+        b2PulleyJointDef def;
+        def.Initialize(bodyA, bodyB, ToB2(joint.groundAnchorA), ToB2(joint.groundAnchorB),
+                       ToB2(joint.anchorA), ToB2(joint.anchorB), static_cast<float>(joint.ratio));
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
     case JointType::Mouse:
     {
         // Grab body B at the anchor, then move the pointer to the target (see build_world).
@@ -382,6 +402,25 @@ class Box2DMirror::Listener : public b2ContactListener
 
     void Clear() { m_points.clear(); }
 
+    /// A conveyor fixture's tangent speed (m/s, as meff's Real: the float of the scene's value).
+    void SetTangentSpeed(const b2Fixture* fixture, float speed)
+    {
+        m_tangentSpeeds[fixture] = speed;
+    }
+
+    /// meff gives a contact its shapes' tangent speeds summed (ShapeDef::tangentSpeed); 2.4.1
+    /// keeps one per contact (0 when made), which PreSolve may set in each touching update,
+    /// before the solver reads it: the same float sum here makes the rows alike.
+    void PreSolve(b2Contact* contact, const b2Manifold* /*oldManifold*/) override
+    {
+        if (m_tangentSpeeds.empty())
+        {
+            return;
+        }
+        contact->SetTangentSpeed(TangentSpeed(contact->GetFixtureA()) +
+                                 TangentSpeed(contact->GetFixtureB()));
+    }
+
     void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override
     {
         const b2Manifold* manifold = contact->GetManifold();
@@ -402,7 +441,14 @@ class Box2DMirror::Listener : public b2ContactListener
     const std::vector<Point>& Points() const { return m_points; }
 
   private:
+    float TangentSpeed(const b2Fixture* fixture) const
+    {
+        const auto found = m_tangentSpeeds.find(fixture);
+        return found == m_tangentSpeeds.end() ? 0.0f : found->second;
+    }
+
     std::vector<Point> m_points;
+    std::unordered_map<const b2Fixture*, float> m_tangentSpeeds;
 };
 
 Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
@@ -427,7 +473,13 @@ Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
         m_bodies.push_back(created);
         for (std::size_t k = 0; k < body.shapes.size(); ++k)
         {
-            m_shapeOf.emplace(CreateFixture(created, body.shapes[k]), std::make_pair(i, k));
+            b2Fixture* fixture = CreateFixture(created, body.shapes[k]);
+            m_shapeOf.emplace(fixture, std::make_pair(i, k));
+            if (body.shapes[k].tangentSpeed != 0)
+            {
+                m_listener->SetTangentSpeed(fixture,
+                                            static_cast<float>(body.shapes[k].tangentSpeed));
+            }
         }
     }
     for (const SceneJoint& joint : scene.joints)

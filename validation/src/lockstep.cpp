@@ -1,10 +1,12 @@
 // Stepping meff and its Box2D mirror in lockstep and judging the run.
 #include "meff/box2d_mirror.h"
+#include "meff/box2d_v3_features.h"
 #include "meff/validation.h"
 
 #include <cmath>
 #include <cstdio>
 #include <span>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -127,6 +129,7 @@ bool AnyBlockJoint(const Scene& scene)
         case JointType::Weld:
         case JointType::Motor:
         case JointType::Mouse:
+        case JointType::Friction:
             return true;
         default:
             break;
@@ -166,6 +169,33 @@ std::vector<std::pair<std::string, std::string>> Unmirrored(const Scene& scene)
                               "agree");
     }
     return settings;
+}
+
+/// Refuses (SceneError naming each field) what Box2D 2.4.1 has no form of at all, so that no
+/// comparison could mean anything: rolling resistance.
+void RefuseUnmirrorable(const Scene& scene)
+{
+    std::vector<std::string> messages;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        for (std::size_t k = 0; k < scene.bodies[i].shapes.size(); ++k)
+        {
+            const double c = scene.bodies[i].shapes[k].rollingResistance;
+            if (c != 0)
+            {
+                std::ostringstream message;
+                message << scene.sourcePath << ": bodies[" << i << "].shapes[" << k
+                        << "].rolling_resistance: Box2D 2.4.1 has no rolling resistance, so "
+                           "meff validate cannot compare this scene (0 to validate), got "
+                        << c;
+                messages.push_back(message.str());
+            }
+        }
+    }
+    if (!messages.empty())
+    {
+        throw SceneError(std::move(messages));
+    }
 }
 
 /// What the mirror cannot reproduce exactly, and how the run is judged then: said, never
@@ -266,6 +296,12 @@ SettleResult CheckSettled(const Scene& scene, const SceneSettleCheck& check,
 
 ValidationResult Validate(const Scene& scene, const RunOptions& options)
 {
+    const std::vector<std::string> lacking = FieldsBox2D241Lacks(
+        scene, "the scene cannot be validated against it (run it with meff run)");
+    if (!lacking.empty())
+    {
+        throw SceneError(lacking);
+    }
     ValidationResult result;
     result.scene = scene.name;
     result.sourcePath = scene.sourcePath;
@@ -277,6 +313,7 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
         options.meffVelocityIterations.value_or(scene.world.solver.velocityIterations);
     result.chaotic = scene.validation.chaotic;
     result.horizonFrames = scene.validation.horizonFrames;
+    RefuseUnmirrorable(scene);
     const std::vector<std::pair<std::string, std::string>> unmirrored = Unmirrored(scene);
     for (const auto& [setting, why] : unmirrored)
     {

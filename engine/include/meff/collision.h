@@ -22,6 +22,7 @@ enum class ShapeType : std::uint8_t
     Segment = 1,
     Polygon = 2,
     ChainSegment = 3, ///< a one-sided segment with ghost vertices, alone or in a chain
+    Capsule = 4,      ///< a segment rounded by a radius (Box2D v3's b2Capsule)
 };
 
 /// A solid circle.
@@ -84,8 +85,28 @@ struct Polygon
     Vec2 normals[kMaxPolygonVertices]{};
     Vec2 centroid{}; ///< area centroid in body coordinates (m)
     int count = 0;   ///< number of vertices, 3..kMaxPolygonVertices
-    Real radius = 0; ///< collision skin (m); the world sets it to Tolerances::polygonSkin
+    /// Collision radius (m). Up to Tolerances::polygonSkin (MakePolygon and MakeBox give 0) the
+    /// polygon is sharp and the world sets it to the skin, as Box2D 2.4.1 does; above it the
+    /// polygon is rounded (Box2D v3's rounded polygon): its surface is every point within
+    /// `radius` of the core polygon the vertices span, and its mass, manifolds and ray casts
+    /// are the rounded shape's.
+    Real radius = 0;
 };
+
+/// Two half-discs joined by a rectangle: every point within `radius` of the segment from
+/// center1 to center2 (Box2D v3's b2Capsule). The world treats it as a rounded polygon of two
+/// vertices (MakeCapsulePolygon).
+struct Capsule
+{
+    Vec2 center1{};  ///< centre of the first cap, body coordinates (m)
+    Vec2 center2{};  ///< centre of the second cap (m), further than the linear slop from center1
+    Real radius = 0; ///< m, finite and > 0
+};
+
+/// The capsule as the collision routines see it: a polygon of two vertices (the caps'
+/// centres; normals[0] is the right of center1 → center2, normals[1] its opposite), its
+/// centroid the middle, with the capsule's radius. No checks: see CheckCapsule.
+Polygon MakeCapsulePolygon(const Capsule& capsule);
 
 /// Mass properties of a shape or body.
 struct MassData
@@ -111,11 +132,18 @@ Polygon MakeOffsetBox(Real halfWidth, Real halfHeight, Vec2 center, Real angle);
 
 MassData ComputeMass(const Circle& circle, Real density);
 MassData ComputeMass(const Polygon& polygon, Real density);
+/// The exact mass of a capsule: the rectangle 2r × L and the two half-discs, m = ρ(πr² + 2rL).
+MassData ComputeMass(const Capsule& capsule, Real density);
+/// The exact mass of a rounded polygon (its `radius` the rounding; count 2 is a capsule): the
+/// core polygon, a rectangle of width r outside each edge and a disc sector at each vertex,
+/// their inertias added about the body origin by the parallel-axis theorem.
+MassData ComputeRoundedMass(const Polygon& polygon, Real density);
 
 AABB ComputeAABB(const Circle& circle, const Transform& xf);
 AABB ComputeAABB(const Segment& segment, const Transform& xf);
 AABB ComputeAABB(const Polygon& polygon, const Transform& xf);
 AABB ComputeAABB(const ChainSegment& segment, const Transform& xf);
+AABB ComputeAABB(const Capsule& capsule, const Transform& xf);
 
 /// Which feature of each shape a contact point comes from, packed as Box2D 2.4.1's
 /// b2ContactFeature so that feature keys agree between the engines.
@@ -195,6 +223,25 @@ void CollideChainSegmentAndCircle(Manifold& manifold, const ChainSegment& segmen
                                   const Transform& xfA, const Circle& circleB,
                                   const Transform& xfB);
 void CollideChainSegmentAndPolygon(Manifold& manifold, const ChainSegment& segmentA,
+                                   const Transform& xfA, const Polygon& polygonB,
+                                   const Transform& xfB);
+
+/// Rounded polygons (Box2D v3's b2CollidePolygons, written for 2.4.1's local manifolds): any
+/// two polygons with any radii, capsules (MakeCapsulePolygon) and segments (two vertices)
+/// among them. The deepest face of either core is the reference face and the other core's
+/// facing edge is clipped against it (FaceA or FaceB, as CollidePolygons); when the cores are
+/// apart and their closest features are two vertices, the one contact point is between those
+/// vertices along the line joining them (Circles, localPoint a vertex of A and the point's
+/// localPoint a vertex of B), so a rounded corner rolls over a corner instead of meeting it
+/// along a face normal.
+void CollideRoundedPolygons(Manifold& manifold, const Polygon& polygonA, const Transform& xfA,
+                            const Polygon& polygonB, const Transform& xfB);
+/// A one-sided segment with ghosts against a rounded polygon or capsule: CollideRoundedPolygons
+/// with the segment as polygon A, no points when B's centroid is behind the segment, and a
+/// contact at an end of the segment kept only when its normal lies between the segment's
+/// normal and the neighbour's (a convex joint); at a flat or concave joint only the segment's
+/// own normal is kept, so a capsule slides over the joints of a chain without catching.
+void CollideChainSegmentAndRounded(Manifold& manifold, const ChainSegment& segmentA,
                                    const Transform& xfA, const Polygon& polygonB,
                                    const Transform& xfB);
 

@@ -45,6 +45,8 @@ struct DistanceProxy
 DistanceProxy MakeProxy(const Circle& circle);
 DistanceProxy MakeProxy(const Polygon& polygon);
 DistanceProxy MakeProxy(const Segment& segment);
+/// The core segment's two ends with the capsule's radius.
+DistanceProxy MakeProxy(const Capsule& capsule);
 /// The segment's two ends (the ghosts take no part in distance, casts or time of impact).
 DistanceProxy MakeProxy(const ChainSegment& segment);
 

@@ -19,6 +19,8 @@ enum class JointType : std::uint8_t
     Weld = 4,
     Motor = 5,
     Mouse = 6,
+    Friction = 7,
+    Pulley = 8,
 };
 
 /// Pins two bodies together at one point (an anchored body when bodyA is static). Its point
@@ -157,6 +159,44 @@ struct MouseJointDef
     Real hertz = 5;                ///< spring frequency (Hz), ≥ 0 (Box2D testbed's value)
     Real dampingRatio = Real(0.7); ///< dimensionless, ≥ 0; 1 = critical (testbed's value)
     bool collideConnected = false; ///< may the two bodies' shapes collide
+};
+
+/// Top-down friction (Box2D's b2FrictionJoint): resists the relative motion of body B's anchor
+/// against body A's with at most maxForce, and their relative turning with at most maxTorque,
+/// as dry friction against a floor seen from above (body A is usually the static ground). It
+/// only removes relative velocity, never restores a pose. The linear rows are a 2×2 block
+/// (Box2D) or, with SolverSettings::blockJoints off, two scalar rows, each with the scalar
+/// effective mass; the angular row is scalar.
+struct FrictionJointDef
+{
+    BodyId bodyA{};
+    BodyId bodyB{};
+    Vec2 localAnchorA{};           ///< anchor in bodyA's frame (m); default (0, 0)
+    Vec2 localAnchorB{};           ///< anchor in bodyB's frame (m); default (0, 0)
+    Real maxForce = 0;             ///< N, ≥ 0; default 0 (Box2D's: no friction)
+    Real maxTorque = 0;            ///< N·m, ≥ 0; default 0
+    bool collideConnected = false; ///< may the two bodies' shapes collide; default false
+};
+
+/// Two bodies hung from two fixed ground points by one rope over a pulley (Box2D's
+/// b2PulleyJoint): lengthA + ratio·lengthB stays what it was at creation, where lengthA is
+/// the distance from groundAnchorA to body A's anchor and lengthB from groundAnchorB to body
+/// B's. With ratio > 1 body B's side moves 1/ratio as far (a block and tackle). One scalar
+/// row with the scalar effective mass k = mA⁻¹ + IA⁻¹·(rA×uA)² + ratio²·(mB⁻¹ + IB⁻¹·(rB×uB)²).
+/// The rope is rigid both ways, as Box2D's: it pushes as well as pulls, so keep both sides
+/// taut (the lengths well above 10 linear slops, where the rope's direction is defined).
+struct PulleyJointDef
+{
+    BodyId bodyA{};
+    BodyId bodyB{};
+    Vec2 groundAnchorA{-1, 1};    ///< fixed world point body A hangs from (m); Box2D's default
+    Vec2 groundAnchorB{1, 1};     ///< fixed world point body B hangs from (m)
+    Vec2 localAnchorA{-1, 0};     ///< rope end in bodyA's frame (m)
+    Vec2 localAnchorB{1, 0};      ///< rope end in bodyB's frame (m)
+    Real lengthA = 0;             ///< reference length of A's side (m), ≥ 0
+    Real lengthB = 0;             ///< reference length of B's side (m), ≥ 0
+    Real ratio = 1;               ///< dimensionless, > 0 and finite
+    bool collideConnected = true; ///< Box2D's default for pulleys: the two loads may collide
 };
 
 } // namespace meff

@@ -48,6 +48,15 @@ bool RayCast(const Segment& segment, const Transform& xf, const RayCastInput& in
 bool RayCast(const ChainSegment& segment, const Transform& xf, const RayCastInput& input,
              RayCastOutput& output);
 
+/// The ray against the capsule's rounded outline at `xf`: the earliest entry into one of its
+/// two sides (the core pushed out by the radius) or its caps. False as for the circle.
+bool RayCast(const Capsule& capsule, const Transform& xf, const RayCastInput& input,
+             RayCastOutput& output);
+/// The ray against a rounded polygon's outline (its `radius` the rounding; count 2 is a
+/// capsule): the edges pushed out by the radius and the arcs about the vertices.
+bool RayCastRounded(const Polygon& polygon, const Transform& xf, const RayCastInput& input,
+                    RayCastOutput& output);
+
 /// Is the world point inside or on the circle at `xf`?
 bool TestPoint(const Circle& circle, const Transform& xf, Vec2 point);
 /// Is the world point inside or on the polygon's outline at `xf`? The skin is not counted.
@@ -55,5 +64,9 @@ bool TestPoint(const Polygon& polygon, const Transform& xf, Vec2 point);
 /// Always false: a segment has no inside (as Box2D's b2EdgeShape::TestPoint).
 bool TestPoint(const Segment& segment, const Transform& xf, Vec2 point);
 bool TestPoint(const ChainSegment& segment, const Transform& xf, Vec2 point);
+/// Within the radius of the capsule's core segment.
+bool TestPoint(const Capsule& capsule, const Transform& xf, Vec2 point);
+/// Inside the core polygon or within its radius of it (the rounded outline).
+bool TestPointRounded(const Polygon& polygon, const Transform& xf, Vec2 point);
 
 } // namespace meff

@@ -24,6 +24,17 @@ struct ShapeDef
     Real friction = Real(0.6);     ///< Coulomb coefficient, ≥ 0; mixed as sqrt(μA·μB)
     Real restitution = 0;          ///< coefficient e in [0,1]; mixed as max(eA, eB)
     Real restitutionThreshold = 1; ///< m/s; slower approaches do not bounce; mixed as min
+    /// Conveyor belt: the shape's surface slides over the body at this speed (m/s), clockwise
+    /// round the shape (on a belt's top face, whose outward normal is +y, positive moves +x).
+    /// Friction drives a contact's tangential relative velocity to the two shapes' sum, as
+    /// Box2D v3's tangentSpeed (2.4.1: b2Contact::SetTangentSpeed with sA + sB). Finite.
+    Real tangentSpeed = 0;
+    /// Rolling resistance c (dimensionless, ≥ 0; Box2D v3's rollingResistance): a contact
+    /// resists the two bodies' relative spin with a torque of at most c·r·N, N its normal
+    /// force and r the larger rolling radius of the two shapes (a circle's radius; 0 for
+    /// polygons and segments, which do not roll). A disc rolling on flat ground then slows at
+    /// (2/3)·c·g and stops. Mixed as max(cA, cB). Box2D 2.4.1 has none (meff validate refuses it).
+    Real rollingResistance = 0;
     Filter filter{};
     /// Detects overlap, never collides (Box2D 2.4.1's sensor fixture): its contacts are never
     /// solved; they touch while the shapes overlap (GJK distance < 10·epsilon, radii included)

@@ -58,6 +58,11 @@ std::optional<Refusal> CheckCircle(const Circle& circle);
 /// outward normal of its edge, a finite centroid, and a normal, finite area. What MakePolygon
 /// and MakeBox return always passes.
 std::optional<Refusal> CheckPolygon(const Polygon& polygon);
+/// A finite radius >= 0 (above Tolerances::polygonSkin it rounds the polygon).
+std::optional<Refusal> CheckPolygonRadius(const Polygon& polygon);
+/// Finite centres further apart than `linearSlop`, a finite radius > 0, and an area
+/// πr² + 2rL that is a normal float.
+std::optional<Refusal> CheckCapsule(const Capsule& capsule, Real linearSlop);
 /// Finite points further apart than `linearSlop` (Tolerances::linearSlop).
 std::optional<Refusal> CheckSegment(const Segment& segment, Real linearSlop);
 /// Density and friction finite and >= 0, restitution in [0, 1], restitution threshold finite
@@ -72,6 +77,9 @@ std::optional<Refusal> CheckShapeDef(const ShapeDef& def);
 /// exceed kEpsilon, as Box2D's b2PolygonShape::ComputeMass asserts.
 std::optional<Refusal> CheckMass(const Circle& circle, Real density, bool fixedRotation);
 std::optional<Refusal> CheckMass(const Polygon& polygon, Real density, bool fixedRotation);
+std::optional<Refusal> CheckMass(const Capsule& capsule, Real density, bool fixedRotation);
+/// A rounded polygon (radius above the skin): its rounded mass (ComputeRoundedMass).
+std::optional<Refusal> CheckRoundedMass(const Polygon& polygon, Real density, bool fixedRotation);
 
 /// A dynamic body's mass properties, from its shapes' MassData (ComputeMass) in the order
 /// World keeps its shapes, newest first, as b2Body::ResetMassData sums its fixture list: the

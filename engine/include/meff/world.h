@@ -261,6 +261,17 @@ struct QueryFilter
     std::uint16_t maskBits = 0xFFFF;     ///< what it wants to find
 };
 
+/// A radial impulse at one instant (Box2D v3's b2ExplosionDef, World::Explode).
+struct ExplosionDef
+{
+    Vec2 position{};                 ///< centre (m)
+    Real radius = 1;                 ///< full strength up to this distance from a shape (m, ≥ 0)
+    Real falloff = 0;                ///< then fading linearly to 0 over this distance (m, ≥ 0)
+    Real impulsePerLength = 1;       ///< N·s per metre of the shape's width facing the centre;
+                                     ///< negative pulls in (an implosion)
+    std::uint16_t maskBits = 0xFFFF; ///< only shapes whose category is in the mask
+};
+
 /// The closest hit of a ray or shape cast.
 struct RayResult
 {
@@ -363,6 +374,15 @@ class World
     void ApplyForceToCenter(BodyId id, Vec2 force, bool wake = true); ///< N
     void ApplyTorque(BodyId id, Real torque, bool wake = true);       ///< N·m
     void ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake = true); ///< N·s
+    /// An explosion (Box2D v3's b2World_Explode): each dynamic body's non-sensor circle or
+    /// polygon within radius + falloff of the centre (distance to its surface), and whose
+    /// category is in maskBits, gets the impulse impulsePerLength × (its width across the line
+    /// from the centre) × (1, or (radius + falloff − d)/falloff beyond radius), pushing along
+    /// that line from the centre to its closest point (to its centroid when the centre is
+    /// inside it), applied at that point, and is woken. Segments and chains are left alone.
+    /// Throws InvalidArgument for a non-finite position or impulse, or a negative radius or
+    /// falloff, naming the field.
+    void Explode(const ExplosionDef& def);
     void ApplyAngularImpulse(BodyId id, Real impulse, bool wake = true); ///< N·m·s
     /// Sleeping. Static bodies are never awake.
     bool IsAwake(BodyId id) const;
@@ -382,7 +402,10 @@ class World
 
     // Shapes
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Circle& circle);
+    /// A polygon whose radius is above Tolerances::polygonSkin is rounded (see Polygon).
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    /// Box2D v3's capsule (see Capsule; CheckCapsule says what is refused).
+    ShapeId CreateShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Segment& segment);
     /// A one-sided segment with ghost vertices, alone (Box2D 2.4.1's b2EdgeShape after
     /// SetOneSided; see ChainSegment). Throws InvalidArgument for non-finite points, or ends
@@ -398,6 +421,7 @@ class World
     const Circle& GetCircle(ShapeId id) const;   ///< throws unless a circle
     const Polygon& GetPolygon(ShapeId id) const; ///< throws unless a polygon
     const Segment& GetSegment(ShapeId id) const; ///< throws unless a segment
+    const Capsule& GetCapsule(ShapeId id) const; ///< throws unless a capsule
     /// Throws unless a chain segment (of a chain, or made alone).
     const ChainSegment& GetChainSegment(ShapeId id) const;
     const ShapeDef& GetShapeDef(ShapeId id) const;
@@ -439,6 +463,8 @@ class World
     JointId CreateJoint(const WeldJointDef& def);
     JointId CreateJoint(const MotorJointDef& def);
     JointId CreateJoint(const MouseJointDef& def); ///< throws unless bodyB is dynamic
+    JointId CreateJoint(const FrictionJointDef& def);
+    JointId CreateJoint(const PulleyJointDef& def);
     void DestroyJoint(JointId id);
     bool IsValid(JointId id) const;
     JointType GetJointType(JointId id) const;
@@ -478,6 +504,12 @@ class World
     WeldJointDef MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
     /// Holds the bodies' present relative pose: B's origin in A's frame and angleB − angleA.
     MotorJointDef MakeMotorJointDef(BodyId a, BodyId b) const;
+    /// Both local anchors at the world point (b2FrictionJointDef::Initialize).
+    FrictionJointDef MakeFrictionJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
+    /// Ground anchors as given, local anchors from the world anchors, and each side's length
+    /// from its ground anchor to its anchor (b2PulleyJointDef::Initialize).
+    PulleyJointDef MakePulleyJointDef(BodyId a, BodyId b, Vec2 groundAnchorA, Vec2 groundAnchorB,
+                                      Vec2 anchorA, Vec2 anchorB, Real ratio) const;
     /// Moves a mouse joint's target (the pointer moved). Throws unless id is a mouse joint.
     void SetMouseTarget(JointId id, Vec2 target);
     Vec2 GetMouseTarget(JointId id) const;
@@ -563,7 +595,8 @@ class World
     /// The closest shape the ray origin → origin + translation hits, as Box2D 2.4.1's
     /// b2World::RayCast with a callback returning every fraction (the same shape, point,
     /// normal and fraction, bit for bit; on an exact tie the hit found last in tree order wins,
-    /// as in Box2D). Polygon and segment skins are ignored: hits are on the sharp outline. A
+    /// as in Box2D). Polygon and segment skins are ignored: hits are on the sharp outline;
+    /// capsules and rounded polygons are hit on their rounded outline. A
     /// ray that starts inside a shape does not hit that shape; a zero translation hits nothing.
     RayResult CastRayClosest(Vec2 origin, Vec2 translation, QueryFilter filter = {}) const;
     /// Every shape the ray hits, through `callback` (see CastCallback for what it returns).
@@ -591,7 +624,12 @@ class World
                    QueryFilter filter, CastCallback callback) const;
     void CastShape(const Polygon& shape, const Transform& start, Vec2 translation,
                    QueryFilter filter, CastCallback callback) const;
+    /// A capsule (Box2D v3's; the character mover's shape, meff/mover.h).
+    void CastShape(const Capsule& shape, const Transform& start, Vec2 translation,
+                   QueryFilter filter, CastCallback callback) const;
     /// The closest hit of CastShape.
+    RayResult CastShapeClosest(const Capsule& shape, const Transform& start, Vec2 translation,
+                               QueryFilter filter = {}) const;
     RayResult CastShapeClosest(const Circle& shape, const Transform& start, Vec2 translation,
                                QueryFilter filter = {}) const;
     RayResult CastShapeClosest(const Polygon& shape, const Transform& start, Vec2 translation,

@@ -39,6 +39,11 @@ DistanceProxy MakeProxy(const Segment& segment)
     return proxy;
 }
 
+DistanceProxy MakeProxy(const Capsule& capsule)
+{
+    return MakeProxy(Segment{capsule.center1, capsule.center2, capsule.radius});
+}
+
 DistanceProxy MakeProxy(const ChainSegment& segment)
 {
     return MakeProxy(segment.segment);
@@ -54,6 +59,7 @@ DistanceProxy MakeProxy(const Shape& shape)
     case ShapeType::Circle:
         return meff::MakeProxy(shape.circle);
     case ShapeType::Polygon:
+    case ShapeType::Capsule:
         return meff::MakeProxy(shape.polygon);
     case ShapeType::Segment:
         return meff::MakeProxy(shape.segment);

@@ -8,8 +8,8 @@ namespace meff::detail
 
 bool ContactOrder(ShapeType typeA, ShapeType typeB, bool& swap)
 {
-    // Shape type values rank the "primary" shape of a pair: segments (1, and chain segments,
-    // 3) and polygons (2) come before circles (0) as shape A, a segment before a polygon.
+    // Segments and chain segments come first as shape A, then polygons and capsules, then
+    // circles: a segment before a polygon, a polygon before a circle, as Box2D orders them.
     const auto rank = [](ShapeType t)
     {
         switch (t)
@@ -18,6 +18,7 @@ bool ContactOrder(ShapeType typeA, ShapeType typeB, bool& swap)
         case ShapeType::ChainSegment:
             return 0;
         case ShapeType::Polygon:
+        case ShapeType::Capsule:
             return 1;
         case ShapeType::Circle:
             return 2;
@@ -35,6 +36,34 @@ bool ContactOrder(ShapeType typeA, ShapeType typeB, bool& swap)
     return true;
 }
 
+/// A (chain) segment against a polygon or capsule: Box2D 2.4.1's routines for a sharp
+/// polygon, the rounded ones otherwise.
+static void EvaluateSegment(Manifold& manifold, const Shape& a, const Transform& xfA,
+                            const Shape& b, const Transform& xfB)
+{
+    if (a.type == ShapeType::Segment)
+    {
+        if (b.IsRounded())
+        {
+            const Segment& s = a.segment;
+            CollideRoundedPolygons(manifold, MakeCapsulePolygon({s.point1, s.point2, s.radius}),
+                                   xfA, b.polygon, xfB);
+        }
+        else
+        {
+            CollideSegmentAndPolygon(manifold, a.segment, xfA, b.polygon, xfB);
+        }
+    }
+    else if (b.IsRounded())
+    {
+        CollideChainSegmentAndRounded(manifold, a.chainSegment, xfA, b.polygon, xfB);
+    }
+    else
+    {
+        CollideChainSegmentAndPolygon(manifold, a.chainSegment, xfA, b.polygon, xfB);
+    }
+}
+
 static void Evaluate(Manifold& manifold, const Shape& a, const Transform& xfA, const Shape& b,
                      const Transform& xfB)
 {
@@ -44,9 +73,16 @@ static void Evaluate(Manifold& manifold, const Shape& a, const Transform& xfA, c
         CollideCircles(manifold, a.circle, xfA, b.circle, xfB);
         return;
     case ShapeType::Polygon:
+    case ShapeType::Capsule:
+        // Box2D 2.4.1's polygon-circle routine is exact for any radius (its vertex regions),
+        // so a capsule or rounded polygon uses it too.
         if (b.type == ShapeType::Circle)
         {
             CollidePolygonAndCircle(manifold, a.polygon, xfA, b.circle, xfB);
+        }
+        else if (a.IsRounded() || b.IsRounded())
+        {
+            CollideRoundedPolygons(manifold, a.polygon, xfA, b.polygon, xfB);
         }
         else
         {
@@ -60,7 +96,7 @@ static void Evaluate(Manifold& manifold, const Shape& a, const Transform& xfA, c
         }
         else
         {
-            CollideSegmentAndPolygon(manifold, a.segment, xfA, b.polygon, xfB);
+            EvaluateSegment(manifold, a, xfA, b, xfB);
         }
         return;
     case ShapeType::ChainSegment:
@@ -70,7 +106,7 @@ static void Evaluate(Manifold& manifold, const Shape& a, const Transform& xfA, c
         }
         else
         {
-            CollideChainSegmentAndPolygon(manifold, a.chainSegment, xfA, b.polygon, xfB);
+            EvaluateSegment(manifold, a, xfA, b, xfB);
         }
         return;
     }
@@ -99,6 +135,10 @@ bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
                 break;
             }
         }
+    }
+    if (manifold.pointCount == 0)
+    {
+        contact.rollingImpulse = 0; // apart: nothing to warm start when they touch again
     }
     return manifold.pointCount > 0;
 }

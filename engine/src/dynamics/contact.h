@@ -61,6 +61,14 @@ struct Contact
     Real friction = 0;             ///< sqrt(μA·μB)
     Real restitution = 0;          ///< max(eA, eB)
     Real restitutionThreshold = 0; ///< min of the two (m/s)
+    /// The friction rows' target tangential speed of B's surface over A's along
+    /// cross(normal, 1): sA + sB (ShapeDef::tangentSpeed; each turns clockwise round its
+    /// own shape, and A's outward normal is B's reversed, hence the sum) (m/s).
+    Real tangentSpeed = 0;
+    /// max(cA, cB)·max(rA, rB) (ShapeDef::rollingResistance, rolling radii: Shape's
+    /// RollingRadius) (m): the spin row's impulse is at most this × the normal impulse.
+    Real rollingResistance = 0;
+    Real rollingImpulse = 0; ///< the spin row's, kept for the next step's warm start (N·m·s)
     /// The shapes' collision radii (Shape::Radius), copied at creation (a shape never changes
     /// its own), so that the solver and the reports need not visit the shapes.
     Real radiusA = 0, radiusB = 0;

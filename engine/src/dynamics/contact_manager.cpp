@@ -156,6 +156,13 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     contact.restitution = MixRestitution(defA.restitution, defB.restitution);
     contact.restitutionThreshold =
         MixRestitutionThreshold(defA.restitutionThreshold, defB.restitutionThreshold);
+    contact.tangentSpeed = defA.tangentSpeed + defB.tangentSpeed;
+    if (defA.rollingResistance > 0 || defB.rollingResistance > 0)
+    {
+        contact.rollingResistance =
+            Max(defA.rollingResistance, defB.rollingResistance) *
+            Max(world.shapes[sA].RollingRadius(), world.shapes[sB].RollingRadius());
+    }
     if (defA.isSensor || defB.isSensor)
     {
         contact.flags |= Contact::Sensor;

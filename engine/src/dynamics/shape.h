@@ -15,8 +15,13 @@ struct Shape
     bool alive = false;
     std::int32_t body = -1;
     ShapeType type = ShapeType::Circle;
-    Circle circle;             ///< valid when type == Circle
-    Polygon polygon;           ///< valid when type == Polygon
+    Circle circle; ///< valid when type == Circle
+    /// valid when type == Polygon; for a Capsule, its two-vertex polygon (MakeCapsulePolygon)
+    Polygon polygon;
+    Capsule capsule; ///< valid when type == Capsule
+    /// A polygon with a rounding radius above the skin (Box2D v3's rounded polygon): its
+    /// manifolds, mass and ray casts are the rounded shape's, not Box2D 2.4.1's.
+    bool rounded = false;
     Segment segment;           ///< valid when type == Segment
     ChainSegment chainSegment; ///< valid when type == ChainSegment
     /// The chain (index into WorldState::chains) a ChainSegment belongs to, or −1 for a
@@ -35,6 +40,7 @@ struct Shape
         case ShapeType::Circle:
             return circle.radius;
         case ShapeType::Polygon:
+        case ShapeType::Capsule:
             return polygon.radius;
         case ShapeType::Segment:
             return segment.radius;
@@ -43,6 +49,8 @@ struct Shape
         }
         return 0;
     }
+    /// The radius the shape rolls on (rolling resistance): a circle's; the others do not roll.
+    Real RollingRadius() const { return type == ShapeType::Circle ? circle.radius : Real(0); }
     AABB ComputeAABB(const Transform& xf) const
     {
         switch (type)
@@ -50,6 +58,7 @@ struct Shape
         case ShapeType::Circle:
             return meff::ComputeAABB(circle, xf);
         case ShapeType::Polygon:
+        case ShapeType::Capsule:
             return meff::ComputeAABB(polygon, xf);
         case ShapeType::Segment:
             return meff::ComputeAABB(segment, xf);
@@ -58,6 +67,8 @@ struct Shape
         }
         return {};
     }
+    /// Collides as a rounded polygon (CollideRoundedPolygons): a capsule or rounded polygon.
+    bool IsRounded() const { return type == ShapeType::Capsule || rounded; }
 };
 
 } // namespace meff::detail

@@ -70,6 +70,10 @@ std::uint64_t World::GetStateHash() const
             hash.Add(contact.manifold.points[i].normalImpulse);
             hash.Add(contact.manifold.points[i].tangentImpulse);
         }
+        if (contact.rollingResistance > 0)
+        {
+            hash.Add(contact.rollingImpulse);
+        }
     }
     return hash.Value();
 }

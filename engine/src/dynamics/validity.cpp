@@ -206,6 +206,49 @@ std::optional<Refusal> CheckPolygon(const Polygon& polygon)
     return std::nullopt;
 }
 
+std::optional<Refusal> CheckPolygonRadius(const Polygon& polygon)
+{
+    if (!IsValid(polygon.radius) || !(polygon.radius >= 0))
+    {
+        return Refuse("Polygon::radius", "must be finite and >= 0, got " + Text(polygon.radius));
+    }
+    return std::nullopt;
+}
+
+std::optional<Refusal> CheckCapsule(const Capsule& capsule, Real linearSlop)
+{
+    if (!capsule.center1.IsValid())
+    {
+        return Refuse("Capsule::center1", "must be finite, got " + Text(capsule.center1));
+    }
+    if (!capsule.center2.IsValid())
+    {
+        return Refuse("Capsule::center2", "must be finite, got " + Text(capsule.center2));
+    }
+    if (!(DistanceSquared(capsule.center1, capsule.center2) > linearSlop * linearSlop))
+    {
+        return Refuse("Capsule::center2",
+                      "must be more than the linear slop (" + Text(linearSlop) +
+                          " m) from center1 (a capsule with one centre is a circle), got " +
+                          Text(capsule.center1) + " and " + Text(capsule.center2));
+    }
+    if (!IsValid(capsule.radius) || !(capsule.radius > 0))
+    {
+        return Refuse("Capsule::radius", "must be finite and > 0, got " + Text(capsule.radius));
+    }
+    // As ComputeMass adds it up: the caps and the two bands along the core.
+    const Real length = Distance(capsule.center1, capsule.center2);
+    const Real area = kPi * capsule.radius * capsule.radius + Real(2) * capsule.radius * length;
+    if (!IsNormalPositive(area))
+    {
+        const double r = double(capsule.radius);
+        const double exact = 3.141592653589793 * r * r + 2 * r * double(length);
+        return Refuse("Capsule::radius",
+                      OutOfRange(area, exact, "area", "m²") + ", got " + Text(capsule.radius));
+    }
+    return std::nullopt;
+}
+
 std::optional<Refusal> CheckSegment(const Segment& segment, Real linearSlop)
 {
     if (!segment.point1.IsValid())
@@ -230,7 +273,8 @@ std::optional<Refusal> CheckShapeDef(const ShapeDef& def)
     const std::pair<const char*, Real> nonNegative[] = {
         {"ShapeDef::density", def.density},
         {"ShapeDef::friction", def.friction},
-        {"ShapeDef::restitutionThreshold", def.restitutionThreshold}};
+        {"ShapeDef::restitutionThreshold", def.restitutionThreshold},
+        {"ShapeDef::rollingResistance", def.rollingResistance}};
     for (const auto& [field, value] : nonNegative)
     {
         if (!IsValid(value) || !(value >= 0))
@@ -241,6 +285,10 @@ std::optional<Refusal> CheckShapeDef(const ShapeDef& def)
     if (!IsValid(def.restitution) || !(def.restitution >= 0 && def.restitution <= 1))
     {
         return Refuse("ShapeDef::restitution", "must be in [0, 1], got " + Text(def.restitution));
+    }
+    if (!IsValid(def.tangentSpeed))
+    {
+        return Refuse("ShapeDef::tangentSpeed", "must be finite, got " + Text(def.tangentSpeed));
     }
     return std::nullopt;
 }
@@ -293,6 +341,17 @@ std::optional<Refusal> CheckMass(const Polygon& polygon, Real density, bool fixe
     }
     return CheckMassData(ComputeMass(polygon, density), density, fixedRotation,
                          "Polygon::vertices");
+}
+
+std::optional<Refusal> CheckMass(const Capsule& capsule, Real density, bool fixedRotation)
+{
+    return CheckMassData(ComputeMass(capsule, density), density, fixedRotation, "Capsule::radius");
+}
+
+std::optional<Refusal> CheckRoundedMass(const Polygon& polygon, Real density, bool fixedRotation)
+{
+    return CheckMassData(ComputeRoundedMass(polygon, density), density, fixedRotation,
+                         "Polygon::radius");
 }
 
 BodyMass ComputeBodyMass(std::span<const MassData> shapesNewestFirst, bool fixedRotation)

@@ -129,8 +129,12 @@ auto& Resolve(Pool& pool, IdType id, const char* kind)
 /// A shape's mass data (ComputeMass at its density).
 MassData ShapeMass(const Shape& shape)
 {
-    return shape.type == ShapeType::Circle ? ComputeMass(shape.circle, shape.def.density)
-                                           : ComputeMass(shape.polygon, shape.def.density);
+    if (shape.type == ShapeType::Circle)
+    {
+        return ComputeMass(shape.circle, shape.def.density);
+    }
+    return shape.IsRounded() ? ComputeRoundedMass(shape.polygon, shape.def.density)
+                             : ComputeMass(shape.polygon, shape.def.density);
 }
 
 /// Whether a shape gives its body mass: Box2D skips zero densities, and segments and chain
@@ -138,7 +142,8 @@ MassData ShapeMass(const Shape& shape)
 bool HasMass(const Shape& shape)
 {
     return shape.def.density != 0 &&
-           (shape.type == ShapeType::Circle || shape.type == ShapeType::Polygon);
+           (shape.type == ShapeType::Circle || shape.type == ShapeType::Polygon ||
+            shape.type == ShapeType::Capsule);
 }
 
 /// The mass data of a body's shapes that have mass, newest first (b2Body's fixture order).
@@ -680,9 +685,12 @@ void RequireMassAccepted(const WorldState& world, const Body& body, const Shape&
     {
         return;
     }
-    Require(shape.type == ShapeType::Circle
-                ? CheckMass(shape.circle, shape.def.density, body.fixedRotation)
-                : CheckMass(shape.polygon, shape.def.density, body.fixedRotation));
+    const Real density = shape.def.density;
+    Require(shape.type == ShapeType::Circle ? CheckMass(shape.circle, density, body.fixedRotation)
+            : shape.type == ShapeType::Capsule
+                ? CheckMass(shape.capsule, density, body.fixedRotation)
+            : shape.rounded ? CheckRoundedMass(shape.polygon, density, body.fixedRotation)
+                            : CheckMass(shape.polygon, density, body.fixedRotation));
     std::vector<MassData> masses = ShapeMasses(world, body);
     masses.insert(masses.begin(), ShapeMass(shape)); // the new shape will be the newest
     Require(CheckBodyMass(masses, body.fixedRotation));
@@ -736,10 +744,24 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& poly
     // Polygon is a public struct, so one built by hand reaches CreateShape without
     // MakePolygon's checks: the same rule is applied here (found by the hostile-input tests).
     Require(CheckPolygon(polygon));
+    Require(CheckPolygonRadius(polygon));
     Shape shape;
     shape.type = ShapeType::Polygon;
     shape.polygon = polygon;
-    shape.polygon.radius = State().tolerances.polygonSkin;
+    // A radius within the skin leaves a sharp polygon, Box2D 2.4.1's, bit for bit.
+    const Real skin = State().tolerances.polygonSkin;
+    shape.rounded = polygon.radius > skin;
+    shape.polygon.radius = shape.rounded ? polygon.radius : skin;
+    return AddShape(State(), body, def, shape);
+}
+
+ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Capsule& capsule)
+{
+    Require(CheckCapsule(capsule, State().tolerances.linearSlop));
+    Shape shape;
+    shape.type = ShapeType::Capsule;
+    shape.capsule = capsule;
+    shape.polygon = MakeCapsulePolygon(capsule);
     return AddShape(State(), body, def, shape);
 }
 
@@ -848,6 +870,13 @@ const Polygon& World::GetPolygon(ShapeId id) const
     Require(shape.type == ShapeType::Polygon,
             [&] { return std::string("World::GetPolygon: the shape is not a polygon"); });
     return shape.polygon;
+}
+const Capsule& World::GetCapsule(ShapeId id) const
+{
+    const Shape& shape = Resolve(State().shapes, id, "shape");
+    Require(shape.type == ShapeType::Capsule,
+            [&] { return std::string("World::GetCapsule: the shape is not a capsule"); });
+    return shape.capsule;
 }
 const Segment& World::GetSegment(ShapeId id) const
 {
@@ -974,6 +1003,18 @@ JointId World::CreateJoint(const WheelJointDef& def)
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass));
+}
+
+JointId World::CreateJoint(const FrictionJointDef& def)
+{
+    RequireTwoBodies(State(), JointType::Friction, def.bodyA, def.bodyB);
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
+}
+
+JointId World::CreateJoint(const PulleyJointDef& def)
+{
+    RequireTwoBodies(State(), JointType::Pulley, def.bodyA, def.bodyB);
+    return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const MouseJointDef& def)
@@ -1269,6 +1310,37 @@ MotorJointDef World::MakeMotorJointDef(BodyId a, BodyId b) const
     def.bodyB = b;
     def.linearOffset = GetLocalPoint(a, GetPosition(b));
     def.angularOffset = GetAngle(b) - GetAngle(a);
+    return def;
+}
+
+FrictionJointDef World::MakeFrictionJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
+{
+    RequireFinite(worldAnchor, "MakeFrictionJointDef: anchor");
+    FrictionJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = GetLocalPoint(a, worldAnchor);
+    def.localAnchorB = GetLocalPoint(b, worldAnchor);
+    return def;
+}
+
+PulleyJointDef World::MakePulleyJointDef(BodyId a, BodyId b, Vec2 groundAnchorA, Vec2 groundAnchorB,
+                                         Vec2 anchorA, Vec2 anchorB, Real ratio) const
+{
+    RequireFinite(groundAnchorA, "MakePulleyJointDef: groundAnchorA");
+    RequireFinite(groundAnchorB, "MakePulleyJointDef: groundAnchorB");
+    RequireFinite(anchorA, "MakePulleyJointDef: anchorA");
+    RequireFinite(anchorB, "MakePulleyJointDef: anchorB");
+    PulleyJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.groundAnchorA = groundAnchorA;
+    def.groundAnchorB = groundAnchorB;
+    def.localAnchorA = GetLocalPoint(a, anchorA);
+    def.localAnchorB = GetLocalPoint(b, anchorB);
+    def.lengthA = (anchorA - groundAnchorA).Length();
+    def.lengthB = (anchorB - groundAnchorB).Length();
+    def.ratio = ratio; // checked by CreateJoint
     return def;
 }
 

@@ -6,7 +6,9 @@
 #include "meff/debug_draw.h"
 #include "meff/world.h"
 
+#include <cmath>
 #include <variant>
+#include <vector>
 
 namespace meff
 {
@@ -64,6 +66,30 @@ Vec2 PolygonExit(const Polygon& polygon, Vec2 origin, Vec2 direction)
     return t == kMaxReal ? origin : origin + t * direction;
 }
 
+/// The rounded outline of a capsule or rounded polygon in world coordinates: each core edge
+/// pushed out by the radius, joined by arcs about the vertices (about 8 chords per half turn,
+/// at least one per corner).
+std::vector<Vec2> RoundedOutline(const Polygon& core, const Transform& xf)
+{
+    std::vector<Vec2> outline;
+    const int n = core.count;
+    for (int i = 0; i < n; ++i)
+    {
+        const Vec2 from = core.normals[i > 0 ? i - 1 : n - 1];
+        const Vec2 to = core.normals[i];
+        const Real turn = std::atan2(Max(Cross(from, to), Real(0)), Dot(from, to));
+        const int chords = Max(1, int(std::ceil(double(turn) * 8 / double(kPi))));
+        for (int k = 0; k <= chords; ++k)
+        {
+            const Real a = turn * Real(k) / Real(chords);
+            const Vec2 dir{std::cos(a) * from.x - std::sin(a) * from.y,
+                           std::sin(a) * from.x + std::cos(a) * from.y};
+            outline.push_back(Mul(xf, core.vertices[i] + core.radius * dir));
+        }
+    }
+    return outline;
+}
+
 void DrawShape(DebugDraw& draw, const Shape& shape, const Transform& xf, const DrawColor& color)
 {
     switch (shape.type)
@@ -74,6 +100,11 @@ void DrawShape(DebugDraw& draw, const Shape& shape, const Transform& xf, const D
         draw.DrawSolidCircle(center, shape.circle.radius, xf.q.GetXAxis(), color);
         break;
     }
+    case ShapeType::Capsule:
+        // The outline, and the core as the capsule's axis line.
+        draw.DrawSolidPolygon(RoundedOutline(shape.polygon, xf), color);
+        draw.DrawSegment(Mul(xf, shape.capsule.center1), Mul(xf, shape.capsule.center2), color);
+        break;
     case ShapeType::Polygon:
     {
         const Polygon& polygon = shape.polygon;
@@ -82,7 +113,15 @@ void DrawShape(DebugDraw& draw, const Shape& shape, const Transform& xf, const D
         {
             vertices[i] = Mul(xf, polygon.vertices[i]);
         }
-        draw.DrawSolidPolygon(std::span<const Vec2>(vertices, std::size_t(polygon.count)), color);
+        if (shape.rounded)
+        {
+            draw.DrawSolidPolygon(RoundedOutline(polygon, xf), color);
+        }
+        else
+        {
+            draw.DrawSolidPolygon(std::span<const Vec2>(vertices, std::size_t(polygon.count)),
+                                  color);
+        }
         const Vec2 exit = PolygonExit(polygon, polygon.centroid, Vec2{1, 0});
         draw.DrawSegment(Mul(xf, polygon.centroid), Mul(xf, exit), color);
         break;
@@ -211,6 +250,17 @@ void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
                 draw.DrawPoint(anchorA, flags.pointSize, colors.joint);
                 draw.DrawPoint(anchorB, flags.pointSize, colors.joint);
                 draw.DrawSegment(anchorA, anchorB, colors.joint);
+                continue;
+            }
+            if (const auto* pulley = std::get_if<PulleyJoint>(&joint.data))
+            {
+                // As b2Joint::Draw for a pulley: the rope from each ground anchor down to its
+                // body's anchor, and across between the ground anchors.
+                draw.DrawSegment(pulley->groundAnchorA, anchorA, colors.joint);
+                draw.DrawSegment(pulley->groundAnchorB, anchorB, colors.joint);
+                draw.DrawSegment(pulley->groundAnchorA, pulley->groundAnchorB, colors.joint);
+                draw.DrawPoint(anchorA, flags.pointSize, colors.joint);
+                draw.DrawPoint(anchorB, flags.pointSize, colors.joint);
                 continue;
             }
             // As b2Joint::Draw: each moving body's centre to its anchor, then anchor to anchor

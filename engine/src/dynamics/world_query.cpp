@@ -12,6 +12,7 @@
 #include "dynamics/world_state.h"
 #include "meff/distance.h"
 #include "meff/ray_cast.h"
+#include "meff/validity.h"
 #include "meff/world.h"
 
 #include <string>
@@ -80,7 +81,10 @@ bool RayCastShape(const Shape& shape, const Transform& xf, const RayCastInput& i
     case ShapeType::Circle:
         return RayCast(shape.circle, xf, input, output);
     case ShapeType::Polygon:
-        return RayCast(shape.polygon, xf, input, output);
+        return shape.rounded ? RayCastRounded(shape.polygon, xf, input, output)
+                             : RayCast(shape.polygon, xf, input, output);
+    case ShapeType::Capsule:
+        return RayCastRounded(shape.polygon, xf, input, output);
     case ShapeType::Segment:
         return RayCast(shape.segment, xf, input, output);
     case ShapeType::ChainSegment:
@@ -99,7 +103,10 @@ bool TestPointShape(const Shape& shape, const Transform& xf, Vec2 point)
     case ShapeType::Circle:
         return TestPoint(shape.circle, xf, point);
     case ShapeType::Polygon:
-        return TestPoint(shape.polygon, xf, point);
+        return shape.rounded ? TestPointRounded(shape.polygon, xf, point)
+                             : TestPoint(shape.polygon, xf, point);
+    case ShapeType::Capsule:
+        return TestPointRounded(shape.polygon, xf, point);
     case ShapeType::Segment:
         return TestPoint(shape.segment, xf, point);
     case ShapeType::ChainSegment:
@@ -148,7 +155,16 @@ void RequireValidCastShape(const Polygon& polygon)
     }
 }
 
-/// The shape cast behind both CastShape overloads: `proxy` at `start` swept by `translation`.
+void RequireValidCastShape(const Capsule& capsule, const Tolerances& tolerances)
+{
+    if (const std::optional<Refusal> refusal = CheckCapsule(capsule, tolerances.linearSlop))
+    {
+        throw InvalidArgument("World::CastShape: shape: " + refusal->field + ": " +
+                              refusal->reason);
+    }
+}
+
+/// The shape cast behind the CastShape overloads: `proxy` at `start` swept by `translation`.
 void CastProxy(const WorldState& world, const DistanceProxy& proxy, const AABB& startBox,
                const Transform& start, Vec2 translation, QueryFilter filter, CastCallback callback)
 {
@@ -284,6 +300,24 @@ void World::CastShape(const Polygon& shape, const Transform& start, Vec2 transla
     RequireFinite(translation, "World::CastShape: translation");
     CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
               callback);
+}
+
+void World::CastShape(const Capsule& shape, const Transform& start, Vec2 translation,
+                      QueryFilter filter, CastCallback callback) const
+{
+    RequireValidCastShape(shape, State().tolerances);
+    RequireValidTransform(start, "World::CastShape: start");
+    RequireFinite(translation, "World::CastShape: translation");
+    CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
+              callback);
+}
+
+RayResult World::CastShapeClosest(const Capsule& shape, const Transform& start, Vec2 translation,
+                                  QueryFilter filter) const
+{
+    ClosestHit closest;
+    CastShape(shape, start, translation, filter, closest);
+    return closest.result;
 }
 
 RayResult World::CastShapeClosest(const Circle& shape, const Transform& start, Vec2 translation,

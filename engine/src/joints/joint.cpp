@@ -331,6 +331,56 @@ Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB
     return joint;
 }
 
+Joint MakeJoint(const FrictionJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
+{
+    constexpr const char* kDef = "FrictionJointDef";
+    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
+    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
+    RequireNonNegative(kDef, "maxForce", def.maxForce);
+    RequireNonNegative(kDef, "maxTorque", def.maxTorque);
+
+    FrictionJoint friction;
+    friction.localAnchorA = def.localAnchorA;
+    friction.localAnchorB = def.localAnchorB;
+    friction.maxForce = def.maxForce;
+    friction.maxTorque = def.maxTorque;
+
+    Joint joint = MakeTypedJoint(JointType::Friction, bodyA, bodyB, def.collideConnected);
+    joint.data = friction;
+    return joint;
+}
+
+Joint MakeJoint(const PulleyJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
+{
+    constexpr const char* kDef = "PulleyJointDef";
+    RequireFinite(kDef, "groundAnchorA", def.groundAnchorA);
+    RequireFinite(kDef, "groundAnchorB", def.groundAnchorB);
+    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
+    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
+    RequireNonNegative(kDef, "lengthA", def.lengthA);
+    RequireNonNegative(kDef, "lengthB", def.lengthB);
+    RequireFinite(kDef, "ratio", def.ratio);
+    if (!(def.ratio > 0))
+    {
+        // 0 would cut B's side off the rope; a negative ratio would make it push when pulled.
+        Reject(kDef, "ratio", def.ratio, "must be > 0");
+    }
+
+    PulleyJoint pulley;
+    pulley.groundAnchorA = def.groundAnchorA;
+    pulley.groundAnchorB = def.groundAnchorB;
+    pulley.localAnchorA = def.localAnchorA;
+    pulley.localAnchorB = def.localAnchorB;
+    pulley.lengthA = def.lengthA;
+    pulley.lengthB = def.lengthB;
+    pulley.ratio = def.ratio;
+    pulley.constant = def.lengthA + def.ratio * def.lengthB;
+
+    Joint joint = MakeTypedJoint(JointType::Pulley, bodyA, bodyB, def.collideConnected);
+    joint.data = pulley;
+    return joint;
+}
+
 Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB, const Transform& xfB, bool bodyBDynamic)
 {

@@ -1,7 +1,8 @@
 // Joints inside the solver. Each joint type lives in its own file (revolute_joint.cpp,
 // distance_joint.cpp, prismatic_joint.cpp, wheel_joint.cpp, weld_joint.cpp, motor_joint.cpp,
-// mouse_joint.cpp) and is reached through the functions at the bottom, which switch on the type.
-// Every constraint row is solved with the scalar effective mass
+// mouse_joint.cpp, friction_joint.cpp, pulley_joint.cpp) and is reached through the functions at
+// the bottom, which switch on the type. Every constraint row is solved with the scalar effective
+// mass
 //   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB   (seed: effective-mass.md)
 // and λ = −(Jv + bias)/k, following Box2D 2.4.1's sequential-impulse formulation.
 // Each solver function copies its bodies' state out of SolverData at the start
@@ -174,6 +175,40 @@ struct MouseJoint
     Real beta = 0, gamma = 0;
 };
 
+struct FrictionJoint
+{
+    // Definition
+    Vec2 localAnchorA, localAnchorB;
+    Real maxForce = 0, maxTorque = 0;
+    // Accumulated impulses
+    Vec2 linearImpulse;
+    Real angularImpulse = 0;
+    // Solver temporaries
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 rA, rB, localCenterA, localCenterB;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Mat22 K;          ///< point block J·M⁻¹·Jᵀ; its diagonal holds each row's scalar k
+    Mat22 linearMass; ///< K⁻¹
+    Real angularMass = 0;
+};
+
+struct PulleyJoint
+{
+    // Definition
+    Vec2 groundAnchorA, groundAnchorB; ///< world points (m)
+    Vec2 localAnchorA, localAnchorB;
+    Real lengthA = 0, lengthB = 0, ratio = 1;
+    Real constant = 0; ///< lengthA + ratio·lengthB, the rope's length
+    // Accumulated impulse
+    Real impulse = 0;
+    // Solver temporaries
+    std::int32_t indexA = 0, indexB = 0;
+    Vec2 uA, uB; ///< unit rope directions from the ground anchors (0 when too short)
+    Vec2 rA, rB, localCenterA, localCenterB;
+    Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
+    Real mass = 0; ///< 1/k
+};
+
 struct Joint
 {
     JointType type = JointType::Revolute;
@@ -181,7 +216,7 @@ struct Joint
     std::int32_t bodyB = -1;
     bool collideConnected = false;
     std::variant<RevoluteJoint, DistanceJoint, PrismaticJoint, WheelJoint, WeldJoint, MotorJoint,
-                 MouseJoint>
+                 MouseJoint, FrictionJoint, PulleyJoint>
         data;
 };
 
@@ -216,6 +251,8 @@ Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB
 Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real inertiaA,
                 Real inertiaB);
 Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
+Joint MakeJoint(const FrictionJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
+Joint MakeJoint(const PulleyJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
 /// xfB: bodyB's transform now, which turns the target into the grabbed local point.
 /// bodyBDynamic: the world's answer to "is bodyB dynamic" (a mouse joint must move it).
 Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
@@ -277,5 +314,21 @@ void InitVelocityConstraints(MouseJoint& joint, const JointBody& a, const JointB
 void SolveVelocityConstraints(MouseJoint& joint, SolverData& data);
 bool SolvePositionConstraints(MouseJoint& joint, SolverData& data);
 JointReaction GetReaction(const MouseJoint& joint, Real invDt);
+
+void InitVelocityConstraints(FrictionJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(FrictionJoint& joint, SolverData& data);
+bool SolvePositionConstraints(FrictionJoint& joint, SolverData& data);
+JointReaction GetReaction(const FrictionJoint& joint, Real invDt);
+
+void InitVelocityConstraints(PulleyJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(PulleyJoint& joint, SolverData& data);
+bool SolvePositionConstraints(PulleyJoint& joint, SolverData& data);
+JointReaction GetReaction(const PulleyJoint& joint, Real invDt);
+/// The rope's unit direction from a ground anchor to a body's anchor (offset d), or 0 when
+/// the side is within 10 linear slops of its ground anchor (Box2D's cut-off); `length`
+/// receives |d|.
+Vec2 PulleyDirection(Vec2 d, Real linearSlop, Real& length);
 
 } // namespace meff::detail

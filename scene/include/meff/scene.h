@@ -57,6 +57,7 @@ enum class SceneShapeType
     Polygon,
     Segment,
     Chain,
+    Capsule,
 };
 
 /// "filter": which shapes may collide (see meff::Filter).
@@ -73,7 +74,7 @@ struct SceneFilter
 struct SceneShape
 {
     SceneShapeType type = SceneShapeType::Circle;
-    // circle
+    // circle and capsule
     double radius = 0; ///< m, > 0
     // circle and box
     SceneVec2 center; ///< body coordinates (m)
@@ -81,8 +82,14 @@ struct SceneShape
     double halfWidth = 0;  ///< m, > 0
     double halfHeight = 0; ///< m, > 0
     double angle = 0;      ///< rad, the box's turn within the body
+    /// box and polygon: the file's "radius", rounding it (Box2D v3's rounded polygon): 0 for
+    /// sharp corners, else above the polygon skin (0.01 m)
+    double rounding = 0;
     // polygon: the corners of a convex polygon, body coordinates (m), any order
     std::vector<SceneVec2> vertices;
+    // capsule: the centres of its two caps, body coordinates (m)
+    SceneVec2 centerA;
+    SceneVec2 centerB;
     // segment: its two ends, body coordinates (m)
     SceneVec2 point1;
     SceneVec2 point2;
@@ -101,6 +108,8 @@ struct SceneShape
     double friction = 0.6;           ///< ≥ 0
     double restitution = 0;          ///< [0, 1]
     double restitutionThreshold = 1; ///< m/s, ≥ 0
+    double tangentSpeed = 0;         ///< m/s, conveyor belt (ShapeDef::tangentSpeed)
+    double rollingResistance = 0;    ///< ≥ 0 (ShapeDef::rollingResistance)
     SceneFilter filter;
     bool sensor = false;
 
@@ -139,8 +148,8 @@ struct SceneJoint
     std::size_t bodyIndexA = 0; ///< index into Scene::bodies
     std::size_t bodyIndexB = 0; ///< index into Scene::bodies
     bool collideConnected = false;
-    // revolute, prismatic, wheel, weld; mouse: the grabbed point on body B (limit and motor
-    // fields are shared by revolute, prismatic and wheel)
+    // revolute, prismatic, wheel, weld, friction; mouse: the grabbed point on body B (limit and
+    // motor fields are shared by revolute, prismatic and wheel)
     SceneVec2 anchor; ///< world point (m)
     bool enableLimit = false;
     double lowerAngle = 0; ///< rad, ≤ upperAngle
@@ -153,7 +162,7 @@ struct SceneJoint
     double lowerTranslation = 0; ///< m along the axis from the anchor, ≤ upperTranslation
     double upperTranslation = 0; ///< m
     double maxMotorForce = 0;    ///< N, ≥ 0 (prismatic)
-    // distance (stiffnessHz and dampingRatio also set a wheel's suspension)
+    // distance (stiffnessHz and dampingRatio also set a wheel's suspension); pulley
     SceneVec2 anchorA;       ///< world point on body A (m)
     SceneVec2 anchorB;       ///< world point on body B (m)
     double length = 0;       ///< m, > 0; the file's value or the distance between the anchors
@@ -161,8 +170,8 @@ struct SceneJoint
     double maxLength = 0;    ///< m; the file's value or `length`
     double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring (distance, weld, mouse)
     double dampingRatio = 0; ///< ≥ 0 (distance, weld, mouse)
-    // revolute, prismatic, wheel, weld, distance: the anchors in the bodies' own frames, as
-    // Box2D's joint definitions and b2dJson files hold them, instead of world points
+    // revolute, prismatic, wheel, weld, distance, friction: the anchors in the bodies' own frames,
+    // as Box2D's joint definitions and b2dJson files hold them, instead of world points
     bool localAnchors = false; ///< true: localAnchorA/B hold the anchors (anchor is unused)
     SceneVec2 localAnchorA;    ///< body A's frame (m)
     SceneVec2 localAnchorB;    ///< body B's frame (m)
@@ -174,12 +183,16 @@ struct SceneJoint
     // motor
     std::optional<SceneVec2> linearOffset; ///< B's origin in A's frame (m); unset: as created
     std::optional<double> angularOffset;   ///< angleB − angleA (rad); unset: as created
-    double maxTorque = 1;                  ///< N·m, ≥ 0
+    double maxTorque = 1;                  ///< N·m, ≥ 0 (also friction's; its default 0)
     double correctionFactor = 0.3;         ///< in [0, 1]
-    // motor, mouse
-    double maxForce = 1; ///< N, ≥ 0
+    // motor, mouse, friction
+    double maxForce = 1; ///< N, ≥ 0 (friction's default 0)
     // mouse
     SceneVec2 target; ///< world point body B's anchor is dragged towards (m)
+    // pulley (its anchors on the bodies are anchorA and anchorB, world points)
+    SceneVec2 groundAnchorA; ///< fixed world point body A's side hangs from (m)
+    SceneVec2 groundAnchorB; ///< fixed world point body B's side hangs from (m)
+    double ratio = 1;        ///< > 0: lengthA + ratio·lengthB is kept
 
     friend bool operator==(const SceneJoint&, const SceneJoint&) = default;
 };

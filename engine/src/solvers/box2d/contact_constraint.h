@@ -44,6 +44,10 @@ struct ContactVelocityConstraint
     std::int32_t indexA = 0, indexB = 0;
     Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
     Real friction = 0, restitution = 0, threshold = 0;
+    Real tangentSpeed = 0; ///< the friction rows' target (Contact::tangentSpeed, m/s)
+    /// The spin row (rolling resistance): |impulse| ≤ rollingResistance·Σ normal impulses, on
+    /// the angular row's effective mass 1/(1/IA + 1/IB). Skipped when rollingResistance is 0.
+    Real rollingResistance = 0, rollingMass = 0, rollingImpulse = 0;
     int pointCount = 0;
     std::int32_t contactIndex = 0; ///< world contact index
 };
@@ -69,6 +73,7 @@ struct SolvedContact
     Real normalImpulse[2]{};     ///< accumulated over the velocity iterations (N·s)
     Real tangentImpulse[2]{};
     Real normalVelocity[2]{}; ///< vn before impulses, as restitution measures it (m/s)
+    Real rollingImpulse = 0;  ///< the spin row's (N·m·s)
 };
 
 /// Box2D's largest accepted condition number of a two-point manifold's 2×2 block before the
@@ -131,6 +136,19 @@ inline bool SolveTwoPointBlock(const Mat22& K, const Mat22& invK, Real mass1, Re
 /// One contact's sequential-impulse update: friction rows, then the normal rows one by one or,
 /// for a two-point manifold with `blockSolver`, as Box2D's 2×2 block.
 void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities, bool blockSolver);
+
+/// The spin row of rolling resistance on relative angular velocity wB − wA: its accumulated
+/// impulse is clamped to ±resistance·(the points' normal impulses), the torque c·r·N of a
+/// rolling resistance coefficient c. Shared by every back end.
+inline Real SolveRollingRow(Real mass, Real resistance, Real totalNormalImpulse, Real wA, Real wB,
+                            Real& accumulated)
+{
+    const Real limit = resistance * totalNormalImpulse;
+    const Real next = Clamp(accumulated - mass * (wB - wA), -limit, limit);
+    const Real applied = next - accumulated;
+    accumulated = next;
+    return applied;
+}
 
 /// One contact's non-linear Gauss-Seidel position update with Baumgarte factor `baumgarte` and
 /// inverse masses `masses`; returns the smallest separation it saw (≤ 0).

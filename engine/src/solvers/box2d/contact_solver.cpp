@@ -82,6 +82,11 @@ void WarmStartConstraint(const ContactVelocityConstraint& vc, Velocity* velociti
         wB += vc.invIB * Cross(vp.rB, P);
         vB += vc.invMassB * P;
     }
+    if (vc.rollingResistance > 0)
+    {
+        wA -= vc.invIA * vc.rollingImpulse;
+        wB += vc.invIB * vc.rollingImpulse;
+    }
     a.v = vA;
     a.w = wA;
     b.v = vB;
@@ -102,6 +107,15 @@ bool PrepareContactConstraint(const IslandContacts& island, std::size_t k, const
     vc.friction = contact.friction;
     vc.restitution = contact.restitution;
     vc.threshold = contact.restitutionThreshold;
+    vc.tangentSpeed = contact.tangentSpeed;
+    vc.rollingResistance = contact.rollingResistance;
+    vc.rollingImpulse = 0;
+    if (vc.rollingResistance > 0)
+    {
+        const Real k = bodyA.invI + bodyB.invI;
+        vc.rollingMass = k > 0 ? Real(1) / k : Real(0);
+        vc.rollingImpulse = warmStarting ? data.step.dtRatio * contact.rollingImpulse : Real(0);
+    }
     SetBodies(vc, bodyA, bodyB);
     vc.contactIndex = contactIndex;
     vc.pointCount = manifold.pointCount;
@@ -276,7 +290,9 @@ void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities
         for (int j = 0; j < vc.pointCount; ++j)
         {
             ContactVelocityPoint& vp = vc.points[j];
-            const Real vt = Dot(RelativeVelocity(vA, wA, vB, wB, vp), tangent);
+            // A conveyor's row drives vt to the belt's speed; x − 0 is x, so Box2D's
+            // arithmetic is unchanged without one.
+            const Real vt = Dot(RelativeVelocity(vA, wA, vB, wB, vp), tangent) - vc.tangentSpeed;
             Real lambda = vp.tangentMass * (-vt);
             const Real maxFriction = vc.friction * vp.normalImpulse;
             const Real newImpulse = Clamp(vp.tangentImpulse + lambda, -maxFriction, maxFriction);
@@ -284,6 +300,21 @@ void SolveVelocityConstraint(ContactVelocityConstraint& vc, Velocity* velocities
             vp.tangentImpulse = newImpulse;
             applyAtPoint(vp, lambda * tangent);
         }
+    }
+
+    // Rolling resistance (Box2D v3 solves it after friction): 2.4.1 has none, and a
+    // contact without it skips the row, so Box2D's arithmetic is unchanged.
+    if (vc.rollingResistance > 0)
+    {
+        Real totalNormalImpulse = 0;
+        for (int j = 0; j < vc.pointCount; ++j)
+        {
+            totalNormalImpulse += vc.points[j].normalImpulse;
+        }
+        const Real lambda = SolveRollingRow(vc.rollingMass, vc.rollingResistance,
+                                            totalNormalImpulse, wA, wB, vc.rollingImpulse);
+        wA -= iA * lambda;
+        wB += iB * lambda;
     }
 
     if (vc.pointCount == 1 || !blockSolver)
@@ -322,6 +353,7 @@ void CollectContactResult(const ContactVelocityConstraint& vc, SolvedContact& so
 {
     solved.contactIndex = vc.contactIndex;
     solved.pointCount = vc.pointCount;
+    solved.rollingImpulse = vc.rollingImpulse;
     for (int j = 0; j < vc.pointCount; ++j)
     {
         solved.normalImpulse[j] = vc.points[j].normalImpulse;

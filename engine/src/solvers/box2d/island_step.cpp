@@ -126,6 +126,7 @@ void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Conta
 {
     for (const SolvedContact& s : solved)
     {
+        contacts[s.contactIndex].rollingImpulse = s.rollingImpulse;
         Manifold& manifold = contacts[s.contactIndex].manifold;
         for (int j = 0; j < s.pointCount; ++j)
         {

@@ -17,20 +17,42 @@ namespace
     ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, P);
 }
 
-/// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn).
+/// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn, vt driven to
+/// the conveyor's speed).
 [[gnu::always_inline]] inline void SolveFriction(ContactVelocityGroup& g, BodyStateW& a,
                                                  BodyStateW& b)
 {
     const Vec2W tangent{g.normal.y, -g.normal.x};
     for (int j = 0; j < 2; ++j)
     {
-        const RealW vt = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), tangent);
+        const RealW vt = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), tangent) - g.tangentSpeed;
         const RealW maxFriction = g.friction * g.normalImpulse[j];
         const RealW newImpulse =
             MaxW(-maxFriction, MinW(g.tangentImpulse[j] + g.tangentMass[j] * (-vt), maxFriction));
         const RealW lambda = newImpulse - g.tangentImpulse[j];
         g.tangentImpulse[j] = newImpulse;
         ApplyImpulse(g, a, b, g.rA[j], g.rB[j], lambda * tangent);
+    }
+}
+
+/// The spin rows of rolling resistance (as SolveRollingRow), lane by lane: contacts with it
+/// are rare, so the lanes without it (resistance 0: limit 0, nothing applied) cost nothing else.
+void SolveRolling(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
+{
+    for (int l = 0; l < kLanes; ++l)
+    {
+        if (!(g.rollingResistance[l] > 0))
+        {
+            continue;
+        }
+        // A lane of a vector type is not an lvalue a reference may bind to (clang refuses it).
+        Real accumulated = g.rollingImpulse[l];
+        const Real lambda = SolveRollingRow(g.rollingMass[l], g.rollingResistance[l],
+                                            g.normalImpulse[0][l] + g.normalImpulse[1][l],
+                                            a.angular[l], b.angular[l], accumulated);
+        g.rollingImpulse[l] = accumulated;
+        a.angular[l] -= g.invIA[l] * lambda;
+        b.angular[l] += g.invIB[l] * lambda;
     }
 }
 
@@ -100,6 +122,10 @@ void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
     BodyStateW a = Gather(velocities, g.indexA);
     BodyStateW b = Gather(velocities, g.indexB);
     SolveFriction(g, a, b);
+    if (g.anyRolling)
+    {
+        SolveRolling(g, a, b);
+    }
     if (!g.anyBlock)
     {
         SolveNormalRows(g, a, b);
@@ -197,6 +223,7 @@ void ContactLanes::CollectResults(std::span<SolvedContact> solved) const
         for (int l = 0; l < kLanes && group.source[l] >= 0; ++l)
         {
             SolvedContact& s = solved[group.source[l]];
+            s.rollingImpulse = group.rollingImpulse[l];
             for (int j = 0; j < s.pointCount; ++j)
             {
                 s.normalImpulse[j] = group.normalImpulse[j][l];

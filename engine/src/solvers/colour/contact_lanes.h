@@ -28,6 +28,9 @@ struct ContactVelocityGroup
     std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices (0 in empty lanes)
     std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (Scatter)
     RealW invMassA, invMassB, invIA, invIB, friction;
+    RealW tangentSpeed; ///< the friction rows' target (Contact::tangentSpeed, m/s)
+    RealW rollingResistance, rollingMass, rollingImpulse; ///< the spin row (0: none)
+    bool anyRolling = false;                              ///< a lane has rolling resistance
     Vec2W normal;
     Vec2W rA[2], rB[2];
     RealW normalMass[2], tangentMass[2], velocityBias[2]; ///< 1/k of each row (kg); m/s

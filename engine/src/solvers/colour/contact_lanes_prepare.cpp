@@ -50,6 +50,15 @@ void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& 
     vg.invIA[l] = pg.invIA[l] = bodyA.invI;
     vg.invIB[l] = pg.invIB[l] = bodyB.invI;
     vg.friction[l] = contact.friction;
+    vg.tangentSpeed[l] = contact.tangentSpeed;
+    if (contact.rollingResistance > 0)
+    {
+        const Real k = bodyA.invI + bodyB.invI;
+        vg.rollingResistance[l] = contact.rollingResistance;
+        vg.rollingMass[l] = k > 0 ? Real(1) / k : Real(0);
+        vg.rollingImpulse[l] = impulseScale * contact.rollingImpulse;
+        vg.anyRolling = true;
+    }
     in.restitution[l] = contact.restitution;
     in.threshold[l] = contact.restitutionThreshold;
     in.valid[l] = -1;
@@ -298,6 +307,11 @@ void ContactLanes::WarmStart(SolverData& data)
         {
             const Vec2W P = g.normalImpulse[j] * g.normal + g.tangentImpulse[j] * tangent;
             ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA[j], g.rB[j], P);
+        }
+        if (g.anyRolling)
+        {
+            a.angular = a.angular - g.invIA * g.rollingImpulse;
+            b.angular = b.angular + g.invIB * g.rollingImpulse;
         }
         Scatter(data.velocities, g.storeA, a);
         Scatter(data.velocities, g.storeB, b);

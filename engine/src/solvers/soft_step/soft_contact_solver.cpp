@@ -68,6 +68,14 @@ void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepCont
         c.friction = contact.friction;
         c.restitution = contact.restitution;
         c.threshold = contact.restitutionThreshold;
+        c.tangentSpeed = contact.tangentSpeed;
+        c.rollingResistance = contact.rollingResistance;
+        c.rollingImpulse = c.totalRollingImpulse = 0;
+        if (c.rollingResistance > 0)
+        {
+            c.rollingMass = RowMass(c.iA + c.iB);
+            c.rollingImpulse = warmScale * contact.rollingImpulse;
+        }
         const bool againstFixed = (c.mA == 0 && c.iA == 0) || (c.mB == 0 && c.iB == 0);
         c.softness = againstFixed ? context.staticContact : context.contact;
 
@@ -132,6 +140,9 @@ void SoftContactSolver::WarmStart(const SoftStepContext& context)
             p.totalNormalImpulse += p.normalImpulse;
             p.totalTangentImpulse += p.tangentImpulse;
         }
+        b.wA -= c.iA * c.rollingImpulse;
+        b.wB += c.iB * c.rollingImpulse;
+        c.totalRollingImpulse += c.rollingImpulse;
         StoreBodies(c, b, context);
     }
 }
@@ -193,14 +204,26 @@ void SoftContactSolver::Solve(const SoftStepContext& context, bool useBias)
         if (friction && c.friction > 0)
         {
             const Vec2 tangent = Tangent(c.normal);
+            // Rigid, driven to the conveyor's speed: J·v + bias = vt − s → 0.
+            const RowTarget conveyor{-c.tangentSpeed, kRigid};
             for (int j = 0; j < c.pointCount; ++j)
             {
                 SoftContactPoint& p = c.points[j];
                 const Real maxFriction = c.friction * p.normalImpulse;
                 p.totalTangentImpulse +=
-                    SolveRow(PointRow(tangent, p.rA, p.rB), p.tangentMass, RowTarget{},
+                    SolveRow(PointRow(tangent, p.rA, p.rB), p.tangentMass, conveyor,
                              p.tangentImpulse, b, -maxFriction, maxFriction);
             }
+        }
+        if (friction && c.rollingResistance > 0)
+        {
+            const Real normal = c.points[0].normalImpulse +
+                                (c.pointCount > 1 ? c.points[1].normalImpulse : Real(0));
+            const Real lambda = SolveRollingRow(c.rollingMass, c.rollingResistance, normal, b.wA,
+                                                b.wB, c.rollingImpulse);
+            b.wA -= c.iA * lambda;
+            b.wB += c.iB * lambda;
+            c.totalRollingImpulse += lambda;
         }
         StoreBodies(c, b, context);
     }
@@ -273,14 +296,17 @@ void SoftContactSolver::ScaleImpulses(Real factor)
             c.points[j].normalImpulse *= factor;
             c.points[j].tangentImpulse *= factor;
         }
+        c.rollingImpulse *= factor;
     }
 }
 
 void SoftContactSolver::SaveImpulses()
 {
     m_saved.clear();
+    m_savedRolling.clear();
     for (const SoftContact& c : m_contacts)
     {
+        m_savedRolling.push_back(c.rollingImpulse);
         for (int j = 0; j < c.pointCount; ++j)
         {
             m_saved.push_back({c.points[j].normalImpulse, c.points[j].tangentImpulse});
@@ -291,8 +317,10 @@ void SoftContactSolver::SaveImpulses()
 void SoftContactSolver::RestoreImpulses()
 {
     std::size_t i = 0;
-    for (SoftContact& c : m_contacts)
+    for (std::size_t k = 0; k < m_contacts.size(); ++k)
     {
+        SoftContact& c = m_contacts[k];
+        c.rollingImpulse = m_savedRolling[k];
         for (int j = 0; j < c.pointCount; ++j, ++i)
         {
             c.points[j].normalImpulse = m_saved[i].x;
@@ -311,6 +339,8 @@ void SoftContactSolver::Store(std::span<Contact> contacts, const SoftStepContext
         SolvedContact& solved = m_solved[k];
         solved.contactIndex = c.contactIndex;
         solved.pointCount = c.pointCount;
+        solved.rollingImpulse = c.totalRollingImpulse;
+        contacts[c.contactIndex].rollingImpulse = perStep * c.rollingImpulse;
         Manifold& manifold = contacts[c.contactIndex].manifold;
         for (int j = 0; j < c.pointCount; ++j)
         {

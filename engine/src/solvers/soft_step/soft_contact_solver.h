@@ -44,6 +44,10 @@ struct SoftContact
     std::int32_t indexA = 0, indexB = 0;
     Real mA = 0, iA = 0, mB = 0, iB = 0;
     Real friction = 0, restitution = 0, threshold = 0;
+    Real tangentSpeed = 0; ///< the friction rows' target (Contact::tangentSpeed, m/s)
+    /// The spin row of rolling resistance (SolveRollingRow; 0: none), relaxed with friction:
+    /// its sub-step impulse (warm-started) and its total over the step (N·m·s).
+    Real rollingResistance = 0, rollingMass = 0, rollingImpulse = 0, totalRollingImpulse = 0;
     Softness softness; ///< soft contacts' normal rows while solving
     Mat22 K, invK;     ///< the normal rows' block, when `block`
     bool block = false;
@@ -82,7 +86,8 @@ class SoftContactSolver
 
     std::vector<SoftContact> m_contacts;
     std::vector<SolvedContact> m_solved;
-    std::vector<Vec2> m_saved; ///< normal and tangent impulse of each point (SaveImpulses)
+    std::vector<Vec2> m_saved;        ///< normal and tangent impulse of each point (SaveImpulses)
+    std::vector<Real> m_savedRolling; ///< each contact's rolling impulse (SaveImpulses)
     bool m_anyHitEvents = false;
 };
 

@@ -28,6 +28,7 @@ struct SoftJointFrame
     Vec2 deltaCenter;                    ///< cB − cA (m); the mouse: cB − target
     Real angle0 = 0;                     ///< aB − aA − reference angle (rad)
     Vec2 axis0;                          ///< prismatic and wheel: the slide axis in world axes
+    Vec2 ropeA0, ropeB0;                 ///< pulley: each anchor from its ground anchor (m)
     Softness spring;     ///< the joint's own spring over a sub-step, where it has one
     Softness halfSpring; ///< the same over half a sub-step (velocity Verlet's half kicks)
 };
@@ -129,6 +130,16 @@ void PrepareSoft(MouseJoint& joint, SoftJointFrame& frame, const Position& poseA
 void WarmStartSoft(const MouseJoint& joint, const SoftJointState& state, RowBodies& b);
 void SolveSoft(MouseJoint& joint, const SoftJointState& state, bool useBias, RowBodies& b);
 void ScaleImpulses(MouseJoint& joint, Real factor);
+void PrepareSoft(FrictionJoint& joint, SoftJointFrame& frame, const Position& poseA,
+                 const Position& poseB, const SoftStepContext& context);
+void WarmStartSoft(const FrictionJoint& joint, const SoftJointState& state, RowBodies& b);
+void SolveSoft(FrictionJoint& joint, const SoftJointState& state, bool useBias, RowBodies& b);
+void ScaleImpulses(FrictionJoint& joint, Real factor);
+void PrepareSoft(PulleyJoint& joint, SoftJointFrame& frame, const Position& poseA,
+                 const Position& poseB, const SoftStepContext& context);
+void WarmStartSoft(const PulleyJoint& joint, const SoftJointState& state, RowBodies& b);
+void SolveSoft(PulleyJoint& joint, const SoftJointState& state, bool useBias, RowBodies& b);
+void ScaleImpulses(PulleyJoint& joint, Real factor);
 
 /// Prepares the frame of a joint whose bodies are `a`, `b` (their poses at the step's start),
 /// and scales its stored per-step impulses to this sub-step (`warmScale`; 0 without warm
