@@ -28,6 +28,18 @@ std::vector<std::string> FieldsBox2D241Lacks(const Scene& scene, const std::stri
             }
         }
     }
+    for (std::size_t j = 0; j < scene.joints.size(); ++j)
+    {
+        const SceneJoint& joint = scene.joints[j];
+        if (joint.enableSpring)
+        {
+            messages.push_back(scene.sourcePath + ": joints[" + std::to_string(j) +
+                               "].enable_spring: a spring on a " +
+                               (joint.type == JointType::Revolute ? "revolute" : "prismatic") +
+                               " joint (Box2D v3's), which Box2D 2.4.1 does not have; " +
+                               consequence);
+        }
+    }
     return messages;
 }
 

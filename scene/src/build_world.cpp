@@ -108,6 +108,10 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         def.enableMotor = joint.enableMotor;
         def.motorSpeed = Real(joint.motorSpeed);
         def.maxMotorTorque = Real(joint.maxMotorTorque);
+        def.enableSpring = joint.enableSpring;
+        def.hertz = Real(joint.stiffnessHz);
+        def.dampingRatio = Real(joint.dampingRatio);
+        def.targetAngle = Real(joint.targetAngle);
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(def);
     }
@@ -126,6 +130,10 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         def.enableMotor = joint.enableMotor;
         def.motorSpeed = Real(joint.motorSpeed);
         def.maxMotorForce = Real(joint.maxMotorForce);
+        def.enableSpring = joint.enableSpring;
+        def.hertz = Real(joint.stiffnessHz);
+        def.dampingRatio = Real(joint.dampingRatio);
+        def.targetTranslation = Real(joint.targetTranslation);
         def.collideConnected = joint.collideConnected;
         return world.CreateJoint(def);
     }

@@ -630,6 +630,17 @@ SceneVec2 WorldPoint(const SceneBody& body, SceneVec2 local)
             body.position.y + s * local.x + c * local.y};
 }
 
+/// Box2D v3's spring of a revolute or prismatic joint: enable_spring, stiffness_hz and
+/// damping_ratio (each ≥ 0) and the target (`targetKey`: target_angle or target_translation).
+void ReadJointSpring(ObjectReader& reader, SceneJoint& joint, const char* targetKey, double& target)
+{
+    const SceneJoint defaults;
+    Assign(joint.enableSpring, reader.Boolean("enable_spring", defaults.enableSpring));
+    Assign(joint.stiffnessHz, ReadNonNegative(reader, "stiffness_hz", defaults.stiffnessHz));
+    Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", defaults.dampingRatio));
+    Assign(target, reader.Number(targetKey, 0.0));
+}
+
 void ReadRevoluteFields(ObjectReader& reader, SceneJoint& joint)
 {
     ReadAnchor(reader, joint);
@@ -649,6 +660,7 @@ void ReadRevoluteFields(ObjectReader& reader, SceneJoint& joint)
     Assign(joint.motorSpeed, reader.Number("motor_speed", defaults.motorSpeed));
     Assign(joint.maxMotorTorque,
            ReadNonNegative(reader, "max_motor_torque", defaults.maxMotorTorque));
+    ReadJointSpring(reader, joint, "target_angle", joint.targetAngle);
 }
 
 void ReadDistanceFields(ObjectReader& reader, const Scene& scene, SceneJoint& joint)
@@ -754,6 +766,7 @@ void ReadPrismaticFields(ObjectReader& reader, SceneJoint& joint)
     ReadSlideFields(reader, joint);
     ReadReferenceAngle(reader, joint);
     Assign(joint.maxMotorForce, ReadNonNegative(reader, "max_motor_force", 0.0));
+    ReadJointSpring(reader, joint, "target_translation", joint.targetTranslation);
 }
 
 void ReadWheelFields(ObjectReader& reader, SceneJoint& joint)

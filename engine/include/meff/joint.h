@@ -37,8 +37,18 @@ struct RevoluteJointDef
     Real lowerAngle = 0; ///< rad, ≤ upperAngle
     Real upperAngle = 0; ///< rad
     bool enableMotor = false;
-    Real motorSpeed = 0;           ///< target relative angular speed (rad/s)
-    Real maxMotorTorque = 0;       ///< N·m, ≥ 0
+    Real motorSpeed = 0;     ///< target relative angular speed (rad/s)
+    Real maxMotorTorque = 0; ///< N·m, ≥ 0
+    /// A torsional spring on the joint angle (Box2D v3's): it pulls angleB − angleA −
+    /// referenceAngle towards targetAngle. Off by default; with it off the joint is Box2D
+    /// 2.4.1's exactly. Solved before the motor and the limits, which bound it.
+    bool enableSpring = false;
+    /// Natural frequency of the spring (Hz, ≥ 0; default 0) on the angular row's effective
+    /// mass 1/(1/IA + 1/IB): its stiffness is that mass × (2π·hertz)². 0 = no spring (and,
+    /// the damping being a ratio of it, no damping either).
+    Real hertz = 0;
+    Real dampingRatio = 0;         ///< dimensionless, ≥ 0; 1 = critical; default 0
+    Real targetAngle = 0;          ///< joint angle the spring pulls towards (rad); default 0
     bool collideConnected = false; ///< may the two bodies' shapes collide
 };
 
@@ -67,18 +77,40 @@ struct PrismaticJointDef
 {
     BodyId bodyA{};
     BodyId bodyB{};
-    Vec2 localAnchorA{};           ///< anchor in bodyA's frame (m); default (0, 0)
-    Vec2 localAnchorB{};           ///< anchor in bodyB's frame (m); default (0, 0)
-    Vec2 localAxisA{1, 0};         ///< slide direction in bodyA's frame, non-zero; normalized at
-                                   ///< creation (dimensionless); default (1, 0)
-    Real referenceAngle = 0;       ///< angleB − angleA held by the joint (rad); default 0
-    bool enableLimit = false;      ///< default false
-    Real lowerTranslation = 0;     ///< m along the axis from A's anchor, ≤ upper; default 0
-    Real upperTranslation = 0;     ///< m; default 0
-    bool enableMotor = false;      ///< default false
-    Real motorSpeed = 0;           ///< target speed of B's anchor along the axis (m/s); default 0
-    Real maxMotorForce = 0;        ///< N, ≥ 0; default 0
+    Vec2 localAnchorA{};       ///< anchor in bodyA's frame (m); default (0, 0)
+    Vec2 localAnchorB{};       ///< anchor in bodyB's frame (m); default (0, 0)
+    Vec2 localAxisA{1, 0};     ///< slide direction in bodyA's frame, non-zero; normalized at
+                               ///< creation (dimensionless); default (1, 0)
+    Real referenceAngle = 0;   ///< angleB − angleA held by the joint (rad); default 0
+    bool enableLimit = false;  ///< default false
+    Real lowerTranslation = 0; ///< m along the axis from A's anchor, ≤ upper; default 0
+    Real upperTranslation = 0; ///< m; default 0
+    bool enableMotor = false;  ///< default false
+    Real motorSpeed = 0;       ///< target speed of B's anchor along the axis (m/s); default 0
+    Real maxMotorForce = 0;    ///< N, ≥ 0; default 0
+    /// A spring along the axis (Box2D v3's): it pulls the translation (B's anchor along the
+    /// axis from A's) towards targetTranslation. Off by default; with it off the joint is Box2D
+    /// 2.4.1's exactly. Solved before the motor and the limits, which bound it.
+    bool enableSpring = false;
+    /// Natural frequency of the spring (Hz, ≥ 0; default 0) on the axial row's effective mass
+    /// 1/(1/mA + 1/mB + a1²/IA + a2²/IB): its stiffness is that mass × (2π·hertz)². 0 = no
+    /// spring (and, the damping being a ratio of it, no damping either).
+    Real hertz = 0;
+    Real dampingRatio = 0;         ///< dimensionless, ≥ 0; 1 = critical; default 0
+    Real targetTranslation = 0;    ///< translation the spring pulls towards (m); default 0
     bool collideConnected = false; ///< may the two bodies' shapes collide; default false
+};
+
+/// A revolute or prismatic joint's spring, as World::SetJointSpring and GetJointSpring hand it
+/// over (the same fields as in RevoluteJointDef and PrismaticJointDef).
+struct JointSpring
+{
+    bool enable = false;   ///< default false
+    Real hertz = 0;        ///< natural frequency on the row's effective mass (Hz, ≥ 0)
+    Real dampingRatio = 0; ///< dimensionless, ≥ 0; 1 = critical
+    /// The spring's rest position: targetAngle (rad) for a revolute joint, targetTranslation
+    /// (m) for a prismatic joint.
+    Real target = 0;
 };
 
 /// A wheel on a suspension (Box2D's b2WheelJoint): body B's anchor stays on an axis line fixed

@@ -64,8 +64,8 @@ enum class SolverKind
     Box2D,
     /// The same rows, effective masses, iteration counts, block solvers and position pass as
     /// Box2D, visited colour by colour (Box2D v3's graph colouring): an island's contacts, and
-    /// apart from them its revolute joints without limit or motor (with blockJoints on), are
-    /// sorted into colours that share no moving body, and each colour is solved four
+    /// apart from them its revolute joints without limit, motor or spring (with blockJoints on),
+    /// are sorted into colours that share no moving body, and each colour is solved four
     /// constraints at a time in SIMD lanes. Another Gauss-Seidel order, so results agree with
     /// Box2D 2.4.1 only up to that order's effect (settled-state checks), not bit for bit.
     /// Other joints keep the island order after the lanes. Without sleep (WorldDef::allowSleep
@@ -483,6 +483,12 @@ class World
     /// A), m/s along the axis for prismatic joints. Throws InvalidArgument for other types or
     /// a non-finite speed. Does not enable the motor.
     void SetJointMotorSpeed(JointId id, Real speed);
+    /// Sets a revolute or prismatic joint's spring (see JointSpring) and wakes both bodies
+    /// when it changes. Throws InvalidArgument for other joint types, a hertz or damping ratio
+    /// that is negative or not finite, or a target that is not finite.
+    void SetJointSpring(JointId id, const JointSpring& spring);
+    /// A revolute or prismatic joint's spring; throws InvalidArgument for other joint types.
+    JointSpring GetJointSpring(JointId id) const;
     /// Where body B's anchor is along a prismatic or wheel joint's axis, measured from body
     /// A's anchor (m), as b2PrismaticJoint/b2WheelJoint::GetJointTranslation. Throws
     /// InvalidArgument for other joint types.

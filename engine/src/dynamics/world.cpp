@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace meff
@@ -1171,6 +1172,56 @@ void World::SetJointMotorSpeed(JointId id, Real speed)
         WakeBody(State(), joint.bodyB);
         *motorSpeed = speed;
     }
+}
+
+namespace
+{
+
+/// References to a revolute or prismatic joint's spring members (enable, hertz, damping ratio,
+/// target: targetAngle or targetTranslation), const for a const joint; throws for other types.
+template <typename JointT>
+auto SpringOf(JointT& joint, const char* caller)
+{
+    if (auto* r = std::get_if<RevoluteJoint>(&joint.data))
+    {
+        return std::tie(r->enableSpring, r->hertz, r->dampingRatio, r->targetAngle);
+    }
+    if (auto* p = std::get_if<PrismaticJoint>(&joint.data))
+    {
+        return std::tie(p->enableSpring, p->hertz, p->dampingRatio, p->targetTranslation);
+    }
+    throw InvalidArgument(std::string("World::") + caller +
+                          ": the joint has no spring (only revolute and prismatic joints do)");
+}
+
+} // namespace
+
+void World::SetJointSpring(JointId id, const JointSpring& spring)
+{
+    Joint& joint = Resolve(State().joints, id, "joint").joint;
+    auto [enable, hertz, dampingRatio, target] = SpringOf(joint, "SetJointSpring");
+    RequireNonNegative(spring.hertz, "World::SetJointSpring: hertz");
+    RequireNonNegative(spring.dampingRatio, "World::SetJointSpring: dampingRatio");
+    RequireFinite(spring.target, "World::SetJointSpring: target");
+    if (spring.enable != enable || spring.hertz != hertz || spring.dampingRatio != dampingRatio ||
+        spring.target != target)
+    {
+        // A changed spring moves its bodies: wake them, as SetJointMotorSpeed does. An
+        // unchanged one wakes nothing, so a game may set it every frame and still sleep.
+        WakeBody(State(), joint.bodyA);
+        WakeBody(State(), joint.bodyB);
+        enable = spring.enable;
+        hertz = spring.hertz;
+        dampingRatio = spring.dampingRatio;
+        target = spring.target;
+    }
+}
+
+JointSpring World::GetJointSpring(JointId id) const
+{
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto [enable, hertz, dampingRatio, target] = SpringOf(joint, "GetJointSpring");
+    return {enable, hertz, dampingRatio, target};
 }
 
 namespace

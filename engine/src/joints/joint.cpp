@@ -154,6 +154,9 @@ Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bo
     RequireFinite(kDef, "upperAngle", def.upperAngle);
     RequireFinite(kDef, "motorSpeed", def.motorSpeed);
     RequireNonNegative(kDef, "maxMotorTorque", def.maxMotorTorque);
+    RequireNonNegative(kDef, "hertz", def.hertz);
+    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+    RequireFinite(kDef, "targetAngle", def.targetAngle);
     if (def.lowerAngle > def.upperAngle)
     {
         std::ostringstream message;
@@ -173,6 +176,10 @@ Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bo
     revolute.enableMotor = def.enableMotor;
     revolute.motorSpeed = def.motorSpeed;
     revolute.maxMotorTorque = def.maxMotorTorque;
+    revolute.enableSpring = def.enableSpring;
+    revolute.hertz = def.hertz;
+    revolute.dampingRatio = def.dampingRatio;
+    revolute.targetAngle = def.targetAngle;
 
     Joint joint = MakeTypedJoint(JointType::Revolute, bodyA, bodyB, def.collideConnected);
     joint.data = revolute;
@@ -227,6 +234,9 @@ Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t b
     RequireFinite(kDef, "upperTranslation", def.upperTranslation);
     RequireFinite(kDef, "motorSpeed", def.motorSpeed);
     RequireNonNegative(kDef, "maxMotorForce", def.maxMotorForce);
+    RequireNonNegative(kDef, "hertz", def.hertz);
+    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+    RequireFinite(kDef, "targetTranslation", def.targetTranslation);
     RequireOrdered(kDef, "lowerTranslation", def.lowerTranslation, "upperTranslation",
                    def.upperTranslation);
 
@@ -242,6 +252,10 @@ Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t b
     prismatic.enableMotor = def.enableMotor;
     prismatic.motorSpeed = def.motorSpeed;
     prismatic.maxMotorForce = def.maxMotorForce;
+    prismatic.enableSpring = def.enableSpring;
+    prismatic.hertz = def.hertz;
+    prismatic.dampingRatio = def.dampingRatio;
+    prismatic.targetTranslation = def.targetTranslation;
 
     Joint joint = MakeTypedJoint(JointType::Prismatic, bodyA, bodyB, def.collideConnected);
     joint.data = prismatic;

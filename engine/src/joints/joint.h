@@ -12,6 +12,7 @@
 
 #include "dynamics/solver_types.h"
 #include "joints/mat33.h"
+#include "solvers/soft_step/softness.h" // the soft row shared by every back end's springs
 #include "meff/joint.h"
 #include "meff/world.h"
 
@@ -39,15 +40,19 @@ struct RevoluteJoint
     Real lowerAngle = 0, upperAngle = 0;
     bool enableMotor = false;
     Real motorSpeed = 0, maxMotorTorque = 0;
+    bool enableSpring = false;
+    Real hertz = 0, dampingRatio = 0; ///< Hz on the angular row's mass; dimensionless
+    Real targetAngle = 0;             ///< rad
     // Accumulated impulses, carried from step to step for warm starting
     Vec2 impulse;
-    Real motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+    Real motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0, springImpulse = 0;
     // Solver temporaries, set by InitJointVelocityConstraints
     std::int32_t indexA = 0, indexB = 0;
     Vec2 rA, rB, localCenterA, localCenterB;
     Real invMassA = 0, invMassB = 0, invIA = 0, invIB = 0;
     Mat22 K;
     Real angle = 0, axialMass = 0;
+    Softness spring; ///< the spring row over this step (FrequencySpringSoftness)
 };
 
 struct DistanceJoint
@@ -78,9 +83,12 @@ struct PrismaticJoint
     Real lowerTranslation = 0, upperTranslation = 0;
     bool enableMotor = false;
     Real motorSpeed = 0, maxMotorForce = 0;
+    bool enableSpring = false;
+    Real hertz = 0, dampingRatio = 0; ///< Hz on the axial row's mass; dimensionless
+    Real targetTranslation = 0;       ///< m
     // Accumulated impulses: (perpendicular, angular) block, then the axial rows
     Vec2 impulse;
-    Real motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+    Real motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0, springImpulse = 0;
     // Solver temporaries
     std::int32_t indexA = 0, indexB = 0;
     Vec2 localCenterA, localCenterB;
@@ -90,6 +98,7 @@ struct PrismaticJoint
     Real a1 = 0, a2 = 0; ///< axial rows' angular Jacobian terms (A, B)
     Mat22 K;             ///< block of the perpendicular and angular rows
     Real translation = 0, axialMass = 0;
+    Softness spring; ///< the spring row over this step (FrequencySpringSoftness)
 };
 
 struct WheelJoint

@@ -5,6 +5,8 @@
 //   angular        C = aB − aA − referenceAngle = 0     J = [0 0 −1 0 0 1]
 //   motor          Cdot = a·(vB − vA) + a2·wB − a1·wA − motorSpeed, |λ| ≤ h·maxMotorForce
 //   limits         lower C = a·d − lower ≥ 0, upper C = upper − a·d ≥ 0
+//   spring         C = a·d − targetTranslation, soft (Box2D v3's; not in Box2D 2.4.1, so with
+//                  it off nothing below changes: every spring term sits behind enableSpring)
 // The axial rows (motor, limits) share k = 1/mA + 1/mB + a1²/IA + a2²/IB, the "axial mass"
 // being 1/k. The perpendicular and angular rows couple through the rotations; Box2D solves
 // them as one 2×2 block K (its diagonal entries are each row's scalar k), and with
@@ -90,12 +92,13 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
     joint.K.ex = Vec2(k11, k12);
     joint.K.ey = Vec2(k12, k22);
 
-    // The limit rows use the translation at the start of the step (speculative bias).
-    if (joint.enableLimit)
+    // The limit rows use the translation at the start of the step (speculative bias), and so
+    // does the spring.
+    if (joint.enableLimit || joint.enableSpring)
     {
         joint.translation = Dot(joint.axis, d);
     }
-    else
+    if (!joint.enableLimit)
     {
         joint.lowerImpulse = 0;
         joint.upperImpulse = 0;
@@ -103,6 +106,15 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
     if (!joint.enableMotor)
     {
         joint.motorImpulse = 0;
+    }
+    if (!joint.enableSpring || joint.axialMass == 0)
+    {
+        joint.springImpulse = 0;
+    }
+    else
+    {
+        // The spring's soft row over the whole step h = dt on the axial row's mass.
+        joint.spring = FrequencySpringSoftness(joint.hertz, joint.dampingRatio, data.step.dt);
     }
 
     if (data.step.solver.warmStarting)
@@ -113,9 +125,14 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
         joint.motorImpulse *= dtRatio;
         joint.lowerImpulse *= dtRatio;
         joint.upperImpulse *= dtRatio;
+        joint.springImpulse *= dtRatio;
 
         // The upper row's impulse acts with the opposite sign (its C is upper − translation).
-        const Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+        Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+        if (joint.enableSpring)
+        {
+            axialImpulse += joint.springImpulse;
+        }
         const Vec2 P = joint.impulse.x * joint.perp + axialImpulse * joint.axis;
         const Real LA = joint.impulse.x * joint.s1 + joint.impulse.y + axialImpulse * joint.a1;
         const Real LB = joint.impulse.x * joint.s2 + joint.impulse.y + axialImpulse * joint.a2;
@@ -130,6 +147,7 @@ void InitVelocityConstraints(PrismaticJoint& joint, const JointBody& a, const Jo
         joint.motorImpulse = 0;
         joint.lowerImpulse = 0;
         joint.upperImpulse = 0;
+        joint.springImpulse = 0;
     }
 
     data.velocities[joint.indexA] = {vA, wA};
@@ -142,6 +160,20 @@ void SolveVelocityConstraints(PrismaticJoint& joint, SolverData& data)
     auto [vB, wB] = data.velocities[joint.indexB];
 
     const LineRowMasses m = Masses(joint);
+
+    // Spring first (as Box2D v3), so that the motor and the limits bound what it does. A soft
+    // row on the axial row's mass, its error the translation at the step's start:
+    // Δλ = −m·(massScale·Cdot + biasScale·C) − impulseScale·λ (softness.h). Its fixed point
+    // over the iterations is docs/soft-step.md's exactly damped step, whatever the warm start.
+    if (joint.enableSpring && joint.axialMass > 0)
+    {
+        const Real Cdot = LineRowSpeed(joint.axis, joint.a1, joint.a2, vA, wA, vB, wB);
+        const Real C = joint.translation - joint.targetTranslation;
+        const Real impulse =
+            SpringRowImpulse(joint.spring, joint.axialMass, Cdot, C, joint.springImpulse);
+        joint.springImpulse += impulse;
+        ApplyLineRowImpulse(impulse, joint.axis, joint.a1, joint.a2, m, vA, wA, vB, wB);
+    }
 
     // Motor first, so that the limits (solved after it) win when they disagree.
     if (joint.enableMotor)
@@ -322,9 +354,12 @@ JointReaction GetReaction(const PrismaticJoint& joint, Real invDt)
     // Mean force over the step: the perpendicular impulse along p plus the axial rows' along
     // the axis (upper limit flipped); the angular row's impulse is the torque.
     JointReaction reaction;
-    reaction.force =
-        invDt * (joint.impulse.x * joint.perp +
-                 (joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse) * joint.axis);
+    Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+    if (joint.enableSpring)
+    {
+        axialImpulse += joint.springImpulse;
+    }
+    reaction.force = invDt * (joint.impulse.x * joint.perp + axialImpulse * joint.axis);
     reaction.torque = invDt * joint.impulse.y;
     return reaction;
 }

@@ -3,6 +3,8 @@
 //   point    C = (cB + rB) − (cA + rA) = 0,   Cdot = vB + wB×rB − vA − wA×rA
 //   motor    Cdot = wB − wA − motorSpeed,      |λ| ≤ h·maxMotorTorque
 //   limits   lower C = θ − θlo ≥ 0, upper C = θhi − θ ≥ 0, θ = aB − aA − referenceAngle
+//   spring   C = θ − targetAngle, soft (Box2D v3's; not in Box2D 2.4.1, so with it off
+//            nothing below changes: every spring term sits behind enableSpring)
 // The angular rows have the Jacobian [0 0 −1 0 0 1], so their effective mass is the seed's
 // k = 1/IA + 1/IB (no lever arm) and the "axial mass" is 1/k.
 //
@@ -94,6 +96,15 @@ void InitVelocityConstraints(RevoluteJoint& joint, const JointBody& a, const Joi
     {
         joint.motorImpulse = 0;
     }
+    if (!joint.enableSpring || fixedRotation)
+    {
+        joint.springImpulse = 0;
+    }
+    else
+    {
+        // The spring's soft row over the whole step h = dt on the angular row's mass.
+        joint.spring = FrequencySpringSoftness(joint.hertz, joint.dampingRatio, data.step.dt);
+    }
 
     if (data.step.solver.warmStarting)
     {
@@ -103,9 +114,14 @@ void InitVelocityConstraints(RevoluteJoint& joint, const JointBody& a, const Joi
         joint.motorImpulse *= dtRatio;
         joint.lowerImpulse *= dtRatio;
         joint.upperImpulse *= dtRatio;
+        joint.springImpulse *= dtRatio;
 
         // The upper row's impulse acts with the opposite sign (its C is θhi − θ).
-        const Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+        Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+        if (joint.enableSpring)
+        {
+            axialImpulse += joint.springImpulse;
+        }
         const Vec2 P(joint.impulse.x, joint.impulse.y);
         vA -= mA * P;
         wA -= iA * (Cross(rA, P) + axialImpulse);
@@ -118,6 +134,7 @@ void InitVelocityConstraints(RevoluteJoint& joint, const JointBody& a, const Joi
         joint.motorImpulse = 0;
         joint.lowerImpulse = 0;
         joint.upperImpulse = 0;
+        joint.springImpulse = 0;
     }
 
     data.velocities[joint.indexA] = {vA, wA};
@@ -133,6 +150,20 @@ void SolveVelocityConstraints(RevoluteJoint& joint, SolverData& data)
     const Real iA = joint.invIA, iB = joint.invIB;
     const Vec2 rA = joint.rA, rB = joint.rB;
     const bool fixedRotation = (iA + iB == 0);
+
+    // Spring first (as Box2D v3), so that the motor and the limits bound what it does. A soft
+    // row on the angular row's mass 1/(1/IA + 1/IB), its error the angle at the step's start:
+    // Δλ = −m·(massScale·Cdot + biasScale·C) − impulseScale·λ (softness.h). Its fixed point
+    // over the iterations is docs/soft-step.md's exactly damped step, whatever the warm start.
+    if (joint.enableSpring && !fixedRotation)
+    {
+        const Real C = joint.angle - joint.targetAngle;
+        const Real impulse =
+            SpringRowImpulse(joint.spring, joint.axialMass, wB - wA, C, joint.springImpulse);
+        joint.springImpulse += impulse;
+        wA -= iA * impulse;
+        wB += iB * impulse;
+    }
 
     // Motor first, so that the limits (solved after it) win when they disagree.
     if (joint.enableMotor && !fixedRotation)
@@ -316,6 +347,10 @@ JointReaction GetReaction(const RevoluteJoint& joint, Real invDt)
     JointReaction reaction;
     reaction.force = invDt * Vec2(joint.impulse.x, joint.impulse.y);
     reaction.torque = invDt * (joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse);
+    if (joint.enableSpring)
+    {
+        reaction.torque += invDt * joint.springImpulse;
+    }
     return reaction;
 }
 

@@ -157,19 +157,23 @@ struct SceneJoint
     bool enableMotor = false;
     double motorSpeed = 0;     ///< rad/s (revolute, wheel) or m/s along the axis (prismatic)
     double maxMotorTorque = 0; ///< N·m, ≥ 0 (revolute, wheel)
+    // revolute and prismatic: Box2D v3's joint spring (its stiffnessHz and dampingRatio below)
+    bool enableSpring = false;
+    double targetAngle = 0;       ///< rad (revolute)
+    double targetTranslation = 0; ///< m along the axis (prismatic)
     // prismatic and wheel
     SceneVec2 axis{1, 0};        ///< world direction of the slide (non-zero)
     double lowerTranslation = 0; ///< m along the axis from the anchor, ≤ upperTranslation
     double upperTranslation = 0; ///< m
     double maxMotorForce = 0;    ///< N, ≥ 0 (prismatic)
     // distance (stiffnessHz and dampingRatio also set a wheel's suspension); pulley
-    SceneVec2 anchorA;       ///< world point on body A (m)
-    SceneVec2 anchorB;       ///< world point on body B (m)
-    double length = 0;       ///< m, > 0; the file's value or the distance between the anchors
-    double minLength = 0;    ///< m; the file's value or `length`
-    double maxLength = 0;    ///< m; the file's value or `length`
-    double stiffnessHz = 0;  ///< Hz, ≥ 0; 0 = no spring (distance, weld, mouse)
-    double dampingRatio = 0; ///< ≥ 0 (distance, weld, mouse)
+    SceneVec2 anchorA;      ///< world point on body A (m)
+    SceneVec2 anchorB;      ///< world point on body B (m)
+    double length = 0;      ///< m, > 0; the file's value or the distance between the anchors
+    double minLength = 0;   ///< m; the file's value or `length`
+    double maxLength = 0;   ///< m; the file's value or `length`
+    double stiffnessHz = 0; ///< Hz, ≥ 0; 0 = no spring (distance, weld, mouse, revolute, prismatic)
+    double dampingRatio = 0; ///< ≥ 0 (distance, weld, mouse, revolute, prismatic)
     // revolute, prismatic, wheel, weld, distance, friction: the anchors in the bodies' own frames,
     // as Box2D's joint definitions and b2dJson files hold them, instead of world points
     bool localAnchors = false; ///< true: localAnchorA/B hold the anchors (anchor is unused)

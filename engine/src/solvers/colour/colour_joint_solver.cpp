@@ -11,12 +11,13 @@ namespace meff::detail
 namespace
 {
 
-/// A revolute joint whose only rows are the point block: what the SIMD lanes solve.
+/// A revolute joint whose only rows are the point block: what the SIMD lanes solve. A limit,
+/// a motor or a spring sends the joint to the scalar path (RevoluteJoint's own rows).
 RevoluteJoint* LaneRevolute(Joint& joint, const SolverSettings& solver)
 {
     auto* revolute = std::get_if<RevoluteJoint>(&joint.data);
     if (revolute == nullptr || revolute->enableLimit || revolute->enableMotor ||
-        !solver.blockJoints)
+        revolute->enableSpring || !solver.blockJoints)
     {
         return nullptr;
     }

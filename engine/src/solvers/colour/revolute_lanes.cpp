@@ -24,11 +24,12 @@ void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t d
     g.anchorA.y[l] = anchorA.y;
     g.anchorB.x[l] = anchorB.x;
     g.anchorB.y[l] = anchorB.y;
-    // No motor and no limit: their impulses are zero (as InitVelocityConstraints leaves them),
-    // so that the joint's reaction torque is zero too.
+    // No motor, no limit and no spring: their impulses are zero (as InitVelocityConstraints
+    // leaves them), so that the joint's reaction torque is zero too.
     joint.motorImpulse = 0;
     joint.lowerImpulse = 0;
     joint.upperImpulse = 0;
+    joint.springImpulse = 0;
 }
 
 /// RevoluteJoint's InitVelocityConstraints for four joints: lever arms at the step's start,

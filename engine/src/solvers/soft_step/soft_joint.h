@@ -6,7 +6,8 @@
 //
 // Rigid rows (points, rigid lengths, perpendicular and angular locks, limits) are solved soft
 // with SoftStepContext::joint while solving and rigidly while relaxing; a joint's own spring
-// (distance, wheel, weld, mouse) is a real spring and acts once per sub-step, while solving
+// (distance, wheel, weld, mouse; revolute and prismatic when enabled) is a real spring and
+// acts once per kick, while solving
 // (softness.h: SpringSoftness); motors are velocity rows bounded by their force or torque × h.
 #pragma once
 
@@ -40,6 +41,15 @@ inline void SetSpring(SoftJointFrame& frame, Real stiffness, Real damping, Real 
 {
     frame.spring = SpringSoftness(stiffness, damping, k, context.h);
     frame.halfSpring = SpringSoftness(stiffness, damping, k, Real(0.5) * context.h);
+}
+
+/// Sets the frame's spring from a natural frequency (Hz) and damping ratio on the row's own
+/// effective mass (the revolute and prismatic springs: FrequencySpringSoftness).
+inline void SetFrequencySpring(SoftJointFrame& frame, Real hertz, Real dampingRatio,
+                               const SoftStepContext& context)
+{
+    frame.spring = FrequencySpringSoftness(hertz, dampingRatio, context.h);
+    frame.halfSpring = FrequencySpringSoftness(hertz, dampingRatio, Real(0.5) * context.h);
 }
 
 /// The joint's anchors now and the vector between them (anchor B − anchor A, m).

@@ -4,6 +4,8 @@
 //   perpendicular  C = p·d = 0,   angular C = θ0 + (rotation since the start) = 0
 //   motor          a·(vB − vA) + a2·wB − a1·wA = motorSpeed, |λ| ≤ h·maxMotorForce
 //   limits         lower C = a·d − lower ≥ 0, upper C = upper − a·d ≥ 0
+//   spring         C = a·d − targetTranslation, when enabled: a real spring
+//                  (FrequencySpringSoftness) on the axial row, once per kick
 // The perpendicular and angular rows form a 2×2 block (its diagonal the rows' scalar k), or
 // two scalar rows with SolverSettings::blockJoints off.
 #include "solvers/soft_step/soft_joint.h"
@@ -12,13 +14,25 @@ namespace meff::detail
 {
 
 void PrepareSoft(PrismaticJoint& joint, SoftJointFrame& frame, const Position& poseA,
-                 const Position& poseB, const SoftStepContext&)
+                 const Position& poseB, const SoftStepContext& context)
 {
     const Rot qA(poseA.a);
     frame.rA0 = Mul(qA, joint.localAnchorA - joint.localCenterA);
     frame.rB0 = Mul(Rot(poseB.a), joint.localAnchorB - joint.localCenterB);
     frame.angle0 = poseB.a - poseA.a - joint.referenceAngle;
     frame.axis0 = Mul(qA, joint.localXAxisA);
+    // The reaction's directions (GetReaction), as the Box2D back end's: the axes at the
+    // step's start.
+    joint.axis = frame.axis0;
+    joint.perp = Cross(Real(1), frame.axis0);
+    if (joint.enableSpring)
+    {
+        SetFrequencySpring(frame, joint.hertz, joint.dampingRatio, context);
+    }
+    else
+    {
+        joint.springImpulse = 0;
+    }
     if (!joint.enableLimit)
     {
         joint.lowerImpulse = 0;
@@ -35,7 +49,8 @@ void WarmStartSoft(const PrismaticJoint& joint, const SoftJointState& state, Row
     const auto [axis, perp] = SlideAxesNow(state);
     const SoftAnchors& at = state.at;
     // The upper row's impulse acts with the opposite sign (its C is upper − translation).
-    const Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+    const Real axialImpulse =
+        joint.springImpulse + joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
     ApplyRowImpulse(LineRow(perp, at.d, at.rA, at.rB), joint.impulse.x, b);
     ApplyRowImpulse(AngularRow(), joint.impulse.y, b);
     ApplyRowImpulse(LineRow(axis, at.d, at.rA, at.rB), axialImpulse, b);
@@ -48,6 +63,14 @@ void SolveSoft(PrismaticJoint& joint, const SoftJointState& state, bool useBias,
     const auto [axis, perp] = SlideAxesNow(state);
     const RowJacobian axial = LineRow(axis, at.d, at.rA, at.rB);
     const Real axialMass = RowMass(InverseEffectiveMass(axial, b));
+    // The spring first, so that the motor and the limits bound it (as Box2D v3 orders them).
+    const Softness* spring = state.Spring(useBias);
+    if (joint.enableSpring && spring != nullptr)
+    {
+        const Real C = Dot(axis, at.d) - joint.targetTranslation;
+        SolveRow(axial, axialMass, RowTarget{spring->biasScale * C, *spring}, joint.springImpulse,
+                 b);
+    }
     if (joint.enableMotor)
     {
         const Real maxImpulse = context.h * joint.maxMotorForce;
@@ -99,6 +122,7 @@ void ScaleImpulses(PrismaticJoint& joint, Real factor)
     joint.motorImpulse *= factor;
     joint.lowerImpulse *= factor;
     joint.upperImpulse *= factor;
+    joint.springImpulse *= factor;
 }
 
 } // namespace meff::detail

@@ -1,14 +1,15 @@
 // Revolute joint in the soft step: the point rows hold B's anchor on A's (C = anchor B − anchor
 // A), a motor drives wB − wA to the motor speed with at most h·maxMotorTorque, and the limits
 // keep θ = θ0 + (rotation since the start) within [lower, upper], each row on the seed's
-// scalar effective mass (the angular rows' k = 1/IA + 1/IB).
+// scalar effective mass (the angular rows' k = 1/IA + 1/IB). An enabled spring pulls θ towards
+// targetAngle: a real spring (FrequencySpringSoftness), once per kick.
 #include "solvers/soft_step/soft_joint.h"
 
 namespace meff::detail
 {
 
 void PrepareSoft(RevoluteJoint& joint, SoftJointFrame& frame, const Position& poseA,
-                 const Position& poseB, const SoftStepContext&)
+                 const Position& poseB, const SoftStepContext& context)
 {
     frame.rA0 = Mul(Rot(poseA.a), joint.localAnchorA - joint.localCenterA);
     frame.rB0 = Mul(Rot(poseB.a), joint.localAnchorB - joint.localCenterB);
@@ -23,12 +24,21 @@ void PrepareSoft(RevoluteJoint& joint, SoftJointFrame& frame, const Position& po
     {
         joint.motorImpulse = 0;
     }
+    if (!joint.enableSpring || fixedRotation)
+    {
+        joint.springImpulse = 0;
+    }
+    else
+    {
+        SetFrequencySpring(frame, joint.hertz, joint.dampingRatio, context);
+    }
 }
 
 void WarmStartSoft(const RevoluteJoint& joint, const SoftJointState& state, RowBodies& b)
 {
     // The upper row's impulse acts with the opposite sign (its C is θhi − θ).
-    const Real axialImpulse = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+    const Real axialImpulse =
+        joint.springImpulse + joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
     ApplyPointImpulse(joint.impulse, state.at.rA, state.at.rB, b);
     ApplyRowImpulse(AngularRow(), axialImpulse, b);
 }
@@ -38,6 +48,14 @@ void SolveSoft(RevoluteJoint& joint, const SoftJointState& state, bool useBias, 
     const SoftStepContext& context = state.context;
     const bool fixedRotation = b.iA + b.iB == 0;
     const Real axialMass = RowMass(b.iA + b.iB);
+    // The spring first, so that the motor and the limits bound it (as Box2D v3 orders them).
+    const Softness* spring = state.Spring(useBias);
+    if (joint.enableSpring && !fixedRotation && spring != nullptr)
+    {
+        const Real C = state.frame.angle0 + state.Rotation() - joint.targetAngle;
+        SolveRow(AngularRow(), axialMass, RowTarget{spring->biasScale * C, *spring},
+                 joint.springImpulse, b);
+    }
     if (joint.enableMotor && !fixedRotation)
     {
         const Real maxImpulse = context.h * joint.maxMotorTorque;
@@ -66,6 +84,7 @@ void ScaleImpulses(RevoluteJoint& joint, Real factor)
     joint.motorImpulse *= factor;
     joint.lowerImpulse *= factor;
     joint.upperImpulse *= factor;
+    joint.springImpulse *= factor;
 }
 
 } // namespace meff::detail

@@ -14,6 +14,10 @@ void PrepareSoft(WheelJoint& joint, SoftJointFrame& frame, const Position& poseA
     frame.rA0 = Mul(qA, joint.localAnchorA - joint.localCenterA);
     frame.rB0 = Mul(Rot(poseB.a), joint.localAnchorB - joint.localCenterB);
     frame.axis0 = Mul(qA, joint.localXAxisA);
+    // The reaction's directions (GetReaction), as the Box2D back end's: the axes at the
+    // step's start.
+    joint.ax = frame.axis0;
+    joint.ay = Cross(Real(1), frame.axis0);
     if (joint.stiffness > 0)
     {
         const Vec2 d0 = frame.deltaCenter + (frame.rB0 - frame.rA0);

@@ -75,4 +75,31 @@ inline Softness SpringSoftness(Real stiffness, Real damping, Real k, Real h)
     return {h * omega * omega * decay, Real(1) - decay, decay};
 }
 
+/// The spring of Box2D v3's revolute and prismatic joints, given as a natural frequency
+/// `hertz` (Hz) and damping ratio `zeta` on the row's own effective mass (so k_s·k = ω²,
+/// ω = 2π·hertz): SpringSoftness's exactly damped step (docs/soft-step.md, "The exactly
+/// damped spring": massScale = 1 − e^(−2ζωh), biasScale = hω²·e^(−2ζωh), impulseScale =
+/// e^(−2ζωh)), and the implicit MakeSoft beyond hω = 1. hertz 0 is a row that does nothing.
+inline Softness FrequencySpringSoftness(Real hertz, Real zeta, Real h)
+{
+    if (!(hertz > 0))
+    {
+        return {0, 0, 0};
+    }
+    const Real omega = Real(2) * kPi * hertz;
+    if (h * omega > 1)
+    {
+        return MakeSoft(hertz, zeta, h);
+    }
+    const Real decay = std::exp(Real(-2) * zeta * omega * h);
+    return {h * omega * omega * decay, Real(1) - decay, decay};
+}
+
+/// One soft update of a row's accumulated impulse (the form at the top of this file): error C,
+/// velocity cdot = J·v now, `mass` = 1/k, `accumulated` the impulse so far.
+inline Real SpringRowImpulse(const Softness& soft, Real mass, Real cdot, Real C, Real accumulated)
+{
+    return -mass * (soft.massScale * cdot + soft.biasScale * C) - soft.impulseScale * accumulated;
+}
+
 } // namespace meff::detail
