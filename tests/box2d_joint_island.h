@@ -110,6 +110,10 @@ inline void SolveIsland(Island& island, const StepContext& step, Vec2 gravity)
     data.velocities = island.velocities.data();
     for (Joint& j : island.joints)
     {
+        if (auto* gear = std::get_if<GearJoint>(&j.data))
+        {
+            StoreGearBodies(*gear, island.bodies[gear->bodyC], island.bodies[gear->bodyD]);
+        }
         InitJointVelocityConstraints(j, island.bodies[j.bodyA], island.bodies[j.bodyB], data);
     }
     for (int i = 0; i < step.solver.velocityIterations; ++i)

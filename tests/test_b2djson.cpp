@@ -83,7 +83,7 @@ std::string UnexportableJoint(const Scene& scene)
 {
     for (const SceneJoint& joint : scene.joints)
     {
-        if (joint.type == JointType::Pulley)
+        if (joint.type == JointType::Pulley || joint.type == JointType::Gear)
         {
             return joint.name;
         }

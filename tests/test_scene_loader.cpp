@@ -333,7 +333,7 @@ TEST_CASE("Scene errors: joint values out of range", "[scene][errors]")
             { "type": "distance", "name": "j2", "body_a": "a", "body_b": "b", "anchor_a": [0, 0],
               "anchor_b": [0, 1], "min_length": 0.7, "max_length": 0.5 },
             { "type": "revolute", "name": "j3", "body_a": "a", "body_b": "c", "anchor": [0, 0] },
-            { "type": "gear", "name": "j4", "body_a": "a", "body_b": "b" } ] })") ==
+            { "type": "gears", "name": "j4", "body_a": "a", "body_b": "b" } ] })") ==
           Messages{"x.json: joints[0].upper_angle: must be >= lower_angle (1), got 0",
                    "x.json: joints[0].max_motor_torque: must be >= 0, got -1",
                    "x.json: joints[1].length: is missing and anchor_a and anchor_b coincide; "
@@ -341,8 +341,8 @@ TEST_CASE("Scene errors: joint values out of range", "[scene][errors]")
                    "x.json: joints[2].max_length: must be >= min_length (0.7), got 0.5",
                    "x.json: joints[4].type: must be one of \"revolute\", \"distance\", "
                    "\"prismatic\", \"wheel\", \"weld\", \"motor\", \"mouse\", \"friction\", "
-                   "\"pulley\", got "
-                   "\"gear\""});
+                   "\"pulley\", \"gear\", got "
+                   "\"gears\""});
 }
 
 TEST_CASE("Scene errors: prismatic and wheel joint fields", "[scene][errors][prismatic][wheel]")
@@ -487,8 +487,8 @@ TEST_CASE("Scene errors: weld, motor and mouse joint fields", "[scene][errors][j
               "\"ground\"",
               "x.json: joints[2].max_force: required field is missing",
               "x.json: joints[3].type: must be one of \"revolute\", \"distance\", \"prismatic\", "
-              "\"wheel\", \"weld\", \"motor\", \"mouse\", \"friction\", \"pulley\", got "
-              "\"spring\""});
+              "\"wheel\", \"weld\", \"motor\", \"mouse\", \"friction\", \"pulley\", \"gear\", "
+              "got \"spring\""});
 }
 
 TEST_CASE("Scene files: weld, motor and mouse joints load their fields", "[scene][joints]")

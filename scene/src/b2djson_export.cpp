@@ -528,6 +528,8 @@ class Exporter
             break;
         case JointType::Pulley:
             Refuse(joint, index, "pulley");
+        case JointType::Gear:
+            Refuse(joint, index, "gear");
         case JointType::Mouse:
             out["type"] = "mouse";
             out["anchorB"] = Vector(joint.anchor); // b2dJson's mouse anchor is a world point

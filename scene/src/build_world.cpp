@@ -88,6 +88,16 @@ ShapeId CreateShape(World& world, BodyId body, const SceneShape& shape)
 JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
 {
     World& world = built.world;
+    if (joint.type == JointType::Gear)
+    {
+        // The gear's joints come earlier in the list, so they are built already.
+        GearJointDef def;
+        def.joint1 = built.joints.at(joint.jointIndexA);
+        def.joint2 = built.joints.at(joint.jointIndexB);
+        def.ratio = Real(joint.ratio);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(def);
+    }
     const BodyId bodyA = built.bodies.at(joint.bodyIndexA);
     const BodyId bodyB = built.bodies.at(joint.bodyIndexB);
     const scene_detail::JointFrame frame =
@@ -231,6 +241,8 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
         world.SetMouseTarget(id, ToEngine(joint.target));
         return id;
     }
+    case JointType::Gear:
+        break; // made above
     }
     throw InvalidArgument("unknown joint type");
 }

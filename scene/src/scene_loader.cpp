@@ -828,6 +828,60 @@ void ReadPulleyFields(ObjectReader& reader, SceneJoint& joint)
     Assign(joint.ratio, ReadPositive(reader, "ratio", 1.0));
 }
 
+/// Gear: joint_a and joint_b name two revolute or prismatic joints earlier in the list, whose
+/// bodies B become the gear's bodies (they must be dynamic: the gear turns them).
+void ReadGearFields(ObjectReader& reader, const Scene& scene, std::size_t self, SceneJoint& joint)
+{
+    const auto reference = [&](std::string_view key, std::string& name, std::size_t& index) -> bool
+    {
+        const std::optional<std::string> wanted = reader.String(key, std::nullopt);
+        if (!wanted)
+        {
+            return false;
+        }
+        name = *wanted;
+        for (std::size_t j = 0; j < self; ++j)
+        {
+            const SceneJoint& other = scene.joints[j];
+            if (other.name != name || name.empty())
+            {
+                continue;
+            }
+            if (other.type != JointType::Revolute && other.type != JointType::Prismatic)
+            {
+                reader.Fail(key, "must name a revolute or prismatic joint");
+                return false;
+            }
+            if (scene.bodies[other.bodyIndexB].type != BodyType::Dynamic)
+            {
+                reader.Fail(key, "must name a joint whose body_b is dynamic (the gear turns it)");
+                return false;
+            }
+            index = j;
+            return true;
+        }
+        reader.Fail(key, "no joint earlier in the list has this name");
+        return false;
+    };
+    const bool haveA = reference("joint_a", joint.jointA, joint.jointIndexA);
+    const bool haveB = reference("joint_b", joint.jointB, joint.jointIndexB);
+    if (haveA && haveB && joint.jointIndexA == joint.jointIndexB)
+    {
+        reader.Fail("joint_b", "must differ from joint_a");
+    }
+    if (haveA)
+    {
+        joint.bodyIndexA = scene.joints[joint.jointIndexA].bodyIndexB;
+        joint.bodyA = scene.joints[joint.jointIndexA].bodyB;
+    }
+    if (haveB)
+    {
+        joint.bodyIndexB = scene.joints[joint.jointIndexB].bodyIndexB;
+        joint.bodyB = scene.joints[joint.jointIndexB].bodyB;
+    }
+    Assign(joint.ratio, reader.Number("ratio", 1.0));
+}
+
 void ReadMouseFields(ObjectReader& reader, SceneJoint& joint)
 {
     const std::optional<SceneVec2> anchor = reader.Vector("anchor", std::nullopt);
@@ -862,17 +916,28 @@ std::optional<std::size_t> ReadBodyReference(ObjectReader& reader, std::string_v
 }
 
 void ReadJoint(ObjectReader& reader, const Scene& scene,
-               const std::map<std::string, std::size_t>& bodyIndexByName, SceneJoint& joint)
+               const std::map<std::string, std::size_t>& bodyIndexByName, std::size_t self,
+               SceneJoint& joint)
 {
     // In JointType's order.
     const std::optional<std::size_t> type =
         ReadChoice(reader, "type",
                    {"revolute", "distance", "prismatic", "wheel", "weld", "motor", "mouse",
-                    "friction", "pulley"});
+                    "friction", "pulley", "gear"});
     constexpr JointType kTypes[] = {JointType::Revolute, JointType::Distance, JointType::Prismatic,
                                     JointType::Wheel,    JointType::Weld,     JointType::Motor,
-                                    JointType::Mouse,    JointType::Friction, JointType::Pulley};
+                                    JointType::Mouse,    JointType::Friction, JointType::Pulley,
+                                    JointType::Gear};
     Assign(joint.name, ReadName(reader));
+    if (type && kTypes[*type] == JointType::Gear)
+    {
+        // A gear names joints, not bodies.
+        joint.type = JointType::Gear;
+        ReadGearFields(reader, scene, self, joint);
+        Assign(joint.collideConnected, reader.Boolean("collide_connected", false));
+        reader.Finish();
+        return;
+    }
     const std::optional<std::size_t> bodyA =
         ReadBodyReference(reader, "body_a", bodyIndexByName, joint.bodyA);
     const std::optional<std::size_t> bodyB =
@@ -935,6 +1000,8 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
     case JointType::Pulley:
         ReadPulleyFields(reader, joint);
         break;
+    case JointType::Gear:
+        break; // read above
     }
     reader.Finish();
 }
@@ -1230,8 +1297,9 @@ Scene ReadScene(const Json& document, const std::string& sourcePath, Diagnostics
     ReadObjectArray(top, "joints", false,
                     [&](ObjectReader& reader, std::size_t)
                     {
+                        const std::size_t self = scene.joints.size();
                         SceneJoint& joint = scene.joints.emplace_back();
-                        ReadJoint(reader, scene, bodyIndexByName, joint);
+                        ReadJoint(reader, scene, bodyIndexByName, self, joint);
                         jointNames.push_back(joint.name);
                         jointPaths.push_back(reader.Path());
                     });

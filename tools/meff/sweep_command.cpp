@@ -360,7 +360,8 @@ struct Trace
 /// distance joint's should be between its minimum and maximum length apart. Prismatic and wheel
 /// joints let their anchors part along the axis, so the anchor distance says nothing about them;
 /// motor and mouse joints are force-limited springs with no hard constraint; friction joints
-/// hold no pose; a pulley's anchors part as the rope runs. Those are not measured (0).
+/// hold no pose; a pulley's anchors part as the rope runs; a gear's anchors are its joints'. Those
+/// are not measured (0).
 double JointError(const SceneJoint& joint, double anchorDistance)
 {
     switch (joint.type)
@@ -376,6 +377,7 @@ double JointError(const SceneJoint& joint, double anchorDistance)
     case JointType::Mouse:
     case JointType::Friction:
     case JointType::Pulley:
+    case JointType::Gear:
         return 0.0;
     }
     return 0.0;

@@ -174,10 +174,23 @@ void ApplyLocalForm(const SceneJoint& joint, Def& def)
     }
 }
 
-b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2Body* bodyB)
+/// `made`: the joints made so far, in scene order (a gear's joints come before it).
+b2Joint* CreateJoint(b2World& world, const SceneJoint& joint, b2Body* bodyA, b2Body* bodyB,
+                     const std::vector<b2Joint*>& made)
 {
     switch (joint.type)
     {
+    case JointType::Gear:
+    {
+        b2GearJointDef def;
+        def.bodyA = bodyA;
+        def.bodyB = bodyB;
+        def.joint1 = made.at(joint.jointIndexA);
+        def.joint2 = made.at(joint.jointIndexB);
+        def.ratio = static_cast<float>(joint.ratio);
+        def.collideConnected = joint.collideConnected;
+        return world.CreateJoint(&def);
+    }
     case JointType::Revolute:
     {
         b2RevoluteJointDef def;
@@ -486,7 +499,7 @@ Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
     {
         b2Body* bodyA = m_bodies.at(joint.bodyIndexA);
         b2Body* bodyB = m_bodies.at(joint.bodyIndexB);
-        m_joints.push_back(CreateJoint(*m_world, joint, bodyA, bodyB));
+        m_joints.push_back(CreateJoint(*m_world, joint, bodyA, bodyB, m_joints));
         // meff wakes a joint's bodies when it is created (a joint change wakes, a documented
         // departure from 2.4.1, whose CreateJoint does not): do the same, so that a scene with
         // a body starting asleep on a joint compares like with like.

@@ -21,6 +21,7 @@ enum class JointType : std::uint8_t
     Mouse = 6,
     Friction = 7,
     Pulley = 8,
+    Gear = 9,
 };
 
 /// Pins two bodies together at one point (an anchored body when bodyA is static). Its point
@@ -229,6 +230,22 @@ struct PulleyJointDef
     Real lengthB = 0;             ///< reference length of B's side (m), ≥ 0
     Real ratio = 1;               ///< dimensionless, > 0 and finite
     bool collideConnected = true; ///< Box2D's default for pulleys: the two loads may collide
+};
+
+/// Couples two revolute or prismatic joints (Box2D's b2GearJoint): with coordinate1 joint1's
+/// angle (rad) or translation (m) and coordinate2 joint2's,
+///   coordinate1 + ratio·coordinate2 = its value at creation.
+/// The gear acts on four bodies: joint1's and joint2's bodies B (its own bodies A and B, which
+/// must be dynamic) and their bodies A (often the ground). Its one row has the scalar effective
+/// mass of the seed summed over both sides, the second side's scaled by ratio²:
+///   k = [IA⁻¹ + IC⁻¹ | mA⁻¹ + mC⁻¹ + IA⁻¹(rA×u)² + IC⁻¹(rC×u)²] + ratio²·[same for B, D].
+/// Destroying either joint destroys the gear first (Box2D 2.4.1 leaves that to the caller).
+struct GearJointDef
+{
+    JointId joint1{};              ///< a revolute or prismatic joint
+    JointId joint2{};              ///< another revolute or prismatic joint
+    Real ratio = 1;                ///< dimensionless (rad/rad, m/rad or m/m), finite; default 1
+    bool collideConnected = false; ///< may the gear's bodies A and B collide; default false
 };
 
 } // namespace meff

@@ -465,6 +465,11 @@ class World
     JointId CreateJoint(const MouseJointDef& def); ///< throws unless bodyB is dynamic
     JointId CreateJoint(const FrictionJointDef& def);
     JointId CreateJoint(const PulleyJointDef& def);
+    /// Throws InvalidArgument unless joint1 and joint2 are two different live revolute or
+    /// prismatic joints whose bodies B are dynamic, and the ratio is finite. The gear's bodies
+    /// A and B are joint1's and joint2's bodies B.
+    JointId CreateJoint(const GearJointDef& def);
+    /// Destroys the joint, and first every gear joint that couples it.
     void DestroyJoint(JointId id);
     bool IsValid(JointId id) const;
     JointType GetJointType(JointId id) const;

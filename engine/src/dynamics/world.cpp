@@ -1018,6 +1018,39 @@ JointId World::CreateJoint(const PulleyJointDef& def)
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
+JointId World::CreateJoint(const GearJointDef& def)
+{
+    WorldState& world = State();
+    RequireNotStepping(world, "World::CreateJoint");
+    const Joint& joint1 = Resolve(world.joints, def.joint1, "joint").joint;
+    const Joint& joint2 = Resolve(world.joints, def.joint2, "joint").joint;
+    const auto requireGearable = [&](const Joint& joint, const char* field)
+    {
+        if (joint.type != JointType::Revolute && joint.type != JointType::Prismatic)
+        {
+            throw InvalidArgument(std::string("GearJointDef.") + field +
+                                  " must be a revolute or prismatic joint");
+        }
+        if (world.bodies[joint.bodyB].type != BodyType::Dynamic)
+        {
+            // The gear moves the joint's body B; Box2D 2.4.1 asserts the same.
+            throw InvalidArgument(std::string("GearJointDef.") + field +
+                                  "'s body B must be dynamic (the gear turns it)");
+        }
+    };
+    requireGearable(joint1, "joint1");
+    requireGearable(joint2, "joint2");
+    if (def.joint1 == def.joint2)
+    {
+        throw InvalidArgument("GearJointDef.joint2 must be a different joint from joint1");
+    }
+    const auto pose = [&](std::int32_t body) {
+        return GearPose{world.bodies[body].xf, world.bodies[body].sweep.a};
+    };
+    return AddJoint(world, MakeJoint(def, joint1, joint2, pose(joint1.bodyB), pose(joint2.bodyB),
+                                     pose(joint1.bodyA), pose(joint2.bodyA)));
+}
+
 JointId World::CreateJoint(const MouseJointDef& def)
 {
     RequireTwoBodies(State(), JointType::Mouse, def.bodyA, def.bodyB);
@@ -1071,11 +1104,37 @@ void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffs
     }
 }
 
+namespace
+{
+
+/// The gear joints that couple joint `id` (a gear cannot outlive its joints).
+std::vector<JointId> GearsOf(const WorldState& world, JointId id)
+{
+    std::vector<JointId> gears;
+    for (std::int32_t j = world.jointList; j != kNullIndex; j = world.joints[j].next)
+    {
+        const JointSlot& slot = world.joints[j];
+        const auto* gear = std::get_if<GearJoint>(&slot.joint.data);
+        if (gear != nullptr && (gear->joint1 == id || gear->joint2 == id))
+        {
+            gears.push_back({j, slot.generation});
+        }
+    }
+    return gears;
+}
+
+} // namespace
+
 void World::DestroyJoint(JointId id)
 {
     WorldState& world = State();
     RequireNotStepping(world, "World::DestroyJoint");
-    JointSlot& slot = Resolve(world.joints, id, "joint");
+    Resolve(world.joints, id, "joint");
+    for (const JointId gear : GearsOf(world, id))
+    {
+        DestroyJoint(gear);
+    }
+    JointSlot& slot = world.joints[id.index];
     if (slot.prev != kNullIndex)
     {
         world.joints[slot.prev].next = slot.next;

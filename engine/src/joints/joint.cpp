@@ -395,6 +395,75 @@ Joint MakeJoint(const PulleyJointDef& def, std::int32_t bodyA, std::int32_t body
     return joint;
 }
 
+namespace
+{
+
+/// What a gear copies of one of its joints, and the joint's coordinate now.
+struct GearSide
+{
+    bool prismatic = false;
+    Vec2 localAnchorBase, localAnchorBody, localAxisBase;
+    Real referenceAngle = 0;
+    Real coordinate = 0; ///< the joint's angle (rad) or translation (m)
+};
+
+/// As Box2D's gear constructor: a prismatic side measures its translation from the
+/// transforms, a revolute side its angle from the sweep angles.
+GearSide MakeGearSide(const Joint& joint, const GearPose& body, const GearPose& base)
+{
+    GearSide side;
+    if (const auto* revolute = std::get_if<RevoluteJoint>(&joint.data))
+    {
+        side.localAnchorBase = revolute->localAnchorA;
+        side.localAnchorBody = revolute->localAnchorB;
+        side.referenceAngle = revolute->referenceAngle;
+        side.coordinate = body.angle - base.angle - side.referenceAngle;
+        return side;
+    }
+    const auto& slider = std::get<PrismaticJoint>(joint.data);
+    side.prismatic = true;
+    side.localAnchorBase = slider.localAnchorA;
+    side.localAnchorBody = slider.localAnchorB;
+    side.referenceAngle = slider.referenceAngle;
+    side.localAxisBase = slider.localXAxisA;
+    const Vec2 pBody =
+        MulT(base.xf.q, Mul(body.xf.q, side.localAnchorBody) + (body.xf.p - base.xf.p));
+    side.coordinate = Dot(pBody - side.localAnchorBase, side.localAxisBase);
+    return side;
+}
+
+} // namespace
+
+Joint MakeJoint(const GearJointDef& def, const Joint& joint1, const Joint& joint2,
+                const GearPose& a, const GearPose& b, const GearPose& c, const GearPose& d)
+{
+    RequireFinite("GearJointDef", "ratio", def.ratio);
+    const GearSide sideA = MakeGearSide(joint1, a, c);
+    const GearSide sideB = MakeGearSide(joint2, b, d);
+
+    GearJoint gear;
+    gear.joint1 = def.joint1;
+    gear.joint2 = def.joint2;
+    gear.bodyC = joint1.bodyA;
+    gear.bodyD = joint2.bodyA;
+    gear.prismaticA = sideA.prismatic;
+    gear.prismaticB = sideB.prismatic;
+    gear.localAnchorA = sideA.localAnchorBody;
+    gear.localAnchorC = sideA.localAnchorBase;
+    gear.localAxisC = sideA.localAxisBase;
+    gear.referenceAngleA = sideA.referenceAngle;
+    gear.localAnchorB = sideB.localAnchorBody;
+    gear.localAnchorD = sideB.localAnchorBase;
+    gear.localAxisD = sideB.localAxisBase;
+    gear.referenceAngleB = sideB.referenceAngle;
+    gear.ratio = def.ratio;
+    gear.constant = sideA.coordinate + gear.ratio * sideB.coordinate;
+
+    Joint joint = MakeTypedJoint(JointType::Gear, joint1.bodyB, joint2.bodyB, def.collideConnected);
+    joint.data = gear;
+    return joint;
+}
+
 Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB, const Transform& xfB, bool bodyBDynamic)
 {

@@ -218,6 +218,36 @@ struct PulleyJoint
     Real mass = 0; ///< 1/k
 };
 
+/// Pose of a body when a gear is made: its transform and its angle (Box2D's m_sweep.a).
+struct GearPose
+{
+    Transform xf;
+    Real angle = 0;
+};
+
+struct GearJoint
+{
+    // Definition. Body A and B are joint1's and joint2's bodies B, C and D their bodies A.
+    JointId joint1, joint2;                      ///< the coupled joints
+    bool prismaticA = false, prismaticB = false; ///< joint1's, joint2's type (else revolute)
+    std::int32_t bodyC = -1, bodyD = -1;         ///< world body indices
+    Vec2 localAnchorA, localAnchorB, localAnchorC, localAnchorD;
+    Vec2 localAxisC, localAxisD; ///< a prismatic side's slide axis in C's (D's) frame
+    Real referenceAngleA = 0, referenceAngleB = 0;
+    Real ratio = 1;
+    Real constant = 0; ///< coordinateA + ratio·coordinateB at creation
+    // Accumulated impulse
+    Real impulse = 0;
+    // Solver temporaries. C and D are stored by StoreGearBodies before the step's preparation.
+    std::int32_t indexA = 0, indexB = 0, indexC = 0, indexD = 0;
+    Vec2 localCenterA, localCenterB, localCenterC, localCenterD;
+    Real invMassA = 0, invMassB = 0, invMassC = 0, invMassD = 0;
+    Real invIA = 0, invIB = 0, invIC = 0, invID = 0;
+    Vec2 JvAC, JvBD;                         ///< linear Jacobian of each side (0 when revolute)
+    Real JwA = 0, JwB = 0, JwC = 0, JwD = 0; ///< angular Jacobian terms
+    Real mass = 0;                           ///< 1/k
+};
+
 struct Joint
 {
     JointType type = JointType::Revolute;
@@ -225,7 +255,7 @@ struct Joint
     std::int32_t bodyB = -1;
     bool collideConnected = false;
     std::variant<RevoluteJoint, DistanceJoint, PrismaticJoint, WheelJoint, WeldJoint, MotorJoint,
-                 MouseJoint, FrictionJoint, PulleyJoint>
+                 MouseJoint, FrictionJoint, PulleyJoint, GearJoint>
         data;
 };
 
@@ -262,6 +292,13 @@ Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB,
 Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
 Joint MakeJoint(const FrictionJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
 Joint MakeJoint(const PulleyJointDef& def, std::int32_t bodyA, std::int32_t bodyB);
+/// joint1/joint2: the coupled joints (revolute or prismatic, checked by the world); poses of
+/// the gear's bodies A, B (joint1's, joint2's body B) and C, D (their bodies A) now.
+Joint MakeJoint(const GearJointDef& def, const Joint& joint1, const Joint& joint2,
+                const GearPose& a, const GearPose& b, const GearPose& c, const GearPose& d);
+/// Stores what the gear's rows need of its bodies C and D for this step (bodies A and B come
+/// through InitJointVelocityConstraints, as for every joint).
+void StoreGearBodies(GearJoint& gear, const JointBody& c, const JointBody& d);
 /// xfB: bodyB's transform now, which turns the target into the grabbed local point.
 /// bodyBDynamic: the world's answer to "is bodyB dynamic" (a mouse joint must move it).
 Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
@@ -335,6 +372,12 @@ void InitVelocityConstraints(PulleyJoint& joint, const JointBody& a, const Joint
 void SolveVelocityConstraints(PulleyJoint& joint, SolverData& data);
 bool SolvePositionConstraints(PulleyJoint& joint, SolverData& data);
 JointReaction GetReaction(const PulleyJoint& joint, Real invDt);
+void InitVelocityConstraints(GearJoint& joint, const JointBody& a, const JointBody& b,
+                             SolverData& data);
+void SolveVelocityConstraints(GearJoint& joint, SolverData& data);
+bool SolvePositionConstraints(GearJoint& joint, SolverData& data);
+JointReaction GetReaction(const GearJoint& joint, Real invDt);
+
 /// The rope's unit direction from a ground anchor to a body's anchor (offset d), or 0 when
 /// the side is within 10 linear slops of its ground anchor (Box2D's cut-off); `length`
 /// receives |d|.

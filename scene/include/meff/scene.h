@@ -196,7 +196,13 @@ struct SceneJoint
     // pulley (its anchors on the bodies are anchorA and anchorB, world points)
     SceneVec2 groundAnchorA; ///< fixed world point body A's side hangs from (m)
     SceneVec2 groundAnchorB; ///< fixed world point body B's side hangs from (m)
-    double ratio = 1;        ///< > 0: lengthA + ratio·lengthB is kept
+    double ratio = 1;        ///< > 0: lengthA + ratio·lengthB is kept (pulley); gear: finite
+    // gear: the two joints it couples (revolute or prismatic, earlier in the list); its bodies
+    // A and B are their bodies B (bodyIndexA/B and bodyA/B are filled in from them)
+    std::string jointA;          ///< name as written
+    std::string jointB;          ///< name as written
+    std::size_t jointIndexA = 0; ///< index into Scene::joints
+    std::size_t jointIndexB = 0; ///< index into Scene::joints
 
     friend bool operator==(const SceneJoint&, const SceneJoint&) = default;
 };

@@ -12,8 +12,17 @@ JointBody JointBodyOf(const Body& body)
     return JointBody{body.islandIndex, body.sweep.localCenter, body.invMass, body.invI};
 }
 
+void StoreOtherJointBodies(Joint& joint, std::span<const Body> bodies)
+{
+    if (auto* gear = std::get_if<GearJoint>(&joint.data))
+    {
+        StoreGearBodies(*gear, JointBodyOf(bodies[gear->bodyC]), JointBodyOf(bodies[gear->bodyD]));
+    }
+}
+
 void PrepareSequentialJoint(Joint& joint, std::span<const Body> bodies, SolverData& data)
 {
+    StoreOtherJointBodies(joint, bodies);
     InitJointVelocityConstraints(joint, JointBodyOf(bodies[joint.bodyA]),
                                  JointBodyOf(bodies[joint.bodyB]), data);
 }

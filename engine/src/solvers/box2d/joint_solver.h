@@ -35,6 +35,9 @@ class JointSolver final : public JointStage
     std::vector<Joint*> m_joints; ///< the island's joints, in island order
 };
 
+/// Stores what a joint's rows need of bodies beyond its own two (a gear's: the bodies its two
+/// joints are anchored on), before the joint is prepared; nothing for other joints.
+void StoreOtherJointBodies(Joint& joint, std::span<const Body> bodies);
 /// Prepares one joint in island order (InitJointVelocityConstraints with its bodies).
 void PrepareSequentialJoint(Joint& joint, std::span<const Body> bodies, SolverData& data);
 /// One velocity sweep, and one position sweep (true when all are within tolerance), of joints

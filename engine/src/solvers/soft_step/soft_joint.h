@@ -151,6 +151,14 @@ void WarmStartSoft(const PulleyJoint& joint, const SoftJointState& state, RowBod
 void SolveSoft(PulleyJoint& joint, const SoftJointState& state, bool useBias, RowBodies& b);
 void ScaleImpulses(PulleyJoint& joint, Real factor);
 
+// The gear acts on four bodies: its functions take A and B in `b` as every joint, and reach
+// its bodies C and D (the bodies its two joints are anchored on) through the context.
+void PrepareSoft(GearJoint& joint, SoftJointFrame& frame, const Position& poseA,
+                 const Position& poseB, const SoftStepContext& context);
+void WarmStartSoft(const GearJoint& joint, const SoftJointState& state, RowBodies& b);
+void SolveSoft(GearJoint& joint, const SoftJointState& state, bool useBias, RowBodies& b);
+void ScaleImpulses(GearJoint& joint, Real factor);
+
 /// Prepares the frame of a joint whose bodies are `a`, `b` (their poses at the step's start),
 /// and scales its stored per-step impulses to this sub-step (`warmScale`; 0 without warm
 /// starting).

@@ -152,6 +152,7 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
         Joint& joint = world.joints[island.joints[k]].joint;
         const Body& bodyA = world.bodies[joint.bodyA];
         const Body& bodyB = world.bodies[joint.bodyB];
+        StoreOtherJointBodies(joint, world.bodies);
         PrepareSoftJoint(joint, m_frames[k], JointBodyOf(bodyA), JointBodyOf(bodyB),
                          m_bodies.start[bodyA.islandIndex], m_bodies.start[bodyB.islandIndex],
                          warmScale, m_context);
