@@ -35,20 +35,6 @@ namespace
 constexpr double kTwoPi = 6.283185307179586;
 constexpr Real kDt = Real(1) / Real(60);
 
-const char* KindName(SolverKind kind)
-{
-    switch (kind)
-    {
-    case SolverKind::Box2D:
-        return "box2d";
-    case SolverKind::Colour:
-        return "colour";
-    case SolverKind::SoftStep:
-        return "soft_step";
-    }
-    return "?";
-}
-
 World MakeWorld(SolverKind kind, Vec2 gravity)
 {
     WorldDef def;
@@ -174,7 +160,7 @@ TEST_CASE("An undamped revolute spring oscillates with period 2π/ω", "[joints]
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
     const Real hertz = GENERATE(Real(1), Real(3));
-    CAPTURE(KindName(kind), hertz);
+    CAPTURE(SolverKindName(kind), hertz);
     World world = MakeWorld(kind, {0, -10}); // the pins carry the discs: gravity exerts no torque
     const BodyId ground = world.CreateBody({});
     // Eight discs: the colour back end would take spring-free revolutes into its SIMD lanes
@@ -215,7 +201,7 @@ TEST_CASE("A damped revolute spring decays as e^(−ζωt) with the damped perio
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
     const Real zeta = GENERATE(Real(0.05), Real(0.2));
-    CAPTURE(KindName(kind), zeta);
+    CAPTURE(SolverKindName(kind), zeta);
     const Real hertz = 1;
     const Real target = Real(0.3);
     World world = MakeWorld(kind, {0, 0});
@@ -257,7 +243,7 @@ TEST_CASE("A mass hanging on a prismatic spring settles at target − m·g/k",
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
     const bool blockJoints = GENERATE(true, false);
-    CAPTURE(KindName(kind), blockJoints);
+    CAPTURE(SolverKindName(kind), blockJoints);
     WorldDef worldDef;
     worldDef.gravity = {0, -10};
     worldDef.solver.kind = kind;
@@ -313,7 +299,7 @@ TEST_CASE("A revolute spring holds an arm at its target angle less the sag of it
           "[joints][springs][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     World world = MakeWorld(kind, {0, -10});
     const BodyId ground = world.CreateBody({});
     // A 2 m × 0.1 m arm of 0.8 kg hinged at its left end, at the origin.
@@ -613,7 +599,7 @@ TEST_CASE("spring_gadgets.json: every back end brings the springs to the rests i
           "[scene][joints][springs][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     Scene scene = LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/v3/spring_gadgets.json");
     scene.world.solver.kind = kind;
     BuiltScene built = BuildWorld(scene);

@@ -40,20 +40,6 @@ BodyId AddSquare(World& world, Vec2 position)
     return body;
 }
 
-const char* KindName(SolverKind kind)
-{
-    switch (kind)
-    {
-    case SolverKind::Box2D:
-        return "box2d";
-    case SolverKind::Colour:
-        return "colour";
-    case SolverKind::SoftStep:
-        return "soft_step";
-    }
-    return "?";
-}
-
 } // namespace
 
 TEST_CASE("A box held to the floor by a friction joint slides to rest at maxForce/m",
@@ -61,7 +47,7 @@ TEST_CASE("A box held to the floor by a friction joint slides to rest at maxForc
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
     const bool blockJoints = GENERATE(true, false);
-    CAPTURE(KindName(kind), blockJoints);
+    CAPTURE(SolverKindName(kind), blockJoints);
     World world = TopDownWorld(kind, blockJoints);
     const BodyId ground = world.CreateBody({});
     const BodyId box = AddSquare(world, {0, 0});
@@ -99,7 +85,7 @@ TEST_CASE("A spinning box held by a friction joint stops at maxTorque/I without 
           "[joints][friction][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     World world = TopDownWorld(kind, true);
     const BodyId ground = world.CreateBody({});
     const BodyId box = AddSquare(world, {1, 2});
@@ -131,7 +117,7 @@ TEST_CASE("A friction joint between two moving bodies slows their relative motio
           "[joints][friction][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     World world = TopDownWorld(kind, true);
     const BodyId a = AddSquare(world, {0, 0});
     const BodyId b = AddSquare(world, {3, 0});
@@ -182,7 +168,7 @@ TEST_CASE("Friction joints reject bad arguments", "[joints][friction][make]")
 TEST_CASE("Snapshots replay a friction joint's slide bit for bit", "[joints][friction][snapshot]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     World world = TopDownWorld(kind, true);
     const BodyId ground = world.CreateBody({});
     const BodyId box = AddSquare(world, {0, 0});
@@ -253,7 +239,7 @@ TEST_CASE("friction_topdown.json: every back end slows the bodies to rest by the
           "[scene][joints][friction][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     Scene scene = LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/scenes/friction_topdown.json");
     scene.world.solver.kind = kind;
     BuiltScene built = BuildWorld(scene);

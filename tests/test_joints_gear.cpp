@@ -21,20 +21,6 @@ namespace
 constexpr Real kDt = Real(1) / Real(60);
 constexpr Real kPi = Real(3.14159265358979323846);
 
-const char* KindName(SolverKind kind)
-{
-    switch (kind)
-    {
-    case SolverKind::Box2D:
-        return "box2d";
-    case SolverKind::Colour:
-        return "colour";
-    case SolverKind::SoftStep:
-        return "soft_step";
-    }
-    return "?";
-}
-
 /// A disc of radius r and mass m centred at `position` (I = m·r²/2 about its centre).
 BodyId AddDisc(World& world, Vec2 position, Real radius, Real mass)
 {
@@ -57,7 +43,7 @@ TEST_CASE("A gear passes torque: αA = T/(IA + IB/ratio²), θA + ratio·θB con
           "[joints][gear][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     WorldDef worldDef;
     worldDef.gravity = {0, 0};
     worldDef.solver.kind = kind;
@@ -106,7 +92,7 @@ TEST_CASE("A rack and pinion: a prismatic side moves ratio⁻¹ metres per radia
           "[joints][gear][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     WorldDef worldDef;
     worldDef.gravity = {0, -10};
     worldDef.solver.kind = kind;
@@ -258,7 +244,7 @@ TEST_CASE("gear_train.json: the train runs at the gears' ratios and stops at the
           "[joints][gear][scene]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     Scene scene = LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/scenes/gear_train.json");
     scene.world.solver.kind = kind;
     BuiltScene built = BuildWorld(scene);

@@ -25,20 +25,6 @@ namespace
 
 constexpr Real kDt = Real(1) / Real(60);
 
-const char* KindName(SolverKind kind)
-{
-    switch (kind)
-    {
-    case SolverKind::Box2D:
-        return "box2d";
-    case SolverKind::Colour:
-        return "colour";
-    case SolverKind::SoftStep:
-        return "soft_step";
-    }
-    return "?";
-}
-
 /// A 1 m square of the given density (kg), with no rotation needed (ropes tied at centres).
 BodyId AddSquare(World& world, Vec2 position, Real density)
 {
@@ -55,7 +41,7 @@ TEST_CASE("A pulley is an Atwood machine: a = g(mA − mB)/(mA + mB), tension 2m
           "[joints][pulley][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     WorldDef worldDef;
     worldDef.gravity = {0, -10};
     worldDef.solver.kind = kind;
@@ -100,7 +86,7 @@ TEST_CASE("pulley_elevator.json: every back end keeps both ropes' lengths and th
           "[scene][joints][pulley][analytic]")
 {
     const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
-    CAPTURE(KindName(kind));
+    CAPTURE(SolverKindName(kind));
     Scene scene = LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/scenes/pulley_elevator.json");
     scene.world.solver.kind = kind;
     BuiltScene built = BuildWorld(scene);
