@@ -326,12 +326,54 @@ def case_validate_unmirrored():
 
 
 def case_bench_threads():
-    """--threads is checked up front: exit status 2, one line naming the option."""
-    for threads in ("0", "1.5"):
-        status, stdout, stderr = run(["bench", STACK, "--threads", threads, "--runs", "1",
-                                      "--steps", "2"])
-        if status != 2 or "--threads" not in stderr or stdout:
-            fail("--threads %s: status %d" % (threads, status))
+    """--threads is checked up front: exit status 2, one line naming the option. A valid
+    --threads N is used and said in the JSON report ("threads")."""
+    for command in ("bench", "run"):
+        for threads in ("0", "1.5", "1025"):
+            status, stdout, stderr = run([command, STACK, "--threads", threads, "--runs", "1",
+                                          "--steps", "2"] if command == "bench" else
+                                         [command, STACK, "--threads", threads, "--frames", "2"])
+            if status != 2 or "--threads" not in stderr or stdout:
+                fail("%s --threads %s: status %d" % (command, threads, status))
+    report = os.path.join(WORK, "bench.json")
+    status, stdout, stderr = run(["bench", STACK, "--threads", "2", "--solver", "colour",
+                                  "--against", "none", "--runs", "1", "--steps", "3",
+                                  "--json", report])
+    if status != 0 or stderr:
+        fail("--threads 2: status %d, stderr %r" % (status, stderr))
+    with open(report) as text:
+        entry = json.load(text)[0]
+    if entry.get("threads") != 2:
+        fail("the JSON report does not say threads 2: %r" % entry)
+
+
+def case_run_threads():
+    """`meff run --threads N` writes the same bytes for any N: large_pyramid by colour (its
+    colours are large enough to be spread over the threads), trajectory and contact impulses
+    over 10 frames, on 1, 2 and 3 threads and without the option."""
+    with open(os.path.join(SOURCE, "samples", "bench", "large_pyramid.json")) as text:
+        scene = json.load(text)
+    scene["world"]["solver"] = "colour"
+    path = os.path.join(WORK, "large_pyramid_colour.json")
+    with open(path, "w") as text:
+        json.dump(scene, text)
+    outputs = {}
+    for threads in (None, "1", "2", "3"):
+        name = threads or "default"
+        trajectory = os.path.join(WORK, "trajectory_%s.csv" % name)
+        contacts = os.path.join(WORK, "contacts_%s.csv" % name)
+        args = ["run", path, "--frames", "10", "--trajectory", trajectory, "--contacts",
+                contacts] + (["--threads", threads] if threads else [])
+        status, stdout, stderr = run(args, timeout=300)
+        if status != 0 or stderr:
+            fail("--threads %s: status %d, stderr %r" % (threads, status, stderr))
+        with open(trajectory, "rb") as a, open(contacts, "rb") as b:
+            outputs[name] = (a.read(), b.read())
+        if len(outputs[name][0].splitlines()) != 1 + 11 * 5050:
+            fail("--threads %s: expected a row per box per frame" % threads)
+    for name, output in outputs.items():
+        if output != outputs["1"]:
+            fail("--threads %s wrote other bytes than --threads 1" % name)
 
 
 def case_bench_scenes():

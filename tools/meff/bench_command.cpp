@@ -9,8 +9,10 @@
 // ms/step. Ratios are taken run by run (paired) and summarised by their median; the largest
 // difference of the two engines' body positions at the end shows they simulated the same thing.
 // With --profile, meff's time per step is also split into the step's stages (World::GetProfile).
+// With --threads N, meff's world (not its peer) steps on a pool of N threads.
 #include "commands.h"
 #include "output_file.h"
+#include "threads_option.h"
 
 #include "meff/box2d_mirror.h"
 
@@ -237,8 +239,9 @@ void TimePaired(const Scene& scene, const Against& against, BuiltScene& built, i
     bench.maxPositionDifference = MaxPositionDifference(built, peerPosition);
 }
 
-/// Times meff `runs` times, alone or paired with its peer run by run.
-SceneBench BenchScene(const Scene& scene, int steps, int runs, const Against& against)
+/// Times meff `runs` times (on `threads`, if any), alone or paired with its peer run by run.
+SceneBench BenchScene(const Scene& scene, int steps, int runs, const Against& against,
+                      TaskSystem* threads)
 {
     SceneBench bench;
     bench.name = scene.name;
@@ -247,6 +250,7 @@ SceneBench BenchScene(const Scene& scene, int steps, int runs, const Against& ag
     for (int r = 0; r < runs; ++r)
     {
         BuiltScene built = BuildWorld(scene);
+        built.world.SetTaskSystem(threads);
         if (against.kind == Against::Kind::None)
         {
             bench.meff.push_back(RunMeff(built.world, steps, static_cast<Real>(scene.world.dt)));
@@ -327,7 +331,8 @@ nlohmann::json ReportProfile(const SceneBench& bench)
 }
 
 /// Prints the scene's line (and, with `profile`, its stages) and returns its JSON entry.
-nlohmann::json Report(const SceneBench& bench, const Against& against, int runs, bool profile)
+nlohmann::json Report(const SceneBench& bench, const Against& against, int runs, int threads,
+                      bool profile)
 {
     const Summary meff = Summarize(Field(bench.meff, &EngineRun::msPerStep));
     const Summary meffFirst = Summarize(Field(bench.meff, &EngineRun::firstStepMs));
@@ -339,6 +344,7 @@ nlohmann::json Report(const SceneBench& bench, const Against& against, int runs,
                             {"contacts", bench.contacts},
                             {"steps", bench.steps},
                             {"runs", runs},
+                            {"threads", threads},
                             {"meff_ms_per_step", ToJson(meff)},
                             {"meff_first_step_ms", ToJson(meffFirst)}};
     if (against.kind != Against::Kind::None)
@@ -365,14 +371,6 @@ nlohmann::json Report(const SceneBench& bench, const Against& against, int runs,
 
 int RunBench(const BenchOptions& options)
 {
-    if (options.threads != 1)
-    {
-        std::fprintf(stderr,
-                     "meff bench: --threads %d: meff steps on one thread for now; only "
-                     "--threads 1 is supported\n",
-                     options.threads);
-        return kExitBadInput;
-    }
     std::vector<Scene> scenes;
     for (const std::string& path : options.scenePaths)
     {
@@ -401,6 +399,7 @@ int RunBench(const BenchOptions& options)
         return kExitBadInput;
     }
 
+    const std::unique_ptr<TaskSystem> threads = MakeThreads(options.threads);
     PrintHeader(options.against);
     nlohmann::json report = nlohmann::json::array();
     for (const Scene& scene : scenes)
@@ -415,14 +414,15 @@ int RunBench(const BenchOptions& options)
         SceneBench bench;
         try
         {
-            bench = BenchScene(scene, steps, options.runs, options.against);
+            bench = BenchScene(scene, steps, options.runs, options.against, threads.get());
         }
         catch (const Error& error)
         {
             std::fprintf(stderr, "meff bench: %s: %s\n", scene.name.c_str(), error.what());
             return kExitRunFailed;
         }
-        report.push_back(Report(bench, options.against, options.runs, options.profile));
+        report.push_back(
+            Report(bench, options.against, options.runs, options.threads, options.profile));
     }
     if (options.against.kind == Against::Kind::None)
     {
@@ -477,7 +477,7 @@ Command AddBenchCommand(CLI::App& parent)
         ->check(CLI::Range(2, 1000000));
     app->add_option("--runs", options->runs, "Runs per engine and scene (default 5)")
         ->check(CLI::Range(1, 1000));
-    app->add_option("--threads", options->threads, "Threads for meff (only 1 for now)");
+    AddThreadsOption(*app, options->threads, "Threads for meff's world (its peer steps on one)");
     app->add_option("--json", options->jsonPath,
                     "Also write the results to this JSON file (each scene's \"against\" says "
                     "what meff was timed against)");

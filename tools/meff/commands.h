@@ -29,7 +29,7 @@ struct Command
     std::function<int()> run;
 };
 
-/// `meff run SCENE.json [--frames N] [--trajectory OUT.csv] [--contacts OUT.csv]
+/// `meff run SCENE.json [--frames N] [--threads N] [--trajectory OUT.csv] [--contacts OUT.csv]
 /// [--joints OUT.csv]`
 Command AddRunCommand(CLI::App& parent);
 

@@ -1,6 +1,7 @@
 // `meff run`: steps a scene and writes what happened as CSV.
 #include "commands.h"
 #include "output_file.h"
+#include "threads_option.h"
 
 #include <cerrno>
 #include <chrono>
@@ -26,6 +27,7 @@ struct RunOptions
     std::string trajectoryPath;
     std::string contactsPath;
     std::string jointsPath;
+    int threads = 1;
 };
 
 /// Enough digits that every Real reads back as the same value.
@@ -228,6 +230,8 @@ int Run(const RunOptions& options)
     {
         return kExitBadInput;
     }
+    const std::unique_ptr<TaskSystem> threads = MakeThreads(options.threads);
+    built->world.SetTaskSystem(threads.get());
 
     std::optional<RunOutputs> outputs;
     try
@@ -397,6 +401,7 @@ Command AddRunCommand(CLI::App& parent)
                     "Write frame,joint,fx,fy,torque: each joint's reaction force (N) and torque "
                     "(N·m) on body_b after each step, i.e. its impulse divided by dt")
         ->type_name("OUT.csv");
+    AddThreadsOption(*app, options->threads, "Threads to step the world on");
     return {app, [options] { return Run(*options); }};
 }
 

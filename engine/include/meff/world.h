@@ -10,6 +10,7 @@
 #include "meff/joint.h"
 #include "meff/math.h"
 #include "meff/shape.h"
+#include "meff/task_system.h"
 
 #include <cstdint>
 #include <functional>
@@ -567,6 +568,16 @@ class World
     /// same pair for runs to be deterministic. Configuration, not state: RestoreSnapshot keeps
     /// the current filter.
     void SetCustomFilterCallback(CustomFilterCallback callback);
+    /// Lends the world threads for its steps (task_system.h: a game's job system, or
+    /// MakeThreadPool's), or with null takes them back: one thread, the default. Not owned: it
+    /// must outlive its use by the world. The results are the same, bit for bit, for any
+    /// thread count. For now only the colour back end uses them (its contact lanes, colour by
+    /// colour); the Box2D back end stays single-threaded and bit-identical to Box2D 2.4.1.
+    /// Configuration, not state: RestoreSnapshot keeps the current one, and it is outside
+    /// snapshots and the state hash. Throws InvalidArgument during a step or when its
+    /// ThreadCount() is below 1.
+    void SetTaskSystem(TaskSystem* tasks);
+    TaskSystem* GetTaskSystem() const;
 
     // Reports of the last step
     /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).

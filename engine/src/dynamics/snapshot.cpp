@@ -86,6 +86,7 @@ WorldSnapshot World::SaveSnapshot() const
     // snapshot must not keep alive whatever they captured.
     copy->preSolve = nullptr;
     copy->customFilter = nullptr;
+    copy->tasks = nullptr;
     snapshot.m_state = std::move(copy);
     return snapshot;
 }
@@ -102,12 +103,14 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
         throw InvalidArgument("World::RestoreSnapshot: called during World::Step (from the "
                               "pre-solve callback); the callback must not change the world");
     }
-    // Configuration, not state: the current callbacks stay.
+    // Configuration, not state: the current callbacks and task system stay.
     PreSolveCallback preSolve = std::move(world.preSolve);
     CustomFilterCallback customFilter = std::move(world.customFilter);
+    TaskSystem* const tasks = world.tasks;
     world = *snapshot.m_state;
     world.preSolve = std::move(preSolve);
     world.customFilter = std::move(customFilter);
+    world.tasks = tasks;
     world.stepping = false; // a snapshot saved from the callback was saved mid-step
 }
 

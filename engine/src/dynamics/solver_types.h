@@ -42,8 +42,12 @@ struct SolverData
     Position* positions = nullptr;
     Velocity* velocities = nullptr;
     /// A slot after the island's bodies in both arrays, written by SIMD lanes that must not
-    /// change their body and never read (lane_bodies.h); −1 where no lanes run.
+    /// change their body and never read (lane_bodies.h); −1 where no lanes run. There is one
+    /// such slot per worker of `tasks`: worker w's is discardIndex + w.
     std::int32_t discardIndex = -1;
+    /// The world's threads (World::SetTaskSystem), for the stages that can use them; null: the
+    /// calling thread alone.
+    TaskSystem* tasks = nullptr;
 };
 
 } // namespace meff::detail

@@ -1545,6 +1545,27 @@ void World::SetCustomFilterCallback(CustomFilterCallback callback)
     State().customFilter = std::move(callback);
 }
 
+void World::SetTaskSystem(TaskSystem* tasks)
+{
+    WorldState& world = State();
+    if (world.stepping)
+    {
+        throw InvalidArgument("World::SetTaskSystem: called during World::Step (from a "
+                              "callback); the callback must not change the world");
+    }
+    if (tasks != nullptr && tasks->ThreadCount() < 1)
+    {
+        throw InvalidArgument("World::SetTaskSystem: ThreadCount() is " +
+                              std::to_string(tasks->ThreadCount()) + ", must be at least 1");
+    }
+    world.tasks = tasks;
+}
+
+TaskSystem* World::GetTaskSystem() const
+{
+    return State().tasks;
+}
+
 std::span<const ContactPointReport> World::GetContactReports() const
 {
     // Built on the first read after a step (contact_reports.h): the world's visible state does

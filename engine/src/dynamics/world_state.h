@@ -88,6 +88,9 @@ struct WorldState
     std::size_t stepSensorEndEventCount = 0;
     PreSolveCallback preSolve;         ///< the user's, or empty; kept across RestoreSnapshot
     CustomFilterCallback customFilter; ///< the user's, or empty; kept across RestoreSnapshot
+    /// The user's threads (World::SetTaskSystem), not owned, or null; configuration, not state:
+    /// kept across RestoreSnapshot, outside snapshots and the state hash.
+    TaskSystem* tasks = nullptr;
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;
@@ -101,8 +104,9 @@ struct WorldState
 /// What a solver back end sees of the world (solvers/solver.h).
 inline SolverWorld SolverView(WorldState& world, SolvedContactSink& solvedContacts)
 {
-    return SolverWorld{world.bodies,  world.contacts,   world.joints,    world.bodyList,
-                       world.gravity, world.allowSleep, world.stepCount, solvedContacts};
+    return SolverWorld{world.bodies,     world.contacts,  world.joints,
+                       world.bodyList,   world.gravity,   world.allowSleep,
+                       world.stepCount,  solvedContacts,  world.tasks};
 }
 
 /// Wakes body `bodyIndex` (see WakeBody(Body&)): the helper for any world change — a joint

@@ -3,6 +3,7 @@
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
 #include "dynamics/joint_slot.h"
+#include "tasks/parallel_ranges.h"
 
 #include <cmath>
 
@@ -34,7 +35,7 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
 {
     IntegrateVelocities(world, island, step);
     SolverData data{step, island.positions.data(), island.velocities.data(),
-                    static_cast<std::int32_t>(island.bodies.size())};
+                    static_cast<std::int32_t>(island.bodies.size()), world.tasks};
 
     contacts.Prepare({island.contacts, world.contacts, world.bodies}, data);
     if (step.solver.warmStarting)
@@ -65,9 +66,10 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
 void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step)
 {
     const std::size_t count = island.bodies.size();
-    // One slot more than the island's bodies: SolverData::discardIndex.
-    island.positions.resize(count + 1);
-    island.velocities.resize(count + 1);
+    // A slot more than the island's bodies for each worker: SolverData::discardIndex.
+    const auto discardSlots = static_cast<std::size_t>(WorkerCount(world.tasks));
+    island.positions.resize(count + discardSlots);
+    island.velocities.resize(count + discardSlots);
     const Real h = step.dt;
     for (std::size_t i = 0; i < count; ++i)
     {

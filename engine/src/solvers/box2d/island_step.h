@@ -68,8 +68,8 @@ class JointStage
 void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
                  ContactStage& contacts, JointStage& joints);
 
-/// Copies the island's bodies into island.positions/velocities (one slot more for the lanes'
-/// discard, SolverData::discardIndex) and adds gravity, forces and damping to the velocities.
+/// Copies the island's bodies into island.positions/velocities (a slot more per worker of
+/// world.tasks for the lanes' discard, SolverData::discardIndex) and adds gravity, forces and damping to the velocities.
 void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step);
 /// Moves every body of the island by h·v (its motion clamped to Tolerances::maxTranslation
 /// and maxRotation per step).

@@ -117,7 +117,7 @@ void SolveNormalBlock(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
     g.normalImpulse[1] = new2;
 }
 
-void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
+void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities, DiscardSlots discard)
 {
     BodyStateW a = Gather(velocities, g.indexA);
     BodyStateW b = Gather(velocities, g.indexB);
@@ -150,14 +150,14 @@ void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities)
             g.normalImpulse[j] = Select(g.block, g.normalImpulse[j], rows.normalImpulse[j]);
         }
     }
-    Scatter(velocities, g.storeA, a);
-    Scatter(velocities, g.storeB, b);
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
 /// One sweep over a group's points (as SolvePositionConstraint); returns each lane's smallest
 /// separation.
 RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, const Tolerances& tol,
-                         Real baumgarte)
+                         Real baumgarte, DiscardSlots discard)
 {
     BodyStateW a = Gather(positions, g.indexA);
     BodyStateW b = Gather(positions, g.indexB);
@@ -201,8 +201,8 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
         const RealW impulse = Select(solvable, -C / Select(solvable, K, Splat(1)), Splat(0));
         ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, impulse * normal);
     }
-    Scatter(positions, g.storeA, a);
-    Scatter(positions, g.storeB, b);
+    ScatterFromWorker(positions, g.storeA, discard, a);
+    ScatterFromWorker(positions, g.storeB, discard, b);
     return minSeparation;
 }
 
@@ -210,9 +210,10 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
 
 void ContactLanes::SolveVelocities(SolverData& data)
 {
-    for (ContactVelocityGroup& group : m_velocityGroups)
+    for (int c = 0; c < GroupColourCount(); ++c)
     {
-        SolveVelocityGroup(group, data.velocities);
+        ForEachGroupOfColour(c, data, [&](std::int32_t i, DiscardSlots discard)
+                             { SolveVelocityGroup(m_velocityGroups[i], data.velocities, discard); });
     }
 }
 
@@ -236,11 +237,21 @@ void ContactLanes::CollectResults(std::span<SolvedContact> solved) const
 Real ContactLanes::SolvePositions(SolverData& data)
 {
     const Tolerances& tol = data.step.tolerances;
-    RealW minSeparationW = Splat(0);
-    for (const ContactPositionGroup& group : m_positionGroups)
+    for (int c = 0; c < GroupColourCount(); ++c)
     {
-        minSeparationW =
-            MinW(minSeparationW, SolvePositionGroup(group, data.positions, tol, tol.baumgarte));
+        ForEachGroupOfColour(c, data,
+                             [&](std::int32_t i, DiscardSlots discard)
+                             {
+                                 m_groupMinSeparation[i] =
+                                     SolvePositionGroup(m_positionGroups[i], data.positions, tol,
+                                                        tol.baumgarte, discard);
+                             });
+    }
+    // In group order whatever the threads: the same minimum, NaN and signed zeros included.
+    RealW minSeparationW = Splat(0);
+    for (const RealW groupMin : m_groupMinSeparation)
+    {
+        minSeparationW = MinW(minSeparationW, groupMin);
     }
     Real minSeparation = 0;
     for (int l = 0; l < kLanes; ++l)

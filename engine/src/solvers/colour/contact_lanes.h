@@ -7,11 +7,19 @@
 // Gauss-Seidel order, so results differ from Box2D's — by round-off in a single contact, by the
 // order's effect on convergence in a pile — and are validated by settled-state checks instead of
 // bit for bit.
+//
+// With the world's TaskSystem (SolverData::tasks) a colour's groups are spread over threads,
+// at least kMinGroupsPerTask to a range: they share no moving body, each writes only its own
+// bodies, its own rows and its worker's discard slot, and the smallest separation is kept per
+// group and reduced in group order afterwards, so the results are the same bit for bit for any
+// thread count. The preparation spreads every group likewise (it only reads the bodies).
 #pragma once
 
 #include "solvers/box2d/contact_constraint.h"
 #include "solvers/colour/contact_colouring.h"
+#include "solvers/lanes/lane_bodies.h"
 #include "solvers/lanes/wide_real.h"
+#include "tasks/parallel_ranges.h"
 
 #include <cstdint>
 #include <span>
@@ -54,6 +62,10 @@ struct ContactPositionGroup
     MaskW hasPoint[2];
 };
 
+/// The fewest groups a thread is handed at once: a group costs about as much as a thread's
+/// wake-up and its share of the job's bookkeeping when solved 64 at a time.
+inline constexpr int kMinGroupsPerTask = 64;
+
 class ContactLanes
 {
   public:
@@ -67,7 +79,8 @@ class ContactLanes
                  const SolverData& data);
     /// Applies the lanes' warm-start impulses.
     void WarmStart(SolverData& data);
-    /// One velocity sweep of the lanes, colour after colour.
+    /// One velocity sweep of the lanes, colour after colour (a colour's groups on the
+    /// world's threads).
     void SolveVelocities(SolverData& data);
     /// Copies the lanes' accumulated impulses into their contacts' `solved[k]`.
     void CollectResults(std::span<SolvedContact> solved) const;
@@ -77,9 +90,37 @@ class ContactLanes
     const ConstraintColouring& Colouring() const { return m_colouring; }
 
   private:
+    /// The colours of the prepared groups (none when the island has no contact).
+    int GroupColourCount() const { return static_cast<int>(m_groupStarts.size()) - 1; }
+    /// Prepares group i (of colour `colour`), returns whether a contact of it has hit events.
+    bool PrepareGroup(std::int32_t i, int colour, const IslandContacts& island,
+                      std::span<SolvedContact> solved, const SolverData& data);
+    /// Runs solve(group, discard) on each of colour c's groups, spread over the world's threads.
+    template <typename Solve>
+    void ForEachGroupOfColour(int c, const SolverData& data, Solve&& solve);
+
     ConstraintColouring m_colouring;
     std::vector<ContactVelocityGroup> m_velocityGroups;
     std::vector<ContactPositionGroup> m_positionGroups;
+    /// Colour c's groups are [m_groupStarts[c], m_groupStarts[c + 1]) of both group arrays.
+    std::vector<std::int32_t> m_groupStarts;
+    /// Each position group's smallest separation per lane in the last position sweep.
+    std::vector<RealW> m_groupMinSeparation;
 };
+
+template <typename Solve>
+void ContactLanes::ForEachGroupOfColour(int c, const SolverData& data, Solve&& solve)
+{
+    const std::int32_t first = m_groupStarts[c];
+    ForRanges(data.tasks, m_groupStarts[c + 1] - first, kMinGroupsPerTask,
+              [&](int begin, int end, int worker)
+              {
+                  const DiscardSlots discard{data.discardIndex, data.discardIndex + worker};
+                  for (std::int32_t i = first + begin; i < first + end; ++i)
+                  {
+                      solve(i, discard);
+                  }
+              });
+}
 
 } // namespace meff::detail

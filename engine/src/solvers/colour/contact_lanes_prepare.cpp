@@ -14,6 +14,9 @@
 #include "dynamics/contact.h"
 #include "solvers/lanes/lane_bodies.h"
 
+#include <algorithm>
+#include <atomic>
+
 namespace meff::detail
 {
 
@@ -251,70 +254,123 @@ void WriteBack(const ContactVelocityGroup& vg, const PreparedLanes& prepared,
     }
 }
 
+/// Applies a group's warm-start impulses (its accumulated impulses, scaled in Prepare).
+void WarmStartGroup(const ContactVelocityGroup& g, Velocity* velocities, DiscardSlots discard)
+{
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
+    const Vec2W tangent{g.normal.y, -g.normal.x};
+    for (int j = 0; j < 2; ++j)
+    {
+        const Vec2W P = g.normalImpulse[j] * g.normal + g.tangentImpulse[j] * tangent;
+        ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA[j], g.rB[j], P);
+    }
+    if (g.anyRolling)
+    {
+        a.angular = a.angular - g.invIA * g.rollingImpulse;
+        b.angular = b.angular + g.invIB * g.rollingImpulse;
+    }
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
+}
+
 } // namespace
+
+bool ContactLanes::PrepareGroup(std::int32_t i, int colour, const IslandContacts& island,
+                                std::span<SolvedContact> solved, const SolverData& data)
+{
+    const std::int32_t end = m_colouring.colourStarts[colour + 1];
+    const std::int32_t first =
+        m_colouring.colourStarts[colour] + (i - m_groupStarts[colour]) * kLanes;
+    ContactVelocityGroup& vg = m_velocityGroups[i];
+    ContactPositionGroup& pg = m_positionGroups[i];
+    vg = ContactVelocityGroup{};
+    pg = ContactPositionGroup{};
+    for (int l = 0; l < kLanes; ++l)
+    {
+        vg.source[l] = -1;
+        vg.storeA[l] = vg.storeB[l] = pg.storeA[l] = pg.storeB[l] = data.discardIndex;
+    }
+    const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
+    LaneInputs in{};
+    int filled = 0;
+    for (; filled < kLanes && first + filled < end; ++filled)
+    {
+        const std::int32_t k = m_colouring.order[first + filled];
+        GatherLane(vg, pg, in, filled, k, island.contacts[island.contactIndices[k]], island,
+                   impulseScale, data.step.solver.restitutionFromStepStart, data.discardIndex);
+    }
+    // Empty lanes write the discard slot and have zero masses throughout; they read lane 0's
+    // bodies, which only this group of its colour writes (body 0 may be another group's,
+    // being written by another thread at that moment).
+    for (int l = filled; l < kLanes; ++l)
+    {
+        vg.indexA[l] = pg.indexA[l] = vg.indexA[0];
+        vg.indexB[l] = pg.indexB[l] = vg.indexB[0];
+    }
+    WriteBack(vg, PrepareRows(vg, pg, in, data), island, solved);
+    return in.hitEvents;
+}
 
 bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
                            const SolverData& data)
 {
-    bool hitEvents = false;
-    m_velocityGroups.clear();
-    m_positionGroups.clear();
     if (island.contactIndices.empty())
     {
         // A body in free fall: skip the colouring's fixed cost (its per-body scratch).
         m_colouring.overflow.clear();
+        m_groupStarts.assign(1, 0);
+        m_velocityGroups.clear();
+        m_positionGroups.clear();
+        m_groupMinSeparation.clear();
         return false;
     }
     ColourContacts(island, static_cast<std::size_t>(data.discardIndex), m_colouring);
-    const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
-    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
+    // Each colour's contacts kLanes to a group, colour after colour.
+    const int colours = m_colouring.ColourCount();
+    m_groupStarts.resize(static_cast<std::size_t>(colours) + 1);
+    m_groupStarts[0] = 0;
+    for (int c = 0; c < colours; ++c)
     {
-        const std::int32_t begin = m_colouring.colourStarts[colour];
-        const std::int32_t end = m_colouring.colourStarts[colour + 1];
-        for (std::int32_t first = begin; first < end; first += kLanes)
-        {
-            // Empty lanes read body 0 and write the discard slot; all their masses are zero.
-            ContactVelocityGroup& vg = m_velocityGroups.emplace_back();
-            ContactPositionGroup& pg = m_positionGroups.emplace_back();
-            for (int l = 0; l < kLanes; ++l)
-            {
-                vg.source[l] = -1;
-                vg.storeA[l] = vg.storeB[l] = pg.storeA[l] = pg.storeB[l] = data.discardIndex;
-            }
-            LaneInputs in{};
-            for (int l = 0; l < kLanes && first + l < end; ++l)
-            {
-                const std::int32_t k = m_colouring.order[first + l];
-                GatherLane(vg, pg, in, l, k, island.contacts[island.contactIndices[k]], island,
-                           impulseScale, data.step.solver.restitutionFromStepStart,
-                           data.discardIndex);
-            }
-            WriteBack(vg, PrepareRows(vg, pg, in, data), island, solved);
-            hitEvents = hitEvents || in.hitEvents;
-        }
+        const std::int32_t contacts = m_colouring.colourStarts[c + 1] - m_colouring.colourStarts[c];
+        m_groupStarts[c + 1] = m_groupStarts[c] + (contacts + kLanes - 1) / kLanes;
     }
-    return hitEvents;
+    const std::int32_t groups = m_groupStarts.back();
+    m_velocityGroups.resize(static_cast<std::size_t>(groups));
+    m_positionGroups.resize(static_cast<std::size_t>(groups));
+    m_groupMinSeparation.resize(static_cast<std::size_t>(groups));
+
+    // Groups only read the bodies here, so every group may be prepared at once.
+    std::atomic<bool> hitEvents{false};
+    ForRanges(data.tasks, groups, kMinGroupsPerTask,
+              [&](int begin, int end, int)
+              {
+                  auto colour = static_cast<int>(
+                      std::upper_bound(m_groupStarts.begin(), m_groupStarts.end(), begin) -
+                      m_groupStarts.begin() - 1);
+                  bool any = false;
+                  for (std::int32_t i = begin; i < end; ++i)
+                  {
+                      while (i >= m_groupStarts[colour + 1])
+                      {
+                          ++colour;
+                      }
+                      any = PrepareGroup(i, colour, island, solved, data) || any;
+                  }
+                  if (any)
+                  {
+                      hitEvents.store(true, std::memory_order_relaxed);
+                  }
+              });
+    return hitEvents.load(std::memory_order_relaxed);
 }
 
 void ContactLanes::WarmStart(SolverData& data)
 {
-    for (const ContactVelocityGroup& g : m_velocityGroups)
+    for (int c = 0; c < GroupColourCount(); ++c)
     {
-        BodyStateW a = Gather(data.velocities, g.indexA);
-        BodyStateW b = Gather(data.velocities, g.indexB);
-        const Vec2W tangent{g.normal.y, -g.normal.x};
-        for (int j = 0; j < 2; ++j)
-        {
-            const Vec2W P = g.normalImpulse[j] * g.normal + g.tangentImpulse[j] * tangent;
-            ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA[j], g.rB[j], P);
-        }
-        if (g.anyRolling)
-        {
-            a.angular = a.angular - g.invIA * g.rollingImpulse;
-            b.angular = b.angular + g.invIB * g.rollingImpulse;
-        }
-        Scatter(data.velocities, g.storeA, a);
-        Scatter(data.velocities, g.storeB, b);
+        ForEachGroupOfColour(c, data, [&](std::int32_t i, DiscardSlots discard)
+                             { WarmStartGroup(m_velocityGroups[i], data.velocities, discard); });
     }
 }
 

@@ -73,6 +73,30 @@ template <typename State>
     std::memcpy(static_cast<void*>(&states[store[3]]), &r3, sizeof(RealW));
 }
 
+/// The discard slots of a thread solving groups (SolverData::discardIndex): the one the groups
+/// were packed with, and the worker's own.
+struct DiscardSlots
+{
+    std::int32_t packed; ///< SolverData::discardIndex
+    std::int32_t own;    ///< discardIndex + worker
+};
+
+/// Scatter for a worker of the world's TaskSystem: lanes packed to write the discard slot write
+/// the worker's own slot instead, so that the groups of one colour, solved on several threads
+/// at once, never write the same memory (for worker 0 the slots are the same).
+template <typename State>
+[[gnu::always_inline]] inline void ScatterFromWorker(State* states,
+                                                     const std::int32_t (&store)[kLanes],
+                                                     DiscardSlots discard, const BodyStateW& in)
+{
+    std::int32_t to[kLanes];
+    for (int l = 0; l < kLanes; ++l)
+    {
+        to[l] = store[l] == discard.packed ? discard.own : store[l];
+    }
+    Scatter(states, to, in);
+}
+
 /// Fills lane l's bodies from a prepared constraint: the solver indices to read, where to write
 /// (the body, or the discard slot where the lane must not move it), and the inverse masses
 /// (1/kg) and inertias (1/(kg·m²)). Group and constraint name these members alike.

@@ -1,0 +1,34 @@
+// How the engine hands work to the world's TaskSystem (task_system.h), if it has one.
+#pragma once
+
+#include "meff/task_system.h"
+
+namespace meff::detail
+{
+
+/// Runs f(begin, end, worker) over ranges covering [0, count) exactly once: on `tasks` when
+/// there is one and enough work for two ranges of `minRange`, otherwise at once on the calling
+/// thread as worker 0. f must only write what no other index of [0, count) writes, or memory of
+/// its own worker.
+template <typename F>
+void ForRanges(TaskSystem* tasks, int count, int minRange, F&& f)
+{
+    if (count <= 0)
+    {
+        return;
+    }
+    if (tasks == nullptr || count < 2 * minRange)
+    {
+        f(0, count, 0);
+        return;
+    }
+    tasks->ParallelFor(count, minRange, f);
+}
+
+/// Threads that may run the world's work at once (worker indices 0 to this − 1).
+inline int WorkerCount(const TaskSystem* tasks)
+{
+    return tasks == nullptr ? 1 : tasks->ThreadCount();
+}
+
+} // namespace meff::detail
