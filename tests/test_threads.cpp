@@ -174,28 +174,28 @@ TEST_CASE("The thread pool runs every index of a job exactly once, in ranges of 
                 {
                     std::vector<std::atomic<int>> visits(static_cast<std::size_t>(count));
                     std::atomic<int> shortRanges{0}, badWorkers{0}, badRanges{0};
-                    pool->ParallelFor(
-                        count, minRange,
-                        [&](int begin, int end, int worker)
-                        {
-                            if (begin < 0 || end > count || begin >= end)
-                            {
-                                badRanges.fetch_add(1);
-                                return;
-                            }
-                            if (end - begin < minRange)
-                            {
-                                shortRanges.fetch_add(1); // allowed once: the last range
-                            }
-                            if (worker < 0 || worker >= threads)
-                            {
-                                badWorkers.fetch_add(1);
-                            }
-                            for (int i = begin; i < end; ++i)
-                            {
-                                visits[static_cast<std::size_t>(i)].fetch_add(1);
-                            }
-                        });
+                    pool->ParallelFor(count, minRange,
+                                      [&](int begin, int end, int worker)
+                                      {
+                                          if (begin < 0 || end > count || begin >= end)
+                                          {
+                                              badRanges.fetch_add(1);
+                                              return;
+                                          }
+                                          if (end - begin < minRange)
+                                          {
+                                              shortRanges.fetch_add(
+                                                  1); // allowed once: the last range
+                                          }
+                                          if (worker < 0 || worker >= threads)
+                                          {
+                                              badWorkers.fetch_add(1);
+                                          }
+                                          for (int i = begin; i < end; ++i)
+                                          {
+                                              visits[static_cast<std::size_t>(i)].fetch_add(1);
+                                          }
+                                      });
                     INFO(threads << " threads, count " << count << ", minRange " << minRange);
                     REQUIRE(badRanges.load() == 0);
                     REQUIRE(badWorkers.load() == 0);

@@ -104,9 +104,9 @@ struct WorldState
 /// What a solver back end sees of the world (solvers/solver.h).
 inline SolverWorld SolverView(WorldState& world, SolvedContactSink& solvedContacts)
 {
-    return SolverWorld{world.bodies,     world.contacts,  world.joints,
-                       world.bodyList,   world.gravity,   world.allowSleep,
-                       world.stepCount,  solvedContacts,  world.tasks};
+    return SolverWorld{world.bodies,    world.contacts, world.joints,
+                       world.bodyList,  world.gravity,  world.allowSleep,
+                       world.stepCount, solvedContacts, world.tasks};
 }
 
 /// Wakes body `bodyIndex` (see WakeBody(Body&)): the helper for any world change — a joint

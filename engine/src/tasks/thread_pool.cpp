@@ -179,9 +179,9 @@ class ThreadPool final : public TaskSystem
             Job job;
             {
                 std::unique_lock lock(m_mutex);
-                m_wake.wait(lock, [&] {
-                    return m_stop || m_generation.load(std::memory_order_relaxed) != seen;
-                });
+                m_wake.wait(
+                    lock,
+                    [&] { return m_stop || m_generation.load(std::memory_order_relaxed) != seen; });
                 if (m_stop)
                 {
                     return;

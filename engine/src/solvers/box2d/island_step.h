@@ -69,7 +69,8 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
                  ContactStage& contacts, JointStage& joints);
 
 /// Copies the island's bodies into island.positions/velocities (a slot more per worker of
-/// world.tasks for the lanes' discard, SolverData::discardIndex) and adds gravity, forces and damping to the velocities.
+/// world.tasks for the lanes' discard, SolverData::discardIndex) and adds gravity, forces and
+/// damping to the velocities.
 void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step);
 /// Moves every body of the island by h·v (its motion clamped to Tolerances::maxTranslation
 /// and maxRotation per step).

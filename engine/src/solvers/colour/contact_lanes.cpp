@@ -212,8 +212,10 @@ void ContactLanes::SolveVelocities(SolverData& data)
 {
     for (int c = 0; c < GroupColourCount(); ++c)
     {
-        ForEachGroupOfColour(c, data, [&](std::int32_t i, DiscardSlots discard)
-                             { SolveVelocityGroup(m_velocityGroups[i], data.velocities, discard); });
+        ForEachGroupOfColour(c, data,
+                             [&](std::int32_t i, DiscardSlots discard) {
+                                 SolveVelocityGroup(m_velocityGroups[i], data.velocities, discard);
+                             });
     }
 }
 

@@ -369,7 +369,8 @@ void ContactLanes::WarmStart(SolverData& data)
 {
     for (int c = 0; c < GroupColourCount(); ++c)
     {
-        ForEachGroupOfColour(c, data, [&](std::int32_t i, DiscardSlots discard)
+        ForEachGroupOfColour(c, data,
+                             [&](std::int32_t i, DiscardSlots discard)
                              { WarmStartGroup(m_velocityGroups[i], data.velocities, discard); });
     }
 }
