@@ -62,8 +62,9 @@ struct ContactPositionGroup
     MaskW hasPoint[2];
 };
 
-/// The fewest groups a thread is handed at once: a group costs about as much as a thread's
-/// wake-up and its share of the job's bookkeeping when solved 64 at a time.
+/// The fewest groups a thread is handed at once: a range must pay for handing it out (a
+/// compare-and-swap, perhaps a thread's wake-up), so a colour of fewer than two ranges stays on
+/// the calling thread.
 inline constexpr int kMinGroupsPerTask = 64;
 
 class ContactLanes
