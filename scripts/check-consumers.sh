@@ -44,6 +44,10 @@ echo "== 3. pkg-config --cflags --libs meff =="
 flags=$(PKG_CONFIG_PATH="$WORK/prefix/lib/pkgconfig" pkg-config --cflags --libs meff)
 echo "$flags"
 case " $flags " in *" -ffp-contract=off "*) ;; *) echo "FAIL: no -ffp-contract=off" >&2; exit 1 ;; esac
+# An AVX2 build (MEFF_AVX2) needs its users compiled for AVX2 too, as meff::engine says.
+if grep -q '^MEFF_AVX2:BOOL=ON$' "$BUILD/CMakeCache.txt"; then
+    case " $flags " in *" -mavx2 "*) ;; *) echo "FAIL: an AVX2 build without -mavx2" >&2; exit 1 ;; esac
+fi
 # shellcheck disable=SC2086 # the flags are words
 ${CXX:-c++} -std=c++20 -O2 tests/consumers/game.cpp $flags -o "$WORK/pkg_config_game"
 "$WORK/pkg_config_game"

@@ -8,8 +8,9 @@
 namespace meff::detail
 {
 
-// Position and Velocity are aligned to four Reals (16 bytes in float builds), one SIMD vector:
-// the solvers that work by colour load and store a body's state whole (lane_bodies.h).
+// Position and Velocity are aligned to four Reals (16 bytes in float builds), one SSE vector: the
+// solvers that work by colour load and store a body's state whole (lane_bodies.h, also with
+// eight lanes, which gather two sets of four).
 
 /// Centre of mass and angle of a body during the step.
 struct alignas(4 * sizeof(Real)) Position

@@ -39,7 +39,7 @@ void ColourJointSolver::Prepare(std::span<const std::int32_t> jointIndices,
         Joint& joint = joints[j].joint;
         if (RevoluteJoint* revolute = LaneRevolute(joint, data.step.solver))
         {
-            // The lanes prepare the rest, four joints at a time.
+            // The lanes prepare the rest, kLanes joints at a time.
             const JointBody a = JointBodyOf(bodies[joint.bodyA]);
             const JointBody b = JointBodyOf(bodies[joint.bodyB]);
             StoreJointBodies(*revolute, a, b);

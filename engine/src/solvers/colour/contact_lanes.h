@@ -1,12 +1,12 @@
 // Contacts in SIMD lanes, colour by colour (SolverKind::Colour): the same rows, effective
 // masses, clamps, block solver and position pass as Box2D's ContactSolver (Box2D 2.4.1's
 // algorithm, with the same iteration counts), visited in another order: colour after colour,
-// each colour's contacts four at a time in SIMD lanes (wide_real.h). Contacts no colour could
-// take are left to the caller (ColourContactSolver solves them one by one after the lanes). A
-// colour's contacts share no moving body, so lanes never write the same body. What changes is the
-// Gauss-Seidel order, so results differ from Box2D's — by round-off in a single contact, by the
-// order's effect on convergence in a pile — and are validated by settled-state checks instead of
-// bit for bit.
+// each colour's contacts kLanes at a time (four; AVX2: eight) in SIMD lanes (wide_real.h). Contacts
+// no colour could take are left to the caller (ColourContactSolver solves them one by one after the
+// lanes). A colour's contacts share no moving body, so lanes never write the same body. What
+// changes is the Gauss-Seidel order, so results differ from Box2D's — by round-off in a single
+// contact, by the order's effect on convergence in a pile — and are validated by settled-state
+// checks instead of bit for bit.
 //
 // With the world's TaskSystem (SolverData::tasks) a colour's groups are spread over threads,
 // at least kMinGroupsPerTask to a range: they share no moving body, each writes only its own
@@ -28,7 +28,7 @@
 namespace meff::detail
 {
 
-/// Four contacts' velocity rows, one per lane. A lane with one point has a second point with
+/// kLanes contacts' velocity rows, one per lane. A lane with one point has a second point with
 /// zero masses, which the updates leave unchanged; an empty lane has zero masses throughout.
 struct ContactVelocityGroup
 {
@@ -49,7 +49,7 @@ struct ContactVelocityGroup
     bool anyBlock = false, anyScalar = false;
 };
 
-/// Four contacts' position constraints, one per lane.
+/// kLanes contacts' position constraints, one per lane.
 struct ContactPositionGroup
 {
     std::int32_t indexA[kLanes], indexB[kLanes];
@@ -70,7 +70,7 @@ inline constexpr int kMinGroupsPerTask = 64;
 class ContactLanes
 {
   public:
-    /// Colours the island's contacts and prepares the coloured ones four at a time, in lanes
+    /// Colours the island's contacts and prepares the coloured ones kLanes at a time, in lanes
     /// (contact_lanes_prepare.cpp): the same world manifold, lever arms, effective masses,
     /// restitution bias and block K as ContactSolver's scalar preparation, which the overflow
     /// gets instead. A coloured contact's rows live in the lanes; its `solved[k]` gets the

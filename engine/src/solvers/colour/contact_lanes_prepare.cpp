@@ -1,4 +1,4 @@
-// Contact preparation by colour: each colour's contacts, four at a time, go from the world's
+// Contact preparation by colour: each colour's contacts, kLanes at a time, go from the world's
 // contacts straight into SIMD lanes. The lanes do what ContactSolver's scalar preparation (and
 // Box2D 2.4.1's b2ContactSolver::InitializeVelocityConstraints) does for one contact, with the
 // same floating-point operations in the same order: the world manifold at the step's start
@@ -172,7 +172,7 @@ struct PreparedLanes
 };
 
 /// The velocity rows of one group from its gathered contacts (ContactSolver::Prepare's
-/// position-dependent part, four contacts at once).
+/// position-dependent part, kLanes contacts at once).
 PreparedLanes PrepareRows(ContactVelocityGroup& vg, const ContactPositionGroup& pg,
                           const LaneInputs& in, const SolverData& data)
 {

@@ -1,10 +1,10 @@
 // Graph colouring of an island's constraints (Box2D v3's constraint graph, built per island and
 // step): constraints of one colour share no body that the solver moves, so a colour's
-// constraints can be solved at the same time — four to a SIMD group, and on several threads (contact_lanes.h) —
-// without two of them writing the same body. Static and kinematic bodies (zero inverse mass and
-// inertia) are only read, so any number of a colour's constraints may touch one. Contacts
-// (contact_colouring.h) and joints (joint_solver.h) are coloured apart, because they are solved
-// in separate passes.
+// constraints can be solved at the same time — kLanes (four; AVX2: eight) to a SIMD group, and on
+// several threads (contact_lanes.h) — without two of them writing the same body. Static and
+// kinematic bodies (zero inverse mass and inertia) are only read, so any number of a colour's
+// constraints may touch one. Contacts (contact_colouring.h) and joints (joint_solver.h) are
+// coloured apart, because they are solved in separate passes.
 #pragma once
 
 #include "meff/math.h"

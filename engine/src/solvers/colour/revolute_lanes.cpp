@@ -32,7 +32,7 @@ void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t d
     joint.springImpulse = 0;
 }
 
-/// RevoluteJoint's InitVelocityConstraints for four joints: lever arms at the step's start,
+/// RevoluteJoint's InitVelocityConstraints for kLanes joints: lever arms at the step's start,
 /// the point rows' K = J·M⁻¹·Jᵀ and its inverse determinant (K is fixed over the velocity
 /// iterations, so it is inverted once here, not in every Mat22::Solve), then the warm start.
 void PrepareGroup(RevoluteJointGroup& g, const SolverData& data)

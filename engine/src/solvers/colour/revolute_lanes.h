@@ -1,9 +1,10 @@
 // Revolute joints in SIMD lanes, colour by colour (SolverKind::Colour): the joints whose only rows
 // are the point constraint (no limit, no motor — a hinge or a chain link, the bulk of a cloth or a
-// rope) are coloured (graph_colouring.h) and solved four at a time in SIMD lanes, with the same 2×2
-// block row, K and position step as RevoluteJoint's scalar code (revolute_joint.cpp) and Box2D
-// 2.4.1's b2RevoluteJoint. Only the Gauss-Seidel order changes: the joints of a colour share no
-// moving body, so solving them together equals solving them one after another.
+// rope) are coloured (graph_colouring.h) and solved kLanes (four; AVX2: eight) at a time in SIMD
+// lanes, with the same 2×2 block row, K and position step as RevoluteJoint's scalar code
+// (revolute_joint.cpp) and Box2D 2.4.1's b2RevoluteJoint. Only the Gauss-Seidel order changes: the
+// joints of a colour share no moving body, so solving them together equals solving them one after
+// another.
 #pragma once
 
 #include "dynamics/solver_types.h"
@@ -19,7 +20,7 @@ namespace meff::detail
 
 struct RevoluteJoint;
 
-/// Four revolute joints' point rows, one per lane; an empty lane has zero masses throughout.
+/// kLanes revolute joints' point rows, one per lane; an empty lane has zero masses throughout.
 struct RevoluteJointGroup
 {
     std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices (0 in empty lanes)
@@ -37,8 +38,8 @@ class RevoluteLanes
   public:
     /// Colours the joints (their bodies stored by StoreJointBodies and summarised in `bodies`,
     /// one per joint: the colouring then reads a compact array instead of the joints), packs
-    /// them four to a group and prepares the groups: lever arms, K and the warm start
-    /// (RevoluteJoint's InitVelocityConstraints, four at a time).
+    /// them kLanes to a group and prepares the groups: lever arms, K and the warm start
+    /// (RevoluteJoint's InitVelocityConstraints, kLanes at a time).
     void Prepare(std::span<RevoluteJoint* const> joints, std::span<const ConstraintBodies> bodies,
                  const SolverData& data);
     /// Positions in Prepare's `joints` of the joints no colour had room for, in their order:

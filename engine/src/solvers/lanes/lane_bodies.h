@@ -1,5 +1,5 @@
-// The lanes' view of their bodies: four bodies' velocities or positions gathered from the
-// island's arrays into SIMD lanes, updated there, and scattered back. Shared by the contact and
+// The lanes' view of their bodies: four (AVX2: eight) bodies' velocities or positions gathered from
+// the island's arrays into SIMD lanes, updated there, and scattered back. Shared by the contact and
 // joint solvers that work by colour (graph_colouring.h).
 #pragma once
 
@@ -14,7 +14,7 @@
 namespace meff::detail
 {
 
-/// One body state of four lanes: a velocity (v, w) or a position (c, a).
+/// One body state per lane: a velocity (v, w) or a position (c, a).
 struct BodyStateW
 {
     Vec2W linear;  ///< v (m/s) or c (m)
@@ -22,55 +22,104 @@ struct BodyStateW
 };
 
 /// The four Reals of a Position (c.x, c.y, a, padding) or Velocity (v.x, v.y, w, padding):
-/// solver_types.h aligns both to one RealW so that a body's state is one vector load.
+/// solver_types.h aligns both to one Real4 so that a body's state is one vector load.
 template <typename State>
-constexpr bool kStateIsOneVector = sizeof(State) == sizeof(RealW) &&
-                                   alignof(State) == sizeof(RealW);
+constexpr bool kStateIsOneVector = sizeof(State) == sizeof(Real4) &&
+                                   alignof(State) == sizeof(Real4);
 static_assert(kStateIsOneVector<Position> && kStateIsOneVector<Velocity>);
 static_assert(offsetof(Position, a) == 2 * sizeof(Real) &&
               offsetof(Velocity, w) == 2 * sizeof(Real));
 
-/// Reads the lanes' bodies from the island's positions or velocities: four vector loads and a
-/// 4×4 transpose (rows are bodies, columns become x, y and angle).
+/// Four bodies' states by component: x, y and angle, one lane per body.
+struct BodyState4
+{
+    Real4 x, y, a;
+};
+
+/// Reads four bodies: four vector loads and a 4×4 transpose (rows are bodies, columns become x,
+/// y and angle).
+template <typename State>
+[[gnu::always_inline]] inline BodyState4 Gather4(const State* states, const std::int32_t* index)
+{
+    Real4 r0, r1, r2, r3;
+    std::memcpy(&r0, &states[index[0]], sizeof(Real4));
+    std::memcpy(&r1, &states[index[1]], sizeof(Real4));
+    std::memcpy(&r2, &states[index[2]], sizeof(Real4));
+    std::memcpy(&r3, &states[index[3]], sizeof(Real4));
+    const Real4 xy01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+    const Real4 xy23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    const Real4 a01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+    const Real4 a23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    return {__builtin_shufflevector(xy01, xy23, 0, 1, 4, 5),
+            __builtin_shufflevector(xy01, xy23, 2, 3, 6, 7),
+            __builtin_shufflevector(a01, a23, 0, 1, 4, 5)};
+}
+
+/// Writes four bodies: the transpose of Gather4 and four vector stores.
+template <typename State>
+[[gnu::always_inline]] inline void Scatter4(State* states, const std::int32_t* store,
+                                            const BodyState4& in)
+{
+    const Real4 zero{};
+    const Real4 xy01 = __builtin_shufflevector(in.x, in.y, 0, 4, 1, 5);
+    const Real4 xy23 = __builtin_shufflevector(in.x, in.y, 2, 6, 3, 7);
+    const Real4 a01 = __builtin_shufflevector(in.a, zero, 0, 4, 1, 5);
+    const Real4 a23 = __builtin_shufflevector(in.a, zero, 2, 6, 3, 7);
+    const Real4 r0 = __builtin_shufflevector(xy01, a01, 0, 1, 4, 5);
+    const Real4 r1 = __builtin_shufflevector(xy01, a01, 2, 3, 6, 7);
+    const Real4 r2 = __builtin_shufflevector(xy23, a23, 0, 1, 4, 5);
+    const Real4 r3 = __builtin_shufflevector(xy23, a23, 2, 3, 6, 7);
+    std::memcpy(static_cast<void*>(&states[store[0]]), &r0, sizeof(Real4));
+    std::memcpy(static_cast<void*>(&states[store[1]]), &r1, sizeof(Real4));
+    std::memcpy(static_cast<void*>(&states[store[2]]), &r2, sizeof(Real4));
+    std::memcpy(static_cast<void*>(&states[store[3]]), &r3, sizeof(Real4));
+}
+
+#if MEFF_SIMD_LANES == 8
+/// Lanes 0–3 from `low`, 4–7 from `high`.
+[[gnu::always_inline]] inline RealW Join(Real4 low, Real4 high)
+{
+    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+[[gnu::always_inline]] inline Real4 LowHalf(RealW v)
+{
+    return __builtin_shufflevector(v, v, 0, 1, 2, 3);
+}
+[[gnu::always_inline]] inline Real4 HighHalf(RealW v)
+{
+    return __builtin_shufflevector(v, v, 4, 5, 6, 7);
+}
+#endif
+
+/// Reads the lanes' bodies from the island's positions or velocities, four at a time (Gather4).
 template <typename State>
 [[gnu::always_inline]] inline BodyStateW Gather(const State* states,
                                                 const std::int32_t (&index)[kLanes])
 {
-    static_assert(kLanes == 4, "the transpose is written for four lanes");
-    RealW r0, r1, r2, r3;
-    std::memcpy(&r0, &states[index[0]], sizeof(RealW));
-    std::memcpy(&r1, &states[index[1]], sizeof(RealW));
-    std::memcpy(&r2, &states[index[2]], sizeof(RealW));
-    std::memcpy(&r3, &states[index[3]], sizeof(RealW));
-    const RealW xy01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
-    const RealW xy23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
-    const RealW a01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
-    const RealW a23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
-    return {{__builtin_shufflevector(xy01, xy23, 0, 1, 4, 5),
-             __builtin_shufflevector(xy01, xy23, 2, 3, 6, 7)},
-            __builtin_shufflevector(a01, a23, 0, 1, 4, 5)};
+#if MEFF_SIMD_LANES == 8
+    const BodyState4 low = Gather4(states, index);
+    const BodyState4 high = Gather4(states, index + 4);
+    return {{Join(low.x, high.x), Join(low.y, high.y)}, Join(low.a, high.a)};
+#else
+    const BodyState4 all = Gather4(states, index);
+    return {{all.x, all.y}, all.a};
+#endif
 }
 
-/// Writes the lanes' bodies back: the transpose of Gather and four vector stores. `store[l]`
-/// is the lane's body, or SolverData::discardIndex where the lane must not change its body (a
-/// static or kinematic body, which lanes of one colour may share, or an empty lane).
+/// Writes the lanes' bodies back, four at a time (Scatter4). `store[l]` is the lane's body, or
+/// SolverData::discardIndex where the lane must not change its body (a static or kinematic
+/// body, which lanes of one colour may share, or an empty lane).
 template <typename State>
 [[gnu::always_inline]] inline void Scatter(State* states, const std::int32_t (&store)[kLanes],
                                            const BodyStateW& in)
 {
-    const RealW zero{};
-    const RealW xy01 = __builtin_shufflevector(in.linear.x, in.linear.y, 0, 4, 1, 5);
-    const RealW xy23 = __builtin_shufflevector(in.linear.x, in.linear.y, 2, 6, 3, 7);
-    const RealW a01 = __builtin_shufflevector(in.angular, zero, 0, 4, 1, 5);
-    const RealW a23 = __builtin_shufflevector(in.angular, zero, 2, 6, 3, 7);
-    const RealW r0 = __builtin_shufflevector(xy01, a01, 0, 1, 4, 5);
-    const RealW r1 = __builtin_shufflevector(xy01, a01, 2, 3, 6, 7);
-    const RealW r2 = __builtin_shufflevector(xy23, a23, 0, 1, 4, 5);
-    const RealW r3 = __builtin_shufflevector(xy23, a23, 2, 3, 6, 7);
-    std::memcpy(static_cast<void*>(&states[store[0]]), &r0, sizeof(RealW));
-    std::memcpy(static_cast<void*>(&states[store[1]]), &r1, sizeof(RealW));
-    std::memcpy(static_cast<void*>(&states[store[2]]), &r2, sizeof(RealW));
-    std::memcpy(static_cast<void*>(&states[store[3]]), &r3, sizeof(RealW));
+#if MEFF_SIMD_LANES == 8
+    Scatter4(states, store, {LowHalf(in.linear.x), LowHalf(in.linear.y), LowHalf(in.angular)});
+    Scatter4(states, store + 4,
+             {HighHalf(in.linear.x), HighHalf(in.linear.y), HighHalf(in.angular)});
+#else
+    Scatter4(states, store, {in.linear.x, in.linear.y, in.angular});
+#endif
 }
 
 /// The discard slots of a thread solving groups (SolverData::discardIndex): the one the groups
@@ -113,7 +162,7 @@ void PackLaneBodies(Group& g, int l, const Constraint& c, std::int32_t discardIn
     g.invIB[l] = c.invIB;
 }
 
-/// The two bodies' inverse masses (1/kg) and inverse inertias (1/(kg·m²)) of four lanes.
+/// The two bodies' inverse masses (1/kg) and inverse inertias (1/(kg·m²)) per lane.
 struct LaneMasses
 {
     RealW invMassA, invIA, invMassB, invIB;

@@ -1,6 +1,7 @@
-// Four Reals side by side, so that four independent constraints are solved by one instruction
-// stream (SIMD). Written with GCC's vector extensions (also understood by Clang): SSE2 on
-// x86-64, NEON on ARM, scalar code elsewhere — no intrinsics, no extra dependency. Every lane
+// Four Reals side by side (eight in an AVX2 build, MEFF_AVX2), so that four (eight) independent
+// constraints are solved by one instruction stream (SIMD). Written with GCC's vector extensions
+// (also understood by Clang): SSE2 on x86-64, NEON on ARM, scalar code elsewhere; AVX2 when the
+// build asks for it — no intrinsics, no extra dependency. Every lane
 // does exactly the operations the scalar solver does, in the same order; only which
 // constraints run together changes (see graph_colouring.h).
 #pragma once
@@ -14,9 +15,24 @@
 namespace meff::detail
 {
 
-inline constexpr int kLanes = 4;
+// The lane count is fixed per build: MEFF_SIMD_LANES=8 comes with -mavx2 (engine/CMakeLists.txt,
+// option MEFF_AVX2), and 4 is the default. The colouring does not depend on it, and lanes never
+// share a body the solver moves, so both builds solve each constraint with the same operations
+// (see README, "Build options", for where they can still differ).
+#ifndef MEFF_SIMD_LANES
+#define MEFF_SIMD_LANES 4
+#endif
+#if MEFF_SIMD_LANES != 4 && MEFF_SIMD_LANES != 8
+#error "MEFF_SIMD_LANES must be 4 or 8"
+#endif
+#if MEFF_SIMD_LANES == 8 && (defined(__x86_64__) || defined(__i386__)) && !defined(__AVX2__)
+#error "eight lanes need AVX2: build with -DMEFF_AVX2=ON (it adds -mavx2)"
+#endif
+inline constexpr int kLanes = MEFF_SIMD_LANES;
 
 using RealW = Real __attribute__((vector_size(kLanes * sizeof(Real))));
+/// Four Reals: one body's state (solver_types.h) and half of an eight-lane vector.
+using Real4 = Real __attribute__((vector_size(4 * sizeof(Real))));
 /// A lane mask: all bits set in the lanes where a comparison holds.
 using MaskW = decltype(RealW{} < RealW{});
 
@@ -36,19 +52,40 @@ inline RealW MaxW(RealW a, RealW b)
 {
     return a > b ? a : b;
 }
-// Lane reductions by two shuffles (a butterfly), not a loop over the lanes: the loop went
-// through memory and cost more than the arithmetic it guarded.
-static_assert(kLanes == 4, "the reductions are written for four lanes");
+// Lane reductions by shuffles (a butterfly), not a loop over the lanes: the loop went through
+// memory and cost more than the arithmetic it guarded. Eight lanes first fold their upper half
+// onto the lower one, then reduce four as the default build does.
+using Mask4 = decltype(Real4{} < Real4{});
+
+inline Mask4 OrHalves(MaskW m)
+{
+#if MEFF_SIMD_LANES == 8
+    return __builtin_shufflevector(m, m, 0, 1, 2, 3) | __builtin_shufflevector(m, m, 4, 5, 6, 7);
+#else
+    return m;
+#endif
+}
+
+inline Mask4 AndHalves(MaskW m)
+{
+#if MEFF_SIMD_LANES == 8
+    return __builtin_shufflevector(m, m, 0, 1, 2, 3) & __builtin_shufflevector(m, m, 4, 5, 6, 7);
+#else
+    return m;
+#endif
+}
 
 inline bool AnyLane(MaskW m)
 {
-    const MaskW pairs = m | __builtin_shufflevector(m, m, 2, 3, 0, 1);
+    const Mask4 quad = OrHalves(m);
+    const Mask4 pairs = quad | __builtin_shufflevector(quad, quad, 2, 3, 0, 1);
     return (pairs | __builtin_shufflevector(pairs, pairs, 1, 0, 3, 2))[0] != 0;
 }
 
 inline bool AllLanes(MaskW m)
 {
-    const MaskW pairs = m & __builtin_shufflevector(m, m, 2, 3, 0, 1);
+    const Mask4 quad = AndHalves(m);
+    const Mask4 pairs = quad & __builtin_shufflevector(quad, quad, 2, 3, 0, 1);
     return (pairs & __builtin_shufflevector(pairs, pairs, 1, 0, 3, 2))[0] != 0;
 }
 
@@ -103,7 +140,7 @@ inline Vec2W NormalizeW(Vec2W v)
     return Select(normalizable, invLength * v, v);
 }
 
-/// Four rotations: sine and cosine of each lane's angle.
+/// A rotation per lane: sine and cosine of each lane's angle.
 struct RotW
 {
     RealW s, c;
@@ -127,7 +164,7 @@ inline Vec2W Mul(RotW q, Vec2W v)
     return q;
 }
 
-/// Sine and cosine of four angles at once, each within about an ulp of std::sin/std::cos.
+/// Sine and cosine of every lane's angle at once, each within about an ulp of std::sin/std::cos.
 /// The angle is reduced by the nearest multiple k of π/2, r = a − k·π/2 with |r| ≤ π/4, π/2 split
 /// into three floats (Cody and Waite) whose leading two have so few bits that k·C1 and k·C2 are
 /// exact for |k| < 4096; sin r ≈ r + r³·P(r²) and cos r ≈ 1 − r²/2 + r⁴·Q(r²), P and Q of degree
