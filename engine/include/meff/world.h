@@ -9,6 +9,7 @@
 #include "meff/ids.h"
 #include "meff/joint.h"
 #include "meff/math.h"
+#include "meff/mover.h"
 #include "meff/shape.h"
 #include "meff/task_system.h"
 
@@ -649,6 +650,17 @@ class World
     /// A capsule (Box2D v3's; the character mover's shape, meff/mover.h).
     void CastShape(const Capsule& shape, const Transform& start, Vec2 translation,
                    QueryFilter filter, CastCallback callback) const;
+    /// Every shape whose box overlaps the mover's (a capsule in world coordinates) as a plane
+    /// (meff/mover.h): the surfaces' separation and the normal from the shape to the mover,
+    /// by GJK between the cores. A shape the mover's core reaches into has no normal and is
+    /// not reported. `callback` returns false to stop.
+    void CollideMover(const Capsule& mover, QueryFilter filter,
+                      FunctionRef<bool(ShapeId shape, const CollisionPlane& plane)> callback) const;
+    /// How far along `translation` (a fraction in [0, 1]) the mover (a capsule in world
+    /// coordinates) can go before it hits a shape it moves into. A shape it starts touching
+    /// or slides along (the hit normal not against the motion) does not stop it, so a mover
+    /// resting on the ground can walk.
+    Real CastMover(const Capsule& mover, Vec2 translation, QueryFilter filter = {}) const;
     /// The closest hit of CastShape.
     RayResult CastShapeClosest(const Capsule& shape, const Transform& start, Vec2 translation,
                                QueryFilter filter = {}) const;

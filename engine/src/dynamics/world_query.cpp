@@ -155,12 +155,12 @@ void RequireValidCastShape(const Polygon& polygon)
     }
 }
 
-void RequireValidCastShape(const Capsule& capsule, const Tolerances& tolerances)
+void RequireValidCastShape(const Capsule& capsule, const Tolerances& tolerances,
+                           const char* what = "World::CastShape: shape")
 {
     if (const std::optional<Refusal> refusal = CheckCapsule(capsule, tolerances.linearSlop))
     {
-        throw InvalidArgument("World::CastShape: shape: " + refusal->field + ": " +
-                              refusal->reason);
+        throw InvalidArgument(std::string(what) + ": " + refusal->field + ": " + refusal->reason);
     }
 }
 
@@ -310,6 +310,60 @@ void World::CastShape(const Capsule& shape, const Transform& start, Vec2 transla
     RequireFinite(translation, "World::CastShape: translation");
     CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
               callback);
+}
+
+void World::CollideMover(
+    const Capsule& mover, QueryFilter filter,
+    FunctionRef<bool(ShapeId shape, const CollisionPlane& plane)> callback) const
+{
+    RequireValidCastShape(mover, State().tolerances, "World::CollideMover: mover");
+    const WorldState& world = State();
+    const DistanceProxy moverProxy = MakeProxy(mover);
+    const Transform identity{}; // the mover is in world coordinates
+    world.broadPhase.Query(
+        ComputeAABB(mover, identity), {filter.categoryBits, filter.maskBits},
+        [&](std::int32_t proxyId)
+        {
+            const std::int32_t index = world.broadPhase.GetUserData(proxyId);
+            const Shape& shape = world.shapes[index];
+            // The cores' closest points: the normal runs between them and the surfaces lie
+            // each core's radius out along it.
+            DistanceInput input;
+            input.proxyA = MakeProxy(shape);
+            input.proxyB = moverProxy;
+            input.transformA = world.bodies[shape.body].xf;
+            input.transformB = identity;
+            SimplexCache cache;
+            const DistanceOutput output = ShapeDistance(input, cache);
+            if (output.distance <= 10 * kEpsilon)
+            {
+                return true; // the mover's core is inside the shape: no normal to push along
+            }
+            CollisionPlane plane;
+            plane.normal = (Real(1) / output.distance) * (output.pointB - output.pointA);
+            plane.separation = output.distance - input.proxyA.radius - moverProxy.radius;
+            return callback(IdOf(world, index), plane);
+        });
+}
+
+Real World::CastMover(const Capsule& mover, Vec2 translation, QueryFilter filter) const
+{
+    RequireValidCastShape(mover, State().tolerances, "World::CastMover: mover");
+    RequireFinite(translation, "World::CastMover: translation");
+    Real fraction = 1;
+    const Transform identity{}; // the mover is in world coordinates
+    CastShape(mover, identity, translation, filter,
+              [&](ShapeId, Vec2, Vec2 normal, Real hit) -> Real
+              {
+                  // A shape touched at the start or slid along is not in the way.
+                  if (Dot(normal, translation) >= 0)
+                  {
+                      return Real(-1);
+                  }
+                  fraction = Min(fraction, hit);
+                  return hit;
+              });
+    return fraction;
 }
 
 RayResult World::CastShapeClosest(const Capsule& shape, const Transform& start, Vec2 translation,
