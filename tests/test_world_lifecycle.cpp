@@ -8,8 +8,8 @@
 #include "meff/world.h"
 
 #include <atomic>
-#include <memory>
 #include <cstdlib>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>

@@ -68,12 +68,12 @@ enum class SolverKind
     /// Box2D, visited colour by colour (Box2D v3's graph colouring): an island's contacts, and
     /// apart from them its revolute joints without limit, motor or spring (with blockJoints on),
     /// are sorted into colours that share no moving body, and each colour is solved four
-    /// constraints at a time in SIMD lanes (eight in a MEFF_AVX2 build). Another Gauss-Seidel order, so results agree with
-    /// Box2D 2.4.1 only up to that order's effect (settled-state checks), not bit for bit.
-    /// Other joints keep the island order after the lanes. Without sleep (WorldDef::allowSleep
-    /// off) and with every moving body awake, the whole world is solved as one island,
-    /// gathered from the arrays instead of searched: the position pass then stops when the
-    /// whole world is within tolerance, not island by island. A moving body kept asleep
+    /// constraints at a time in SIMD lanes (eight in a MEFF_AVX2 build). Another Gauss-Seidel
+    /// order, so results agree with Box2D 2.4.1 only up to that order's effect (settled-state
+    /// checks), not bit for bit. Other joints keep the island order after the lanes. Without sleep
+    /// (WorldDef::allowSleep off) and with every moving body awake, the whole world is solved as
+    /// one island, gathered from the arrays instead of searched: the position pass then stops when
+    /// the whole world is within tolerance, not island by island. A moving body kept asleep
     /// (BodyDef::awake false, SetAwake(false)) brings back the island search.
     Colour,
     /// Sub-stepped soft constraints (SoftStepSettings): each step is cut into `substeps`
