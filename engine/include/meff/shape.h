@@ -31,8 +31,9 @@ struct ShapeDef
     Real tangentSpeed = 0;
     /// Rolling resistance c (dimensionless, ≥ 0; Box2D v3's rollingResistance): a contact
     /// resists the two bodies' relative spin with a torque of at most c·r·N, N its normal
-    /// force and r the larger rolling radius of the two shapes (a circle's radius; 0 for
-    /// polygons and segments, which do not roll). A disc rolling on flat ground then slows at
+    /// force and r the larger rolling radius of the two shapes (a circle's or a capsule's
+    /// radius, a rounded polygon's rounding; 0 for sharp polygons and segments, which do not
+    /// roll). A disc rolling on flat ground then slows at
     /// (2/3)·c·g and stops. Mixed as max(cA, cB). Box2D 2.4.1 has none (meff validate refuses it).
     Real rollingResistance = 0;
     Filter filter{};

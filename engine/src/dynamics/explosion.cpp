@@ -80,7 +80,8 @@ void World::Explode(const ExplosionDef& def)
     {
         if (!shape.alive || shape.def.isSensor ||
             (shape.def.filter.categoryBits & def.maskBits) == 0 ||
-            (shape.type != ShapeType::Circle && shape.type != ShapeType::Polygon))
+            (shape.type != ShapeType::Circle && shape.type != ShapeType::Polygon &&
+             shape.type != ShapeType::Capsule))
         {
             continue;
         }

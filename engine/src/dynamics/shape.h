@@ -49,8 +49,23 @@ struct Shape
         }
         return 0;
     }
-    /// The radius the shape rolls on (rolling resistance): a circle's; the others do not roll.
-    Real RollingRadius() const { return type == ShapeType::Circle ? circle.radius : Real(0); }
+    /// The radius the shape rolls on (rolling resistance, as Box2D v3's shape radius): a
+    /// circle's or a capsule's, a rounded polygon's rounding; sharp polygons and segments do
+    /// not roll (their skin is a contact tolerance, not a rounding).
+    Real RollingRadius() const
+    {
+        switch (type)
+        {
+        case ShapeType::Circle:
+            return circle.radius;
+        case ShapeType::Capsule:
+            return capsule.radius;
+        case ShapeType::Polygon:
+            return rounded ? polygon.radius : Real(0);
+        default:
+            return 0;
+        }
+    }
     AABB ComputeAABB(const Transform& xf) const
     {
         switch (type)
