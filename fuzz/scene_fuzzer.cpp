@@ -67,7 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const int steps = scene.world.frames < kMaxSteps ? scene.world.frames : kMaxSteps;
         for (int i = 0; i < steps; ++i)
         {
-            built.world.Step(meff::Real(scene.world.dt));
+            built.Step(meff::Real(scene.world.dt));
         }
     }
     catch (const meff::SceneError& error)

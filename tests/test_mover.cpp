@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -109,22 +110,12 @@ Capsule CharacterAt(Vec2 position)
     return {position, position + Vec2(0, 1), kRadius};
 }
 
-/// One move as meff/mover.h lays it out; returns the planes it met.
-std::vector<CollisionPlane> Move(const World& world, Vec2& position, Vec2& velocity)
+/// One move of the character whose lower cap's centre is at `position`.
+void Move(const World& world, Vec2& position, Vec2& velocity)
 {
-    const Vec2 target = position + kDt * velocity;
-    std::vector<CollisionPlane> planes;
-    world.CollideMover(CharacterAt(target), {},
-                       [&](ShapeId, const CollisionPlane& plane)
-                       {
-                           planes.push_back(plane);
-                           return true;
-                       });
-    const Vec2 goal = target + SolvePlanes({0, 0}, planes).translation;
-    const Real fraction = world.CastMover(CharacterAt(position), goal - position);
-    position += fraction * (goal - position);
-    velocity = ClipVector(velocity, planes);
-    return planes;
+    const CharacterMove move = world.MoveCharacter(CharacterAt(position), velocity, kDt);
+    position += move.translation;
+    velocity = move.velocity;
 }
 
 /// The smallest separation of the character at `position` from any shape (m).
@@ -202,6 +193,53 @@ TEST_CASE("A capsule character walks up a 20° ramp on its surface", "[mover][wo
     CHECK(height == Approx(kRadius + skin).margin(3e-3));
 }
 
+TEST_CASE("MoveCharacter is the move meff/mover.h lays out, bit for bit", "[mover][world]")
+{
+    // A corner: a floor and a wall, the character pressed into both and walking into them.
+    World world(WorldDef{});
+    const BodyId ground = world.CreateBody({});
+    world.CreateShape(ground, {}, Segment{{-10, 0}, {10, 0}});
+    world.CreateShape(ground, {}, Segment{{1, 0}, {1, 5}});
+    const Vec2 position{Real(0.65), Real(0.28)};
+    const Vec2 velocity{3, -2};
+
+    const Vec2 target = position + kDt * velocity;
+    std::vector<CollisionPlane> planes;
+    world.CollideMover(CharacterAt(target), {},
+                       [&](ShapeId, const CollisionPlane& plane)
+                       {
+                           planes.push_back(plane);
+                           return true;
+                       });
+    // From the start: the move along v, then the planes' fix (collided at the target).
+    const Vec2 goal = kDt * velocity + SolvePlanes({0, 0}, planes).translation;
+    const Vec2 translation = world.CastMover(CharacterAt(position), goal) * goal;
+
+    const CharacterMove move = world.MoveCharacter(CharacterAt(position), velocity, kDt);
+    CHECK(move.planeCount == 2);
+    CHECK(move.translation == translation);
+    CHECK(move.velocity == ClipVector(velocity, planes));
+    // Pushed out of both: up off the floor and left off the wall.
+    CHECK(move.translation.x < kDt * velocity.x);
+    CHECK(move.translation.y > kDt * velocity.y);
+}
+
+TEST_CASE("MoveCharacter gathers at most kMaxMoverPlanes planes", "[mover][world]")
+{
+    // 40 pebbles under the character: it stands on the first 16 the broad phase gives and
+    // still moves (no overflow, no allocation of its own).
+    World world(WorldDef{});
+    const BodyId ground = world.CreateBody({});
+    for (int i = 0; i < 40; ++i)
+    {
+        world.CreateShape(ground, {}, Circle{{Real(-0.2) + Real(0.01) * Real(i), 0}, Real(0.05)});
+    }
+    const CharacterMove move = world.MoveCharacter(CharacterAt({0, Real(0.3)}), {0, -1}, kDt);
+    CHECK(move.planeCount == kMaxMoverPlanes);
+    CHECK(move.translation.IsValid());
+    CHECK(move.velocity.y > -1); // the pebbles it stands on took part of the fall
+}
+
 TEST_CASE("CastMover: a wall ahead stops the move, the floor it stands on does not",
           "[mover][world]")
 {
@@ -251,4 +289,20 @@ TEST_CASE("The mover queries refuse a bad capsule and translation", "[mover][err
                        world.CastMover(CharacterAt({0, 0}), {kMaxReal * 2, 0});
                    }),
                Catch::StartsWith("World::CastMover: translation"));
+    CHECK_THAT(message(
+                   [&] {
+                       world.MoveCharacter(CharacterAt({0, 0}), {1, 0}, 0);
+                   }),
+               Catch::StartsWith("World::MoveCharacter: dt must be finite and > 0, got 0"));
+    CHECK_THAT(message(
+                   [&] {
+                       world.MoveCharacter(CharacterAt({0, 0}),
+                                           {std::numeric_limits<Real>::quiet_NaN(), 0}, kDt);
+                   }),
+               Catch::StartsWith("World::MoveCharacter: velocity: must be finite"));
+    CHECK_THAT(message(
+                   [&] {
+                       world.MoveCharacter(flat, {1, 0}, kDt);
+                   }),
+               Catch::StartsWith("World::MoveCharacter: mover: Capsule::radius"));
 }

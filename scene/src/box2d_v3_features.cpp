@@ -40,6 +40,12 @@ std::vector<std::string> FieldsBox2D241Lacks(const Scene& scene, const std::stri
                                consequence);
         }
     }
+    for (std::size_t c = 0; c < scene.characters.size(); ++c)
+    {
+        messages.push_back(scene.sourcePath + ": characters[" + std::to_string(c) +
+                           "]: a character moved by the character mover (Box2D v3's), which " +
+                           "Box2D 2.4.1 does not have; " + consequence);
+    }
     return messages;
 }
 

@@ -247,6 +247,30 @@ JointId CreateJoint(BuiltScene& built, const SceneJoint& joint)
     throw InvalidArgument("unknown joint type");
 }
 
+BuiltCharacter MakeCharacter(const BuiltScene& built, const Scene& scene,
+                             const SceneCharacter& character)
+{
+    // The loader checks these (CheckCharacterBody); a scene built by hand may not have been.
+    const std::size_t index = character.bodyIndex;
+    if (index >= scene.bodies.size() || scene.bodies[index].shapes.size() != 1 ||
+        scene.bodies[index].shapes[0].type != SceneShapeType::Capsule ||
+        scene.bodies[index].type != BodyType::Kinematic)
+    {
+        throw SceneError({scene.sourcePath + ": characters: body index " + std::to_string(index) +
+                          ": must be a kinematic body with one capsule"});
+    }
+    const SceneBody& body = scene.bodies[index];
+    const SceneShape& capsule = body.shapes[0];
+    BuiltCharacter made;
+    made.body = built.bodies[character.bodyIndex];
+    made.capsule = {ToEngine(capsule.centerA), ToEngine(capsule.centerB), Real(capsule.radius)};
+    made.filter = {capsule.filter.category, capsule.filter.mask};
+    made.gravityScale = Real(body.gravityScale);
+    made.inputs = character.inputs;
+    made.velocity = ToEngine(body.linearVelocity);
+    return made;
+}
+
 } // namespace
 
 BuiltScene BuildWorld(const Scene& scene)
@@ -300,6 +324,10 @@ BuiltScene BuildWorld(const Scene& scene)
         {
             Refused(scene, "joints[" + std::to_string(j) + "]", error);
         }
+    }
+    for (const SceneCharacter& character : scene.characters)
+    {
+        built.characters.push_back(MakeCharacter(built, scene, character));
     }
     return built;
 }

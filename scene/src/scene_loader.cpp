@@ -1216,6 +1216,88 @@ void ReadObjectArray(ObjectReader& parent, std::string_view key, bool required, 
     }
 }
 
+void ReadCharacterInput(ObjectReader& reader, double previousTime, SceneCharacterInput& input)
+{
+    if (const std::optional<double> time = ReadNonNegative(reader, "time", std::nullopt))
+    {
+        input.time = *time;
+        if (*time < previousTime)
+        {
+            reader.Fail("time", "must not be before the previous input's (" +
+                                    scene_detail::FormatNumber(previousTime) + " s)");
+        }
+    }
+    const bool walks = reader.Find("walk") != nullptr;
+    const bool jumps = reader.Find("jump") != nullptr;
+    if (walks)
+    {
+        input.walk = reader.Number("walk", std::nullopt);
+    }
+    if (jumps)
+    {
+        input.jump = reader.Number("jump", std::nullopt);
+    }
+    if (!walks && !jumps)
+    {
+        reader.Fail("walk", "is required unless \"jump\" is given (an input must do something)");
+    }
+    reader.Finish();
+}
+
+/// The body a character moves must be what World::MoveCharacter can move: kinematic, one
+/// capsule, and a filter that does not find its own capsule.
+void CheckCharacterBody(ObjectReader& reader, const SceneBody& body)
+{
+    if (body.type != BodyType::Kinematic)
+    {
+        reader.Fail("body", "must name a kinematic body (the character mover moves it)");
+    }
+    else if (body.shapes.size() != 1 || body.shapes[0].type != SceneShapeType::Capsule)
+    {
+        reader.Fail("body", "must name a body with exactly one shape, a capsule (the mover)");
+    }
+    else if ((body.shapes[0].filter.category & body.shapes[0].filter.mask) != 0)
+    {
+        reader.Fail("body", "must name a body whose capsule's filter.category is not in its own "
+                            "filter.mask (category " +
+                                std::to_string(body.shapes[0].filter.category) + ", mask " +
+                                std::to_string(body.shapes[0].filter.mask) +
+                                "): the mover would find its own capsule");
+    }
+}
+
+void ReadCharacter(ObjectReader& reader, const Scene& scene,
+                   const std::map<std::string, std::size_t>& bodyIndexByName,
+                   SceneCharacter& character)
+{
+    if (reader.Find("name") != nullptr)
+    {
+        Assign(character.name, ReadName(reader));
+    }
+    if (const std::optional<std::size_t> body =
+            ReadBodyReference(reader, "body", bodyIndexByName, character.body))
+    {
+        character.bodyIndex = *body;
+        CheckCharacterBody(reader, scene.bodies[*body]);
+        for (const SceneCharacter& other : scene.characters)
+        {
+            if (&other != &character && other.body == character.body)
+            {
+                reader.Fail("body", "is already moved by another character");
+                break;
+            }
+        }
+    }
+    ReadObjectArray(reader, "inputs", false,
+                    [&](ObjectReader& entry, std::size_t)
+                    {
+                        const double previous =
+                            character.inputs.empty() ? 0.0 : character.inputs.back().time;
+                        ReadCharacterInput(entry, previous, character.inputs.emplace_back());
+                    });
+    reader.Finish();
+}
+
 /// Reports names used twice; returns the index of the first holder of each name (names[i] and
 /// paths[i] belong to scene.bodies[i] or scene.joints[i]).
 std::map<std::string, std::size_t> IndexNames(Diagnostics& diagnostics,
@@ -1305,6 +1387,11 @@ Scene ReadScene(const Json& document, const std::string& sourcePath, Diagnostics
                     });
     const std::map<std::string, std::size_t> jointIndexByName =
         IndexNames(diagnostics, jointNames, jointPaths);
+
+    ReadObjectArray(
+        top, "characters", false,
+        [&](ObjectReader& reader, std::size_t)
+        { ReadCharacter(reader, scene, bodyIndexByName, scene.characters.emplace_back()); });
 
     ReadSection(top, "validate",
                 [&](ObjectReader& validate)

@@ -157,20 +157,21 @@ void Accumulate(StepProfile& a, const StepProfile& b, double scale)
     a.continuous += scale * b.continuous;
 }
 
-/// Steps a meff world through one run; with the steps after the first, its profile's mean.
-EngineRun RunMeff(World& world, int steps, Real dt)
+/// Steps a meff scene through one run; with the steps after the first, its profile's mean.
+EngineRun RunMeff(BuiltScene& built, int steps, Real dt)
 {
     StepProfile profile{};
     int step = 0;
-    EngineRun run = TimeSteps(steps,
-                              [&]
-                              {
-                                  world.Step(dt);
-                                  if (step++ > 0)
-                                  {
-                                      Accumulate(profile, world.GetProfile(), 1.0 / (steps - 1));
-                                  }
-                              });
+    EngineRun run =
+        TimeSteps(steps,
+                  [&]
+                  {
+                      built.Step(dt);
+                      if (step++ > 0)
+                      {
+                          Accumulate(profile, built.world.GetProfile(), 1.0 / (steps - 1));
+                      }
+                  });
     run.profile = profile;
     return run;
 }
@@ -195,7 +196,7 @@ void TimePaired(const Scene& scene, const Against& against, BuiltScene& built, i
                 SceneBench& bench)
 {
     const Real dt = static_cast<Real>(scene.world.dt);
-    const auto runMeff = [&] { return RunMeff(built.world, bench.steps, dt); };
+    const auto runMeff = [&] { return RunMeff(built, bench.steps, dt); };
     std::function<EngineRun()> runPeer;
     std::function<std::pair<double, double>(std::size_t)> peerPosition;
     std::optional<validation::Box2DMirror> mirror;
@@ -219,7 +220,7 @@ void TimePaired(const Scene& scene, const Against& against, BuiltScene& built, i
         Scene peerScene = scene;
         peerScene.world.solver.kind = against.solver;
         peer.emplace(BuildWorld(peerScene));
-        runPeer = [&] { return RunMeff(peer->world, bench.steps, dt); };
+        runPeer = [&] { return RunMeff(*peer, bench.steps, dt); };
         peerPosition = [&](std::size_t i)
         {
             const Vec2 q = peer->world.GetPosition(peer->bodies[i]);
@@ -253,7 +254,7 @@ SceneBench BenchScene(const Scene& scene, int steps, int runs, const Against& ag
         built.world.SetTaskSystem(threads);
         if (against.kind == Against::Kind::None)
         {
-            bench.meff.push_back(RunMeff(built.world, steps, static_cast<Real>(scene.world.dt)));
+            bench.meff.push_back(RunMeff(built, steps, static_cast<Real>(scene.world.dt)));
         }
         else
         {

@@ -319,7 +319,7 @@ double LargestImpulse(const Scene& scene, int frames)
     {
         for (int frame = 1; frame <= frames; ++frame)
         {
-            built.world.Step(dt);
+            built.Step(dt);
             for (const ContactPointReport& contact : built.world.GetContactReports())
             {
                 largest = std::max(largest, std::abs(double(contact.normalImpulse)));
@@ -558,7 +558,7 @@ int Run(const RenderOptions& options)
     {
         for (; stepped < frame; ++stepped)
         {
-            built->world.Step(dt);
+            built->Step(dt);
             if (mirror)
             {
                 mirror->Step();

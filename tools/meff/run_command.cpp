@@ -250,7 +250,7 @@ int Run(const RunOptions& options)
         outputs->WriteFrame(0);
         for (int frame = 1; frame <= frames; ++frame)
         {
-            built->world.Step(dt);
+            built->Step(dt);
             outputs->WriteFrame(frame);
         }
     }

@@ -239,7 +239,7 @@ class MeffEngine
     {
     }
 
-    void Step() { m_built.world.Step(m_dt); }
+    void Step() { m_built.Step(m_dt); }
 
     BodyState Body(std::size_t i) const
     {

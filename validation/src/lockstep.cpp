@@ -361,7 +361,7 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
     {
         try
         {
-            built.world.Step(Real(dt));
+            built.Step(Real(dt));
         }
         catch (const SimulationError& error)
         {

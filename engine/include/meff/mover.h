@@ -9,6 +9,9 @@
 //   position += f·(target + fix − position)
 //   v      = ClipVector(v, planes)                          // no speed into what it rests on
 //
+// World::MoveCharacter does exactly this move (a game may also write its own, with its own
+// push limits or steps up, from the pieces).
+//
 // The planes are linear: each says how far the mover's surface is from one shape's surface
 // along that shape's normal, so a translation d changes its separation by normal·d.
 #pragma once
@@ -44,6 +47,18 @@ struct PlaneSolverResult
 /// push changes by more than `tolerance` (m), at most 20 times. Sets each plane's `push`.
 PlaneSolverResult SolvePlanes(Vec2 delta, std::span<CollisionPlane> planes,
                               Real tolerance = Real(1e-4));
+
+/// The most planes World::MoveCharacter gathers for one move: it needs no memory of its own,
+/// and a capsule rarely touches more than a handful of shapes at once.
+inline constexpr int kMaxMoverPlanes = 16;
+
+/// One move of World::MoveCharacter.
+struct CharacterMove
+{
+    Vec2 translation{}; ///< how far the mover goes this move (m)
+    Vec2 velocity{};    ///< its velocity for the next move, clipped by the planes (m/s)
+    int planeCount = 0; ///< the planes it met at its target (at most kMaxMoverPlanes)
+};
 
 /// The velocity without its parts into the planes that pushed (push > 0, clipVelocity):
 /// v ← v − min(0, v·n)·n for each, in two sweeps so that a corner of two planes stops it.

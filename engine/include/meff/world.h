@@ -376,10 +376,10 @@ class World
     void ApplyForceToCenter(BodyId id, Vec2 force, bool wake = true); ///< N
     void ApplyTorque(BodyId id, Real torque, bool wake = true);       ///< N·m
     void ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake = true); ///< N·s
-    /// An explosion (Box2D v3's b2World_Explode): each dynamic body's non-sensor circle or
-    /// polygon within radius + falloff of the centre (distance to its surface), and whose
-    /// category is in maskBits, gets the impulse impulsePerLength × (its width across the line
-    /// from the centre) × (1, or (radius + falloff − d)/falloff beyond radius), pushing along
+    /// An explosion (Box2D v3's b2World_Explode): each dynamic body's non-sensor circle,
+    /// polygon or capsule within radius + falloff of the centre (distance to its surface), and
+    /// whose category is in maskBits, gets the impulse impulsePerLength × (its width across the
+    /// line from the centre) × (1, or (radius + falloff − d)/falloff beyond radius), pushing along
     /// that line from the centre to its closest point (to its centroid when the centre is
     /// inside it), applied at that point, and is woken. Segments and chains are left alone.
     /// Throws InvalidArgument for a non-finite position or impulse, or a negative radius or
@@ -661,6 +661,13 @@ class World
     /// or slides along (the hit normal not against the motion) does not stop it, so a mover
     /// resting on the ground can walk.
     Real CastMover(const Capsule& mover, Vec2 translation, QueryFilter filter = {}) const;
+    /// One move of a kinematic character (the mover, a capsule in world coordinates) with
+    /// `velocity` (m/s) over `dt` (s, > 0), as meff/mover.h lays it out: CollideMover at the
+    /// target, SolvePlanes, CastMover towards the solved goal, ClipVector. Allocates nothing;
+    /// gathers at most kMaxMoverPlanes planes. The filter must leave out the mover's own
+    /// shape if it has one in the world.
+    CharacterMove MoveCharacter(const Capsule& mover, Vec2 velocity, Real dt,
+                                QueryFilter filter = {}) const;
     /// The closest hit of CastShape.
     RayResult CastShapeClosest(const Capsule& shape, const Transform& start, Vec2 translation,
                                QueryFilter filter = {}) const;

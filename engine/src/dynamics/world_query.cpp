@@ -15,6 +15,8 @@
 #include "meff/validity.h"
 #include "meff/world.h"
 
+#include <array>
+#include <span>
 #include <string>
 
 namespace meff
@@ -364,6 +366,37 @@ Real World::CastMover(const Capsule& mover, Vec2 translation, QueryFilter filter
                   return hit;
               });
     return fraction;
+}
+
+CharacterMove World::MoveCharacter(const Capsule& mover, Vec2 velocity, Real dt,
+                                   QueryFilter filter) const
+{
+    RequireValidCastShape(mover, State().tolerances, "World::MoveCharacter: mover");
+    RequireFinite(velocity, "World::MoveCharacter: velocity");
+    if (!(dt > 0) || !meff::IsValid(dt))
+    {
+        throw InvalidArgument("World::MoveCharacter: dt must be finite and > 0, got " +
+                              std::to_string(dt));
+    }
+    const Vec2 step = dt * velocity;
+    RequireFinite(step, "World::MoveCharacter: velocity · dt");
+    const Capsule target{mover.center1 + step, mover.center2 + step, mover.radius};
+    std::array<CollisionPlane, kMaxMoverPlanes> planes;
+    int count = 0;
+    CollideMover(target, filter,
+                 [&](ShapeId, const CollisionPlane& plane)
+                 {
+                     planes[std::size_t(count++)] = plane;
+                     return count < kMaxMoverPlanes;
+                 });
+    const std::span<CollisionPlane> met(planes.data(), std::size_t(count));
+    // The planes were collided at the target: the solver's translation is from there.
+    const Vec2 goal = step + SolvePlanes({0, 0}, met).translation;
+    CharacterMove move;
+    move.translation = CastMover(mover, goal, filter) * goal;
+    move.velocity = ClipVector(velocity, met);
+    move.planeCount = count;
+    return move;
 }
 
 RayResult World::CastShapeClosest(const Capsule& shape, const Transform& start, Vec2 translation,

@@ -272,6 +272,29 @@ struct SceneAnalytic
     friend bool operator==(const SceneAnalytic&, const SceneAnalytic&) = default;
 };
 
+/// One entry of a character's "inputs": what the player does from `time` on.
+struct SceneCharacterInput
+{
+    double time = 0;            ///< s, ≥ 0, not before the previous input's
+    std::optional<double> walk; ///< horizontal speed held from now on (m/s)
+    std::optional<double> jump; ///< vertical speed given once, now (m/s)
+
+    friend bool operator==(const SceneCharacterInput&, const SceneCharacterInput&) = default;
+};
+
+/// One entry of "characters": a kinematic body carrying one capsule, moved every step by the
+/// character mover (World::MoveCharacter) under gravity and its inputs, as a game moves its
+/// player. BuiltScene::Step drives it.
+struct SceneCharacter
+{
+    std::string name;
+    std::string body;                        ///< the body's name
+    std::size_t bodyIndex = 0;               ///< index into Scene::bodies
+    std::vector<SceneCharacterInput> inputs; ///< in time order
+
+    friend bool operator==(const SceneCharacter&, const SceneCharacter&) = default;
+};
+
 /// A loaded, validated scene with every default filled in.
 struct Scene
 {
@@ -281,6 +304,7 @@ struct Scene
     SceneWorldSettings world;
     std::vector<SceneBody> bodies;
     std::vector<SceneJoint> joints;
+    std::vector<SceneCharacter> characters;
     SceneTolerances tolerances;
     SceneValidation validation;
     std::optional<SceneCamera> camera;     ///< absent: the renderer chooses
@@ -320,6 +344,20 @@ Scene LoadScene(const std::string& path);
 Scene ParseScene(std::string_view text, const std::string& sourcePath);
 
 /// A world built from a scene, with the ids of everything in it in scene order.
+/// A character as BuiltScene::Step drives it (SceneCharacter): its script and the mover's
+/// state between steps.
+struct BuiltCharacter
+{
+    BodyId body{};
+    Capsule capsule{};    ///< in the body's coordinates (m)
+    QueryFilter filter{}; ///< its capsule's category and mask: what the mover finds
+    Real gravityScale = 1;
+    std::vector<SceneCharacterInput> inputs{};
+    std::size_t nextInput = 0; ///< the first input not yet acted on
+    Real walk = 0;             ///< the horizontal speed held (m/s)
+    Vec2 velocity{};           ///< the mover's velocity (m/s)
+};
+
 struct BuiltScene
 {
     World world;
@@ -331,6 +369,12 @@ struct BuiltScene
     std::vector<JointId> joints{}; ///< joints[j] is scene.joints[j]
     std::unordered_map<std::string, BodyId> bodyByName{};
     std::unordered_map<std::string, JointId> jointByName{};
+    std::vector<BuiltCharacter> characters{}; ///< characters[c] is scene.characters[c]
+
+    /// One frame: moves each character by its inputs, gravity and World::MoveCharacter (its
+    /// body's velocity set to carry it there), then World::Step(dt). Every tool steps a scene
+    /// through this, so that a scene behaves the same in run, render, bench and sweep.
+    void Step(Real dt);
 
     /// The scene index of a body given its id or its pool index (BodyId::index, also
     /// SimulationError::bodyIndex), or nullopt for a body the scene did not create.
