@@ -5,9 +5,10 @@
 namespace meff::detail
 {
 
-std::int32_t BroadPhase::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers)
+std::int32_t BroadPhase::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers,
+                                     Real extent)
 {
-    const std::int32_t proxyId = m_tree.CreateProxy(aabb, userData, layers);
+    const std::int32_t proxyId = m_tree.CreateProxy(aabb, userData, layers, extent);
     ++m_proxyCount;
     BufferMove(proxyId);
     return proxyId;

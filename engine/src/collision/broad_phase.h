@@ -7,6 +7,7 @@
 // order as in Box2D and the solver sweeps them in the same order.
 #pragma once
 
+#include "collision/collision_policy.h"
 #include "meff/math.h"
 #include "meff/ray_cast.h"
 
@@ -40,14 +41,22 @@ inline bool LayersMeet(std::uint16_t categoryBits, std::uint16_t maskBits, Proxy
 class DynamicTree
 {
   public:
-    explicit DynamicTree(Real aabbMargin);
+    explicit DynamicTree(FatBoxRule rule);
+    /// Box2D 2.4.1's rule with this margin.
+    explicit DynamicTree(Real aabbMargin) : DynamicTree(FatBoxRule{aabbMargin}) {}
 
-    /// Inserts a leaf with the box fattened by the margin; returns its proxy id.
-    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
+    /// Inserts a leaf with the box fattened by the margin; returns its proxy id. `extent`: the
+    /// shape's half-diagonal, for a rule that limits the stretch with it (FatBoxRule).
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {},
+                             Real extent = 0);
     void DestroyProxy(std::int32_t proxyId);
     /// Re-inserts the leaf when `aabb` leaves the fat box (or the fat box is far too large);
     /// returns true when it did.
     bool MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
+    /// The rule for the boxes made from now on; boxes already made are kept until their shape
+    /// leaves them (or they are far too large for the new rule).
+    void SetFatBoxRule(FatBoxRule rule) { m_rule = rule; }
+    const FatBoxRule& GetFatBoxRule() const { return m_rule; }
 
     std::int32_t GetUserData(std::int32_t proxyId) const { return m_nodes[proxyId].userData; }
     const AABB& GetFatAABB(std::int32_t proxyId) const { return m_nodes[proxyId].aabb; }
@@ -106,6 +115,7 @@ class DynamicTree
         std::uint16_t maskBits = 0;
         bool bitsDecide = true; ///< leaves: ProxyLayers::bitsDecide
         bool moved = false;
+        Real extent = 0; ///< leaves: the shape's half-diagonal (CreateProxy)
         bool IsLeaf() const { return child1 == kNullProxy; }
     };
 
@@ -125,7 +135,7 @@ class DynamicTree
     std::int32_t m_root = kNullProxy;
     std::int32_t m_freeList = kNullProxy;
     std::int32_t m_nodeCount = 0;
-    Real m_margin;
+    FatBoxRule m_rule;
 };
 
 /// The explicit stack of one walk of a tree (Query, RayCast, BoxCast), local to the walk so that
@@ -166,11 +176,16 @@ class TreeWalkStack
 class BroadPhase
 {
   public:
-    explicit BroadPhase(Real aabbMargin) : m_tree(aabbMargin) {}
+    explicit BroadPhase(FatBoxRule rule) : m_tree(rule) {}
+    /// Box2D 2.4.1's rule with this margin.
+    explicit BroadPhase(Real aabbMargin) : m_tree(FatBoxRule{aabbMargin}) {}
 
-    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {},
+                             Real extent = 0);
     void DestroyProxy(std::int32_t proxyId);
     void MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
+    void SetFatBoxRule(FatBoxRule rule) { m_tree.SetFatBoxRule(rule); }
+    const FatBoxRule& GetFatBoxRule() const { return m_tree.GetFatBoxRule(); }
     /// Makes the proxy report its pairs again at the next UpdatePairs.
     void TouchProxy(std::int32_t proxyId);
 

@@ -21,12 +21,10 @@ namespace
 {
 
 constexpr std::int32_t kInitialNodeCapacity = 16;
-/// Box2D's b2_aabbMultiplier: how far ahead of the motion the fat box is stretched.
-constexpr Real kDisplacementMultiplier = Real(4);
 
 } // namespace
 
-DynamicTree::DynamicTree(Real aabbMargin) : m_margin(aabbMargin)
+DynamicTree::DynamicTree(FatBoxRule rule) : m_rule(rule)
 {
     m_nodes.resize(kInitialNodeCapacity);
     for (std::int32_t i = 0; i < kInitialNodeCapacity; ++i)
@@ -79,12 +77,14 @@ void DynamicTree::FreeNode(std::int32_t id)
     --m_nodeCount;
 }
 
-std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers)
+std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers,
+                                      Real extent)
 {
     const std::int32_t proxyId = AllocateNode();
 
-    const Vec2 r(m_margin, m_margin);
     Node& node = m_nodes[proxyId];
+    node.extent = extent;
+    const Vec2 r(m_rule.margin, m_rule.margin);
     node.aabb.lowerBound = aabb.lowerBound - r;
     node.aabb.upperBound = aabb.upperBound + r;
     node.userData = userData;
@@ -108,12 +108,18 @@ bool DynamicTree::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displac
 {
     // The candidate fat box: the margin all round, then stretched along the predicted motion
     // (only on the side the shape is heading to).
-    const Vec2 r(m_margin, m_margin);
+    const Vec2 r(m_rule.margin, m_rule.margin);
     AABB fat;
     fat.lowerBound = aabb.lowerBound - r;
     fat.upperBound = aabb.upperBound + r;
 
-    const Vec2 d = kDisplacementMultiplier * displacement;
+    Vec2 d = m_rule.displacementMultiplier * displacement;
+    if (m_rule.stretchLimit > 0)
+    {
+        // Box2D's rule has no limit, and skips this so that its boxes round as Box2D's.
+        const Real limit = m_rule.stretchLimit * m_nodes[proxyId].extent;
+        d = Max(Min(d, Vec2(limit, limit)), Vec2(-limit, -limit));
+    }
     if (d.x < Real(0))
     {
         fat.lowerBound.x += d.x;

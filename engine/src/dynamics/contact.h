@@ -4,6 +4,7 @@
 
 #include "meff/collision.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -47,6 +48,7 @@ struct Contact
                              ///< touching (Box2D: !IsEnabled())
         Sensor = 1u << 5,    ///< a shape is a sensor: overlap test only, never solved
         HitEvents = 1u << 6, ///< a shape asked for hit events
+        PoseKept = 1u << 7,  ///< keptPose is the pose the manifold was computed at
     };
 
     // What the list walks read (the narrow phase's, the islands') comes first, together, so
@@ -76,6 +78,9 @@ struct Contact
     Real toi = 1;               ///< cached time of impact (fraction of the step)
     std::uint64_t hitStep = 0;  ///< 1 + the step count when hitEvent was last written
     std::int32_t hitEvent = -1; ///< its index in WorldState::hitEvents during that step
+    /// With PoseKept: body B's transform in body A's frame (MulT(xfA, xfB)) when the manifold
+    /// was last computed, for Collide's recycling (CollisionPolicy::recycleDistance).
+    Transform keptPose;
 
     bool IsTouching() const { return (flags & Touching) != 0; }
     bool IsSensor() const { return (flags & Sensor) != 0; }
@@ -103,6 +108,18 @@ inline Real MixRestitutionThreshold(Real a, Real b)
 /// over to points with the same feature key. Returns the new touching state.
 bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
                     const Shape& shapeB, const Transform& xfB);
+
+/// How far any point of body B's core, at most `reach` from B's origin, can have moved relative
+/// to body A between two relative poses of B in A's frame (MulT(xfA, xfB)) `kept` and `now`:
+/// a point b goes from kept.q·b + kept.p to now.q·b + now.p, so it moves by at most
+/// |now.p − kept.p| + ‖now.q − kept.q‖·reach, the difference of two rotations being a rotation
+/// scaled by √(Δc² + Δs²). Collide's recycling bound (CollisionPolicy::recycleDistance).
+inline Real RelativeMotionBound(const Transform& kept, const Transform& now, Real reach)
+{
+    const Real dc = now.q.c - kept.q.c;
+    const Real ds = now.q.s - kept.q.s;
+    return (now.p - kept.p).Length() + std::sqrt(dc * dc + ds * ds) * reach;
+}
 
 /// Sensor contacts (Box2D's b2TestOverlap): the shapes touch when the GJK distance between
 /// them, radii included, is below 10·epsilon. The manifold is emptied: sensors have no points.

@@ -58,6 +58,26 @@ bool CustomFilterAllows(const WorldState& world, std::int32_t a, std::int32_t b)
                                                      ShapeId{b, world.shapes[b].generation});
 }
 
+/// Collide's recycling (CollisionPolicy::recycleDistance): may this touching contact keep its
+/// manifold for another step? Its points are stored in the bodies' own frames, so the solver
+/// measures their separations at the bodies' new poses whatever happens here; what a kept
+/// manifold can miss is a change of the touching features (a point that appears, a face that
+/// takes over), which needs B to move relative to A: by less than the limit since the manifold
+/// was computed (RelativeMotionBound). The pre-solve callback, which may change a manifold every
+/// step, turns recycling off.
+bool KeepsManifold(const WorldState& world, const Contact& contact, const Shape& shapeB,
+                   const Transform& xfA, const Transform& xfB)
+{
+    const Real limit = world.collision.recycleDistance;
+    constexpr std::uint32_t kMask = Contact::PoseKept | Contact::Touching | Contact::Sensor;
+    constexpr std::uint32_t kKept = Contact::PoseKept | Contact::Touching;
+    if (!(limit > 0) || (contact.flags & kMask) != kKept || world.preSolve)
+    {
+        return false;
+    }
+    return RelativeMotionBound(contact.keptPose, MulT(xfA, xfB), shapeB.reach) < limit;
+}
+
 void LinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int side)
 {
     Contact& contact = world.contacts[contactIndex];
@@ -299,6 +319,15 @@ void Collide(WorldState& world)
             continue;
         }
 
+        if (KeepsManifold(world, contact, shapeB, bodyA.xf, bodyB.xf))
+        {
+            // What UpdateContact would do to a contact that stays touching with the same
+            // manifold (no events; the pre-solve callback is off while recycling).
+            contact.flags &= ~Contact::Disabled;
+            c = next;
+            continue;
+        }
+
         UpdateContact(world, c);
         c = next;
     }
@@ -317,6 +346,15 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     const bool touching = contact.IsSensor()
                               ? UpdateSensorOverlap(contact, shapeA, bodyA.xf, shapeB, bodyB.xf)
                               : UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+    if (world.collision.recycleDistance > 0 && !contact.IsSensor())
+    {
+        contact.keptPose = MulT(bodyA.xf, bodyB.xf);
+        contact.flags |= Contact::PoseKept;
+    }
+    else
+    {
+        contact.flags &= ~Contact::PoseKept;
+    }
     if (!contact.IsSensor() && touching != wasTouching)
     {
         // A solid contact that begins or ends changes both bodies' islands: wake them

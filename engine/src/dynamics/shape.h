@@ -5,6 +5,7 @@
 #include "meff/shape.h"
 
 #include <cstdint>
+#include <initializer_list>
 
 namespace meff::detail
 {
@@ -31,6 +32,11 @@ struct Shape
     ShapeDef def;
     std::int32_t proxyId = -1;
     AABB aabb; ///< the box last given to the broad phase (swept over the step)
+    /// The largest distance of the shape's core (a polygon's vertices, a circle's centre, a
+    /// segment's end points: the shape less its radius) from its body's origin (m), set at
+    /// creation: how far a point of the core can move when the body turns (Collide's
+    /// recycling bound).
+    Real reach = 0;
 
     /// Collision radius: the circle's radius, or the skin of a polygon or (chain) segment.
     Real Radius() const
@@ -81,6 +87,39 @@ struct Shape
             return meff::ComputeAABB(chainSegment, xf);
         }
         return {};
+    }
+    /// The core's largest distance from the body origin (`reach`).
+    Real ComputeReach() const
+    {
+        const auto farthest = [](std::initializer_list<Vec2> points)
+        {
+            Real most = 0;
+            for (const Vec2 p : points)
+            {
+                most = Max(most, p.Length());
+            }
+            return most;
+        };
+        switch (type)
+        {
+        case ShapeType::Circle:
+            return circle.center.Length();
+        case ShapeType::Polygon:
+        case ShapeType::Capsule:
+        {
+            Real most = 0;
+            for (int i = 0; i < polygon.count; ++i)
+            {
+                most = Max(most, polygon.vertices[i].Length());
+            }
+            return most;
+        }
+        case ShapeType::Segment:
+            return farthest({segment.point1, segment.point2});
+        case ShapeType::ChainSegment:
+            return farthest({chainSegment.segment.point1, chainSegment.segment.point2});
+        }
+        return 0;
     }
     /// Collides as a rounded polygon (CollideRoundedPolygons): a capsule or rounded polygon.
     bool IsRounded() const { return type == ShapeType::Capsule || rounded; }

@@ -713,10 +713,13 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
     shape.body = bodyId.index;
     shape.def = def;
     shape.aabb = shape.ComputeAABB(body.xf);
+    shape.reach = shape.ComputeReach();
     // A shape in a positive group pairs with its group whatever the bits (FiltersAllow).
     const Filter& filter = def.filter;
+    const AABB own = shape.ComputeAABB(Transform{});
     shape.proxyId = world.broadPhase.CreateProxy(
-        shape.aabb, index, {filter.categoryBits, filter.maskBits, filter.groupIndex <= 0});
+        shape.aabb, index, {filter.categoryBits, filter.maskBits, filter.groupIndex <= 0},
+        Real(0.5) * (own.upperBound - own.lowerBound).Length());
 
     const ShapeId id{index, generation};
     body.shapes.insert(body.shapes.begin(), index); // newest first, as Box2D's fixture list
@@ -1491,7 +1494,12 @@ void World::SetSolverSettings(const SolverSettings& settings)
                        std::to_string(static_cast<int>(settings.kind)) + ")";
             });
     RequireSoftStepSettings(settings.softStep);
-    State().solver = settings;
+    WorldState& world = State();
+    world.solver = settings;
+    // The back end chooses how the broad phase fattens boxes and whether the narrow phase may
+    // keep manifolds (collision/collision_policy.h).
+    world.collision = world.solvers.For(settings.kind).Collision(world.tolerances);
+    world.broadPhase.SetFatBoxRule(world.collision.fatBoxes);
 }
 Vec2 World::GetGravity() const
 {

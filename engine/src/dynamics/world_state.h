@@ -69,6 +69,9 @@ struct WorldState
     PairSet contactPairs;
 
     BroadPhase broadPhase;
+    /// What the current back end asks of the broad and narrow phases (Solver::Collision),
+    /// set with the solver settings.
+    CollisionPolicy collision;
     bool newShapes = false; ///< find new contacts before the next narrow phase
 
     SolverSet solvers;       ///< the back ends (SolverSettings::kind picks one each step)

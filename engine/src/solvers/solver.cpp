@@ -26,6 +26,22 @@ std::unique_ptr<Solver> MakeSolver(SolverKind kind)
 
 } // namespace
 
+CollisionPolicy Box2DCollision(const Tolerances& tolerances)
+{
+    CollisionPolicy policy;
+    policy.fatBoxes = {tolerances.aabbMargin, 4, 0};
+    policy.recycleDistance = 0;
+    return policy;
+}
+
+CollisionPolicy ThroughputCollision(const Tolerances& tolerances)
+{
+    CollisionPolicy policy;
+    policy.fatBoxes = {Real(0.5) * tolerances.aabbMargin, 2, 1};
+    policy.recycleDistance = tolerances.linearSlop;
+    return policy;
+}
+
 SolverSet::SolverSet() = default;
 SolverSet::~SolverSet() = default;
 SolverSet::SolverSet(const SolverSet&) {}

@@ -6,6 +6,7 @@
 // SolverWorld, and the contacts it solved it hands back through SolvedContactSink.
 #pragma once
 
+#include "collision/collision_policy.h"
 #include "dynamics/solver_types.h"
 
 #include <cstdint>
@@ -66,7 +67,25 @@ class Solver
     /// with allowSleep puts resting islands to sleep. Sets Body::islandFlag on every body it
     /// moved, which the broad-phase synchronization reads.
     virtual void Step(SolverWorld& world, const StepContext& step) = 0;
+    /// How the shared broad and narrow phases should work for this back end (the fat boxes,
+    /// manifold recycling): Box2DCollision or ThroughputCollision.
+    virtual CollisionPolicy Collision(const Tolerances& tolerances) const = 0;
 };
+
+/// Box2D 2.4.1's collision: fat boxes of tolerances.aabbMargin stretched four times the step's
+/// displacement, every manifold computed every step. The Box2D back end's, which must stay bit
+/// for bit Box2D's, and for now the soft step's (SoftStepSolver::Collision says why).
+CollisionPolicy Box2DCollision(const Tolerances& tolerances);
+
+/// Collision for throughput (the colour back end), nearer Box2D v3's: fat boxes
+/// with half of tolerances.aabbMargin (v3's 5 cm at the default 10 cm), stretched twice the
+/// step's displacement but by at most the shape's half-diagonal (a fast small body's box no
+/// longer sweeps through a crowd), and touching manifolds kept while their shapes move less than
+/// the linear slop relative to each other (Collide). Measured with callgrind against Box2D's
+/// rule (README, Performance): fewer candidate pairs on tumbler and smash, a third of the
+/// narrow phase on large_pyramid. Which contacts exist, and so their order, changes; a kept
+/// manifold is within the slop of the exact one.
+CollisionPolicy ThroughputCollision(const Tolerances& tolerances);
 
 /// The world's back ends, each made when first used (a world pays for the one it runs).
 /// Copying a world (a snapshot) does not copy them: they hold only memory that every step

@@ -15,6 +15,10 @@ class Box2DSolver final : public Solver
 {
   public:
     void Step(SolverWorld& world, const StepContext& step) override;
+    CollisionPolicy Collision(const Tolerances& tolerances) const override
+    {
+        return Box2DCollision(tolerances);
+    }
 
   private:
     Island m_island;

@@ -16,6 +16,10 @@ class ColourSolver final : public Solver
 {
   public:
     void Step(SolverWorld& world, const StepContext& step) override;
+    CollisionPolicy Collision(const Tolerances& tolerances) const override
+    {
+        return ThroughputCollision(tolerances);
+    }
 
   private:
     Island m_island;
