@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <set>
 #include <utility>
 #include <vector>
@@ -350,4 +351,104 @@ TEST_CASE("Collision policy: a box dropped on a stack comes to rest on it in eve
                   Real(0.01));
         }
     }
+}
+
+namespace
+{
+
+bool SameBits(Real a, Real b)
+{
+    return std::memcmp(&a, &b, sizeof(Real)) == 0;
+}
+
+bool SameBits(Vec2 a, Vec2 b)
+{
+    return SameBits(a.x, b.x) && SameBits(a.y, b.y);
+}
+
+/// Every field of the two manifolds, bit for bit.
+bool SameManifold(const Manifold& a, const Manifold& b)
+{
+    if (a.pointCount != b.pointCount || a.type != b.type ||
+        !SameBits(a.localNormal, b.localNormal) || !SameBits(a.localPoint, b.localPoint))
+    {
+        return false;
+    }
+    for (int i = 0; i < 2; ++i)
+    {
+        const ManifoldPoint& p = a.points[i];
+        const ManifoldPoint& q = b.points[i];
+        if (!SameBits(p.localPoint, q.localPoint) || !SameBits(p.normalImpulse, q.normalImpulse) ||
+            !SameBits(p.tangentImpulse, q.tangentImpulse) || p.id.Key() != q.id.Key())
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+detail::Shape PolygonShape(const Polygon& polygon)
+{
+    detail::Shape shape;
+    shape.type = ShapeType::Polygon;
+    shape.polygon = polygon;
+    shape.polygon.radius = Real(0.01);
+    return shape;
+}
+
+} // namespace
+
+TEST_CASE("Narrow phase: testing last update's separating face first gives Box2D's manifold bit "
+          "for bit",
+          "[collision_policy]")
+{
+    // Two polygons wander near each other (apart, grazing, overlapping); after every move the
+    // contact's manifold, updated with its remembered separating face, must equal bit for bit
+    // the one Box2D 2.4.1's search gives from the same previous manifold with no face
+    // remembered. The Box2D back end relies on this (it must stay bit-identical).
+    const Vec2 hexagon[6] = {{Real(0.4), 0},  {Real(0.2), Real(0.35)},   {Real(-0.2), Real(0.35)},
+                             {Real(-0.4), 0}, {Real(-0.2), Real(-0.35)}, {Real(0.2), Real(-0.35)}};
+    const detail::Shape shapes[3] = {
+        PolygonShape(MakeBox(Real(0.5), Real(0.25))),
+        PolygonShape(MakeOffsetBox(Real(0.2), Real(0.6), {Real(0.1), 0}, Real(0.3))),
+        PolygonShape(MakePolygon(hexagon))};
+    Random rng(5);
+    int shortCuts = 0, touching = 0;
+    for (int trial = 0; trial < 300; ++trial)
+    {
+        const detail::Shape& a = shapes[trial % 3];
+        const detail::Shape& b = shapes[(trial / 3) % 3];
+        Transform xfA({rng.Uniform(-20, 20), rng.Uniform(-20, 20)}, Rot(rng.Uniform(-3, 3)));
+        Transform xfB(xfA.p + Vec2(rng.Uniform(-1, 1), rng.Uniform(-1, 1)),
+                      Rot(rng.Uniform(-3, 3)));
+        detail::Contact contact;
+        for (int step = 0; step < 40; ++step)
+        {
+            detail::Contact box2d;
+            box2d.manifold = contact.manifold; // warm starting reads the previous manifold
+            const bool remembered = contact.separatingFace.edge >= 0;
+            const bool touches = detail::UpdateManifold(contact, a, xfA, b, xfB);
+            CHECK(detail::UpdateManifold(box2d, a, xfA, b, xfB) == touches);
+            REQUIRE(SameManifold(contact.manifold, box2d.manifold));
+            shortCuts += remembered && !touches ? 1 : 0;
+            touching += touches ? 1 : 0;
+            // Give the points impulses, as the solver would, so that warm starting is checked.
+            for (int i = 0; i < contact.manifold.pointCount; ++i)
+            {
+                contact.manifold.points[i].normalImpulse = rng.Uniform(0, 2);
+                contact.manifold.points[i].tangentImpulse = rng.Uniform(-1, 1);
+            }
+            // A random walk of B about A, drifting towards it, and of both in the world.
+            const Vec2 towards = Real(0.02) * (xfA.p - xfB.p);
+            xfB = Transform(xfB.p + towards +
+                                Vec2(rng.Uniform(Real(-0.05), Real(0.05)),
+                                     rng.Uniform(Real(-0.05), Real(0.05))),
+                            Rot(xfB.q.GetAngle() + rng.Uniform(Real(-0.1), Real(0.1))));
+            xfA = Transform(xfA.p + Vec2(rng.Uniform(Real(-0.01), Real(0.01)), 0),
+                            Rot(xfA.q.GetAngle() + rng.Uniform(Real(-0.02), Real(0.02))));
+        }
+    }
+    // Both paths taken often enough to mean something.
+    CHECK(shortCuts > 1000);
+    CHECK(touching > 1000);
 }

@@ -3,11 +3,35 @@
 
 #include "meff/collision.h"
 
+#include <cstdint>
+
 namespace meff::detail
 {
 
 /// Box2D 2.4.1's b2_linearSlop (m): the collision and constraint tolerance.
 inline constexpr Real kCollisionLinearSlop = Real(0.005);
+
+/// The face that last separated two polygons (CollidePolygons' early returns): face `edge` of A
+/// (`onB` false) or of B, or none (edge < 0). The narrow phase keeps it per contact and tests it
+/// first (FaceSeparation), since a pair of polygons apart last step is most often apart along
+/// the same face.
+struct SeparatingFace
+{
+    std::int8_t edge = -1;
+    bool onB = false;
+};
+
+/// The separation of poly2 from face `edge` of poly1: Box2D 2.4.1's b2FindMaxSeparation for that
+/// one face, with the same operations in the same order, so the same bits as that face's value
+/// in the full search. The full search's result is the largest face's, so it is at least this:
+/// when this exceeds the two radii, so does the search, and CollidePolygons returns no points.
+Real FaceSeparation(const Polygon& poly1, const Transform& xf1, int edge, const Polygon& poly2,
+                    const Transform& xf2);
+
+/// CollidePolygons, also writing which face separated the pair when it returns for want of
+/// overlap along a face normal (`separating.edge` < 0 otherwise).
+void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transform& xfA,
+                     const Polygon& polygonB, const Transform& xfB, SeparatingFace& separating);
 
 /// A vertex of an incident edge being clipped, with the features that produced it.
 struct ClipVertex

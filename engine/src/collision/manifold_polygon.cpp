@@ -156,10 +156,35 @@ void FindIncidentEdge(detail::ClipVertex incident[2], const Polygon& poly1, cons
 
 } // namespace
 
+namespace detail
+{
+
+Real FaceSeparation(const Polygon& poly1, const Transform& xf1, int edge, const Polygon& poly2,
+                    const Transform& xf2)
+{
+    // FaceLanes' constructor and Visit for one lane, written out: the same expressions.
+    const Transform xf = MulT(xf2, xf1);
+    const Vec2 normal = poly1.normals[edge];
+    const Vec2 vertex = poly1.vertices[edge];
+    const Real nx = xf.q.c * normal.x - xf.q.s * normal.y;
+    const Real ny = xf.q.s * normal.x + xf.q.c * normal.y;
+    const Real vx = (xf.q.c * vertex.x - xf.q.s * vertex.y) + xf.p.x;
+    const Real vy = (xf.q.s * vertex.x + xf.q.c * vertex.y) + xf.p.y;
+    Real minSeparation = kMaxReal;
+    for (int j = 0; j < poly2.count; ++j)
+    {
+        const Vec2 w = poly2.vertices[j];
+        const Real sij = nx * (w.x - vx) + ny * (w.y - vy);
+        minSeparation = sij < minSeparation ? sij : minSeparation;
+    }
+    return minSeparation;
+}
+
 void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transform& xfA,
-                     const Polygon& polygonB, const Transform& xfB)
+                     const Polygon& polygonB, const Transform& xfB, SeparatingFace& separating)
 {
     manifold.pointCount = 0;
+    separating.edge = -1;
     const Real totalRadius = polygonA.radius + polygonB.radius;
 
     // Box2D's order: B's faces are only searched when A's do not separate the pair (in a
@@ -168,6 +193,7 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
     const Real separationA = FindMaxSeparation(edgeA, polygonA, xfA, polygonB, xfB);
     if (separationA > totalRadius)
     {
+        separating = {static_cast<std::int8_t>(edgeA), false};
         return;
     }
 
@@ -175,6 +201,7 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
     const Real separationB = FindMaxSeparation(edgeB, polygonB, xfB, polygonA, xfA);
     if (separationB > totalRadius)
     {
+        separating = {static_cast<std::int8_t>(edgeB), true};
         return;
     }
 
@@ -256,6 +283,15 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
     }
 
     manifold.pointCount = pointCount;
+}
+
+} // namespace detail
+
+void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transform& xfA,
+                     const Polygon& polygonB, const Transform& xfB)
+{
+    detail::SeparatingFace separating;
+    detail::CollidePolygons(manifold, polygonA, xfA, polygonB, xfB, separating);
 }
 
 } // namespace meff

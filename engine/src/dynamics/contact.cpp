@@ -112,12 +112,43 @@ static void Evaluate(Manifold& manifold, const Shape& a, const Transform& xfA, c
     }
 }
 
+/// Two sharp polygons: Box2D 2.4.1's CollidePolygons, but when they were apart at the last
+/// update the face that separated them then is tested first. Its separation has the bits the
+/// full search gives that face (FaceSeparation), and the search returns the largest face's, so
+/// when it exceeds the radii the search would return no points too: the manifold is the same,
+/// for a fraction of the work (most of a crowd's pairs are apart, and stay apart along the same
+/// face from step to step).
+void CollideSharpPolygons(Contact& contact, const Polygon& a, const Transform& xfA,
+                          const Polygon& b, const Transform& xfB)
+{
+    const SeparatingFace face = contact.separatingFace;
+    if (face.edge >= 0)
+    {
+        const Real separation = face.onB ? FaceSeparation(b, xfB, face.edge, a, xfA)
+                                         : FaceSeparation(a, xfA, face.edge, b, xfB);
+        if (separation > a.radius + b.radius)
+        {
+            contact.manifold.pointCount = 0;
+            return;
+        }
+    }
+    CollidePolygons(contact.manifold, a, xfA, b, xfB, contact.separatingFace);
+}
+
 bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
                     const Shape& shapeB, const Transform& xfB)
 {
     const Manifold oldManifold = contact.manifold;
     Manifold& manifold = contact.manifold;
-    Evaluate(manifold, shapeA, xfA, shapeB, xfB);
+    if (shapeA.type == ShapeType::Polygon && shapeB.type == ShapeType::Polygon && !shapeA.rounded &&
+        !shapeB.rounded)
+    {
+        CollideSharpPolygons(contact, shapeA.polygon, xfA, shapeB.polygon, xfB);
+    }
+    else
+    {
+        Evaluate(manifold, shapeA, xfA, shapeB, xfB);
+    }
 
     // Warm starting: a point keeps the impulses of last step's point with the same features.
     for (int i = 0; i < manifold.pointCount; ++i)

@@ -2,6 +2,7 @@
 // impulses carry from step to step (warm starting), and sits on both bodies' edge lists.
 #pragma once
 
+#include "collision/manifold_internal.h"
 #include "meff/collision.h"
 
 #include <cmath>
@@ -78,6 +79,9 @@ struct Contact
     Real toi = 1;               ///< cached time of impact (fraction of the step)
     std::uint64_t hitStep = 0;  ///< 1 + the step count when hitEvent was last written
     std::int32_t hitEvent = -1; ///< its index in WorldState::hitEvents during that step
+    /// Two sharp polygons apart at the last update: the face that separated them, tested first
+    /// at the next (UpdateManifold; exact, so Box2D's back end uses it too).
+    SeparatingFace separatingFace;
     /// With PoseKept: body B's transform in body A's frame (MulT(xfA, xfB)) when the manifold
     /// was last computed, for Collide's recycling (CollisionPolicy::recycleDistance).
     Transform keptPose;
