@@ -64,18 +64,14 @@ bool CustomFilterAllows(const WorldState& world, std::int32_t a, std::int32_t b)
 /// manifold can miss is a change of the touching features (a point that appears, a face that
 /// takes over), which needs B to move relative to A: by less than the limit since the manifold
 /// was computed (RelativeMotionBound). The pre-solve callback, which may change a manifold every
-/// step, turns recycling off.
-bool KeepsManifold(const WorldState& world, const Contact& contact, const Shape& shapeB,
-                   const Transform& xfA, const Transform& xfB)
+/// step, turns recycling off (Collide).
+bool KeepsManifold(Real limit, const Contact& contact, const Shape& shapeB, const Transform& xfA,
+                   const Transform& xfB)
 {
-    const Real limit = world.collision.recycleDistance;
     constexpr std::uint32_t kMask = Contact::PoseKept | Contact::Touching | Contact::Sensor;
     constexpr std::uint32_t kKept = Contact::PoseKept | Contact::Touching;
-    if (!(limit > 0) || (contact.flags & kMask) != kKept || world.preSolve)
-    {
-        return false;
-    }
-    return RelativeMotionBound(contact.keptPose, MulT(xfA, xfB), shapeB.reach) < limit;
+    return (contact.flags & kMask) == kKept &&
+           RelativeMotionBound(contact.keptPose, MulT(xfA, xfB), shapeB.reach) < limit;
 }
 
 void LinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int side)
@@ -279,6 +275,8 @@ void FlagContactsForFiltering(WorldState& world, std::int32_t bodyA, std::int32_
 
 void Collide(WorldState& world)
 {
+    // Recycling is the back end's choice (0: never, Box2D's), and off with a pre-solve callback.
+    const Real recycleDistance = world.preSolve ? Real(0) : world.collision.recycleDistance;
     for (std::int32_t c = world.contactList; c != kNullIndex;)
     {
         Contact& contact = world.contacts[c];
@@ -319,7 +317,8 @@ void Collide(WorldState& world)
             continue;
         }
 
-        if (KeepsManifold(world, contact, shapeB, bodyA.xf, bodyB.xf))
+        if (recycleDistance > 0 &&
+            KeepsManifold(recycleDistance, contact, shapeB, bodyA.xf, bodyB.xf))
         {
             // What UpdateContact would do to a contact that stays touching with the same
             // manifold (no events; the pre-solve callback is off while recycling).
