@@ -41,6 +41,13 @@ std::string CharacterScene(const std::string& characters, const std::string& her
            characters + " }";
 }
 
+/// CharacterScene with one character moving the hero by `inputs` (the JSON array), built.
+BuiltScene BuildHero(const std::string& inputs)
+{
+    return BuildWorld(ParseScene(
+        CharacterScene(R"([ { "body": "hero", "inputs": )" + inputs + " } ]"), "x.json"));
+}
+
 /// Steps a built scene `steps` frames.
 void StepFrames(BuiltScene& built, int steps)
 {
@@ -164,9 +171,7 @@ TEST_CASE("Scene characters: BuildWorld refuses a hand-made character it cannot 
 
 TEST_CASE("Scene characters: walking covers speed × time and stops at a wall", "[scene][character]")
 {
-    BuiltScene built = BuildWorld(ParseScene(
-        CharacterScene(R"([ { "body": "hero", "inputs": [ { "time": 0, "walk": 2 } ] } ])"),
-        "x.json"));
+    BuiltScene built = BuildHero(R"([ { "time": 0, "walk": 2 } ])");
     const BodyId hero = built.characters[0].body;
     const Real skin = built.world.GetTolerances().polygonSkin;
     StepFrames(built, 60);
@@ -188,9 +193,7 @@ TEST_CASE("Scene characters: walking covers speed × time and stops at a wall", 
 TEST_CASE("Scene characters: a jump rises to the discrete apex of v·dt under g·dt kicks",
           "[scene][character]")
 {
-    BuiltScene built = BuildWorld(ParseScene(
-        CharacterScene(R"([ { "body": "hero", "inputs": [ { "time": 0.5, "jump": 5 } ] } ])"),
-        "x.json"));
+    BuiltScene built = BuildHero(R"([ { "time": 0.5, "jump": 5 } ])");
     const BodyId hero = built.characters[0].body;
     StepFrames(built, 30); // standing still for half a second
     const Real start = built.world.GetPosition(hero).y;
@@ -213,9 +216,7 @@ TEST_CASE("Scene characters: a jump rises to the discrete apex of v·dt under g�
 TEST_CASE("Scene characters: an input acts on the step that starts at its time",
           "[scene][character]")
 {
-    BuiltScene built = BuildWorld(ParseScene(
-        CharacterScene(R"([ { "body": "hero", "inputs": [ { "time": 1.5, "walk": 3 } ] } ])"),
-        "x.json"));
+    BuiltScene built = BuildHero(R"([ { "time": 1.5, "walk": 3 } ])");
     const BodyId hero = built.characters[0].body;
     StepFrames(built, 90); // up to t = 1.5 s: standing
     CHECK(built.world.GetPosition(hero).x == Approx(0).margin(1e-6));

@@ -417,6 +417,12 @@ int RunBench(const BenchOptions& options)
         {
             bench = BenchScene(scene, steps, options.runs, options.against, threads.get());
         }
+        catch (const SceneError& error)
+        {
+            // Box2D 2.4.1 cannot mirror it (Box2D v3's features): the input, not the run.
+            std::fprintf(stderr, "meff bench: %s: %s\n", scene.name.c_str(), error.what());
+            return kExitBadInput;
+        }
         catch (const Error& error)
         {
             std::fprintf(stderr, "meff bench: %s: %s\n", scene.name.c_str(), error.what());

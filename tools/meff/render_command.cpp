@@ -525,7 +525,15 @@ int Run(const RenderOptions& options)
     std::optional<validation::Box2DMirror> mirror;
     if (options.overlayBox2D)
     {
-        mirror.emplace(*scene);
+        try
+        {
+            mirror.emplace(*scene);
+        }
+        catch (const SceneError& error)
+        {
+            Fail(error.what()); // Box2D v3's features: Box2D 2.4.1 cannot draw this scene
+            return kExitBadInput;
+        }
         frameOptions.overlayLegend.push_back({kBox2DColor, "Box2D 2.4.1"});
     }
 

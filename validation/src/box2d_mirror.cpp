@@ -4,6 +4,8 @@
 // then the joints in file order.
 #include "meff/box2d_mirror.h"
 
+#include "meff/box2d_v3_features.h"
+
 #include <condition_variable>
 #include <mutex>
 #include <stdexcept>
@@ -470,6 +472,14 @@ Box2DMirror::Box2DMirror(const Scene& scene, std::optional<bool> blockSolver)
       m_world(std::make_unique<b2World>(ToB2(scene.world.gravity))),
       m_listener(std::make_unique<Listener>())
 {
+    // A capsule, a rounding, a joint spring or a character has no 2.4.1 counterpart: built
+    // without it, the mirror would be another scene, compared as if it were this one.
+    const std::vector<std::string> lacking =
+        FieldsBox2D241Lacks(scene, "Box2D 2.4.1 cannot run this scene beside meff");
+    if (!lacking.empty())
+    {
+        throw SceneError(lacking);
+    }
     const SceneWorldSettings& settings = scene.world;
     m_world->SetAllowSleeping(settings.allowSleep);
     m_world->SetWarmStarting(settings.solver.warmStarting);

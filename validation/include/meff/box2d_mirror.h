@@ -21,7 +21,8 @@ class Box2DMirror
 {
   public:
     /// Builds the world. `blockSolver` is used for g_blockSolve during Step (default: the
-    /// scene's "block_solver").
+    /// scene's "block_solver"). Throws SceneError, naming each field, for a scene with what
+    /// Box2D 2.4.1 does not have (FieldsBox2D241Lacks).
     explicit Box2DMirror(const Scene& scene, std::optional<bool> blockSolver = std::nullopt);
     ~Box2DMirror();
     Box2DMirror(const Box2DMirror&) = delete;
