@@ -13,17 +13,8 @@ Rot SmallRotation(Real angle)
     {
         return Rot(angle);
     }
-    // Taylor series to the 8th and 9th power: below |angle| = 0.5 the first term left out is
-    // under 0.5¹⁰/10! < 3e-10, far below float's rounding.
-    const Real a2 = angle * angle;
-    const Real c =
-        Real(1) - a2 / 2 * (Real(1) - a2 / 12 * (Real(1) - a2 / 30 * (Real(1) - a2 / 56)));
-    const Real s =
-        angle *
-        (Real(1) - a2 / 6 * (Real(1) - a2 / 20 * (Real(1) - a2 / 42 * (Real(1) - a2 / 72))));
     Rot q;
-    q.s = s;
-    q.c = c;
+    SmallRotationSeries(angle, q.s, q.c);
     return q;
 }
 

@@ -29,8 +29,7 @@ Vec2 Tangent(Vec2 normal)
 Real NormalError(const SoftContact& c, const SoftContactPoint& p, const SoftDelta& dA,
                  const SoftDelta& dB, Real slop)
 {
-    const Vec2 d = (dB.dp - dA.dp) + (Mul(dB.dq, p.rB) - Mul(dA.dq, p.rA));
-    return p.baseSeparation + Dot(d, c.normal) + slop;
+    return SeparationOf(p.baseSeparation, c.normal, dA.dp, dA.dq, dB.dp, dB.dq, p.rA, p.rB, slop);
 }
 
 /// Turns a body's rotation dq further by `angle` (rad).
@@ -124,27 +123,33 @@ void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepCont
             }
         }
     }
+    m_lanes.Prepare(m_contacts, static_cast<std::int32_t>(context.bodies->start.size()));
 }
 
 void SoftContactSolver::WarmStart(const SoftStepContext& context)
 {
-    for (SoftContact& c : m_contacts)
+    m_lanes.WarmStart(context);
+    for (const std::int32_t k : m_lanes.Overflow())
     {
-        RowBodies b = LoadBodies(c, context);
-        const Vec2 tangent = Tangent(c.normal);
-        for (int j = 0; j < c.pointCount; ++j)
-        {
-            SoftContactPoint& p = c.points[j];
-            ApplyPointImpulse(p.normalImpulse * c.normal + p.tangentImpulse * tangent, p.rA, p.rB,
-                              b);
-            p.totalNormalImpulse += p.normalImpulse;
-            p.totalTangentImpulse += p.tangentImpulse;
-        }
-        b.wA -= c.iA * c.rollingImpulse;
-        b.wB += c.iB * c.rollingImpulse;
-        c.totalRollingImpulse += c.rollingImpulse;
-        StoreBodies(c, b, context);
+        WarmStartContact(m_contacts[k], context);
     }
+}
+
+void SoftContactSolver::WarmStartContact(SoftContact& c, const SoftStepContext& context)
+{
+    RowBodies b = LoadBodies(c, context);
+    const Vec2 tangent = Tangent(c.normal);
+    for (int j = 0; j < c.pointCount; ++j)
+    {
+        SoftContactPoint& p = c.points[j];
+        ApplyPointImpulse(p.normalImpulse * c.normal + p.tangentImpulse * tangent, p.rA, p.rB, b);
+        p.totalNormalImpulse += p.normalImpulse;
+        p.totalTangentImpulse += p.tangentImpulse;
+    }
+    b.wA -= c.iA * c.rollingImpulse;
+    b.wB += c.iB * c.rollingImpulse;
+    c.totalRollingImpulse += c.rollingImpulse;
+    StoreBodies(c, b, context);
 }
 
 void SoftContactSolver::SolveNormalRows(SoftContact& c, RowBodies& b,
@@ -195,70 +200,82 @@ void SoftContactSolver::SolveNormalRows(SoftContact& c, RowBodies& b,
 
 void SoftContactSolver::Solve(const SoftStepContext& context, bool useBias)
 {
-    const bool friction = !useBias || context.frictionInSolve;
-    for (SoftContact& c : m_contacts)
+    m_lanes.Solve(context, useBias);
+    for (const std::int32_t k : m_lanes.Overflow())
     {
-        RowBodies b = LoadBodies(c, context);
-        // Normal rows first, so that friction is bounded by this sweep's normal impulses.
-        SolveNormalRows(c, b, context, useBias);
-        if (friction && c.friction > 0)
-        {
-            const Vec2 tangent = Tangent(c.normal);
-            // Rigid, driven to the conveyor's speed: J·v + bias = vt − s → 0.
-            const RowTarget conveyor{-c.tangentSpeed, kRigid};
-            for (int j = 0; j < c.pointCount; ++j)
-            {
-                SoftContactPoint& p = c.points[j];
-                const Real maxFriction = c.friction * p.normalImpulse;
-                p.totalTangentImpulse +=
-                    SolveRow(PointRow(tangent, p.rA, p.rB), p.tangentMass, conveyor,
-                             p.tangentImpulse, b, -maxFriction, maxFriction);
-            }
-        }
-        if (friction && c.rollingResistance > 0)
-        {
-            const Real normal = c.points[0].normalImpulse +
-                                (c.pointCount > 1 ? c.points[1].normalImpulse : Real(0));
-            const Real lambda = SolveRollingRow(c.rollingMass, c.rollingResistance, normal, b.wA,
-                                                b.wB, c.rollingImpulse);
-            b.wA -= c.iA * lambda;
-            b.wB += c.iB * lambda;
-            c.totalRollingImpulse += lambda;
-        }
-        StoreBodies(c, b, context);
+        SolveContact(m_contacts[k], context, useBias);
     }
+}
+
+void SoftContactSolver::SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias)
+{
+    const bool friction = !useBias || context.frictionInSolve;
+    RowBodies b = LoadBodies(c, context);
+    // Normal rows first, so that friction is bounded by this sweep's normal impulses.
+    SolveNormalRows(c, b, context, useBias);
+    if (friction && c.friction > 0)
+    {
+        const Vec2 tangent = Tangent(c.normal);
+        // Rigid, driven to the conveyor's speed: J·v + bias = vt − s → 0.
+        const RowTarget conveyor{-c.tangentSpeed, kRigid};
+        for (int j = 0; j < c.pointCount; ++j)
+        {
+            SoftContactPoint& p = c.points[j];
+            const Real maxFriction = c.friction * p.normalImpulse;
+            p.totalTangentImpulse +=
+                SolveRow(PointRow(tangent, p.rA, p.rB), p.tangentMass, conveyor, p.tangentImpulse,
+                         b, -maxFriction, maxFriction);
+        }
+    }
+    if (friction && c.rollingResistance > 0)
+    {
+        const Real normal =
+            c.points[0].normalImpulse + (c.pointCount > 1 ? c.points[1].normalImpulse : Real(0));
+        const Real lambda = SolveRollingRow(c.rollingMass, c.rollingResistance, normal, b.wA, b.wB,
+                                            c.rollingImpulse);
+        b.wA -= c.iA * lambda;
+        b.wB += c.iB * lambda;
+        c.totalRollingImpulse += lambda;
+    }
+    StoreBodies(c, b, context);
 }
 
 void SoftContactSolver::CorrectPositions(const SoftStepContext& context)
 {
+    m_lanes.CorrectPositions(context);
+    for (const std::int32_t k : m_lanes.Overflow())
+    {
+        CorrectContact(m_contacts[k], context);
+    }
+}
+
+void SoftContactSolver::CorrectContact(const SoftContact& c, const SoftStepContext& context)
+{
     const Real slop = context.step->tolerances.linearSlop;
     const Real maxCorrection = context.maxPushOut * context.h;
     std::vector<SoftDelta>& deltas = context.bodies->deltas;
-    for (const SoftContact& c : m_contacts)
+    SoftDelta& dA = deltas[c.indexA];
+    SoftDelta& dB = deltas[c.indexB];
+    for (int j = 0; j < c.pointCount; ++j)
     {
-        SoftDelta& dA = deltas[c.indexA];
-        SoftDelta& dB = deltas[c.indexB];
-        for (int j = 0; j < c.pointCount; ++j)
+        const SoftContactPoint& p = c.points[j];
+        // Non-linear Gauss-Seidel on the separation: each point sees the last one's move.
+        const Real C = Clamp(context.contactCorrection * NormalError(c, p, dA, dB, slop),
+                             -maxCorrection, Real(0));
+        if (C == 0)
         {
-            const SoftContactPoint& p = c.points[j];
-            // Non-linear Gauss-Seidel on the separation: each point sees the last one's move.
-            const Real C = Clamp(context.contactCorrection * NormalError(c, p, dA, dB, slop),
-                                 -maxCorrection, Real(0));
-            if (C == 0)
-            {
-                continue;
-            }
-            const Vec2 rA = Mul(dA.dq, p.rA);
-            const Vec2 rB = Mul(dB.dq, p.rB);
-            const RowBodies masses{{}, 0, {}, 0, c.mA, c.iA, c.mB, c.iB};
-            const RowJacobian J = PointRow(c.normal, rA, rB);
-            const Real lambda = -C * RowMass(InverseEffectiveMass(J, masses));
-            const Vec2 P = lambda * c.normal;
-            dA.dp -= c.mA * P;
-            Turn(dA, -c.iA * lambda * J.aA);
-            dB.dp += c.mB * P;
-            Turn(dB, c.iB * lambda * J.aB);
+            continue;
         }
+        const Vec2 rA = Mul(dA.dq, p.rA);
+        const Vec2 rB = Mul(dB.dq, p.rB);
+        const RowBodies masses{{}, 0, {}, 0, c.mA, c.iA, c.mB, c.iB};
+        const RowJacobian J = PointRow(c.normal, rA, rB);
+        const Real lambda = -C * RowMass(InverseEffectiveMass(J, masses));
+        const Vec2 P = lambda * c.normal;
+        dA.dp -= c.mA * P;
+        Turn(dA, -c.iA * lambda * J.aA);
+        dB.dp += c.mB * P;
+        Turn(dB, c.iB * lambda * J.aB);
     }
 }
 
@@ -289,8 +306,10 @@ void SoftContactSolver::Restitution(const SoftStepContext& context)
 
 void SoftContactSolver::ScaleImpulses(Real factor)
 {
-    for (SoftContact& c : m_contacts)
+    m_lanes.ScaleImpulses(factor);
+    for (const std::int32_t k : m_lanes.Overflow())
     {
+        SoftContact& c = m_contacts[k];
         for (int j = 0; j < c.pointCount; ++j)
         {
             c.points[j].normalImpulse *= factor;
@@ -302,10 +321,12 @@ void SoftContactSolver::ScaleImpulses(Real factor)
 
 void SoftContactSolver::SaveImpulses()
 {
+    m_lanes.SaveImpulses();
     m_saved.clear();
     m_savedRolling.clear();
-    for (const SoftContact& c : m_contacts)
+    for (const std::int32_t k : m_lanes.Overflow())
     {
+        const SoftContact& c = m_contacts[k];
         m_savedRolling.push_back(c.rollingImpulse);
         for (int j = 0; j < c.pointCount; ++j)
         {
@@ -316,17 +337,24 @@ void SoftContactSolver::SaveImpulses()
 
 void SoftContactSolver::RestoreImpulses()
 {
+    m_lanes.RestoreImpulses();
     std::size_t i = 0;
-    for (std::size_t k = 0; k < m_contacts.size(); ++k)
+    const std::span<const std::int32_t> overflow = m_lanes.Overflow();
+    for (std::size_t o = 0; o < overflow.size(); ++o)
     {
-        SoftContact& c = m_contacts[k];
-        c.rollingImpulse = m_savedRolling[k];
+        SoftContact& c = m_contacts[overflow[o]];
+        c.rollingImpulse = m_savedRolling[o];
         for (int j = 0; j < c.pointCount; ++j, ++i)
         {
             c.points[j].normalImpulse = m_saved[i].x;
             c.points[j].tangentImpulse = m_saved[i].y;
         }
     }
+}
+
+void SoftContactSolver::CollectLanes()
+{
+    m_lanes.Collect(m_contacts);
 }
 
 void SoftContactSolver::Store(std::span<Contact> contacts, const SoftStepContext& context)

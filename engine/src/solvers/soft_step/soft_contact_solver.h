@@ -15,6 +15,7 @@
 #pragma once
 
 #include "solvers/box2d/contact_constraint.h"
+#include "solvers/soft_step/soft_contact_lanes.h"
 #include "solvers/soft_step/soft_row.h"
 #include "solvers/soft_step/soft_step_context.h"
 
@@ -26,6 +27,17 @@ namespace meff::detail
 {
 
 struct Contact;
+
+/// A point's separation + linearSlop now (m), the normal row's C, from the separation at the
+/// step's start and the bodies' motion since (dp, dq): s = base + (dpB − dpA + dqB·rB − dqA·rA)·n.
+/// Written once for a Real and for SIMD lanes (soft_contact_lanes.cpp).
+template <typename R, typename V, typename Q>
+[[gnu::always_inline]] inline R SeparationOf(R base, V n, V dpA, Q dqA, V dpB, Q dqB, V rA, V rB,
+                                             R slop)
+{
+    const V d = (dpB - dpA) + (Mul(dqB, rB) - Mul(dqA, rA));
+    return base + Dot(d, n) + slop;
+}
 
 struct SoftContactPoint
 {
@@ -58,7 +70,9 @@ struct SoftContact
 class SoftContactSolver
 {
   public:
-    /// Builds the rows of the island's contacts at the bodies' poses of the step's start.
+    /// Builds the rows of the island's contacts at the bodies' poses of the step's start, and
+    /// packs the coloured ones into SIMD lanes (soft_contact_lanes.h). Every pass below solves
+    /// the lanes colour by colour, then the contacts no colour had room for one by one.
     void Prepare(const IslandContacts& island, const SoftStepContext& context);
     void WarmStart(const SoftStepContext& context);
     /// One sweep: solving (`useBias`; soft contacts push overlapping points apart) or relaxing.
@@ -73,6 +87,9 @@ class SoftContactSolver
     /// solved (its impulses count towards the step's totals, not towards the warm start).
     void SaveImpulses();
     void RestoreImpulses();
+    /// Copies the lanes' impulses into the contacts' rows: call after the sub-steps, before
+    /// Restitution and Store.
+    void CollectLanes();
     /// Writes the sub-step impulses × substeps into the manifolds (per-step impulses, as the
     /// other back ends store them: next step's warm start) and fills SolvedContacts().
     void Store(std::span<Contact> contacts, const SoftStepContext& context);
@@ -83,11 +100,17 @@ class SoftContactSolver
   private:
     void SolveNormalRows(SoftContact& c, RowBodies& b, const SoftStepContext& context,
                          bool useBias);
+    void WarmStartContact(SoftContact& c, const SoftStepContext& context);
+    void SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias);
+    void CorrectContact(const SoftContact& c, const SoftStepContext& context);
 
-    std::vector<SoftContact> m_contacts;
+    std::vector<SoftContact> m_contacts; ///< island order
+    SoftContactLanes m_lanes;
     std::vector<SolvedContact> m_solved;
-    std::vector<Vec2> m_saved;        ///< normal and tangent impulse of each point (SaveImpulses)
-    std::vector<Real> m_savedRolling; ///< each contact's rolling impulse (SaveImpulses)
+    /// The overflow's normal and tangent impulse of each point and rolling impulse
+    /// (SaveImpulses).
+    std::vector<Vec2> m_saved;
+    std::vector<Real> m_savedRolling;
     bool m_anyHitEvents = false;
 };
 

@@ -60,10 +60,37 @@ inline RowJacobian AngularRow()
     return {{0, 0}, 1, 1, false};
 }
 
+// The arithmetic of a row, written once for one row (R = Real, V = Vec2) and for a SIMD lane
+// group of rows (R = RealW, V = Vec2W: soft_contact_lanes.h), with the same operations in the
+// same order, so that a row gives the same bits whichever way it is solved.
+
+/// The angular terms of the seed's k: (rA×n)²/IA + (rB×n)²/IB with aA = rA×n, aB = rB×n.
+template <typename R>
+[[gnu::always_inline]] inline R AngularInverseMass(R aA, R aB, R iA, R iB)
+{
+    return iA * aA * aA + iB * aB * aB;
+}
+
+/// J·v = n·(vB − vA) + aB·wB − aA·wA.
+template <typename V, typename R>
+[[gnu::always_inline]] inline R RowVelocityOf(V n, R aA, R aB, V vA, R wA, V vB, R wB)
+{
+    return Dot(n, vB - vA) + aB * wB - aA * wA;
+}
+
+/// The soft update's impulse before clamping (softness.h): −m_eff·(massScale·Cdot + bias) −
+/// impulseScale·λ_accumulated.
+template <typename R>
+[[gnu::always_inline]] inline R SoftImpulseOf(R mass, R cdot, R bias, R massScale, R impulseScale,
+                                              R accumulated)
+{
+    return -mass * (massScale * cdot + bias) - impulseScale * accumulated;
+}
+
 /// The seed's inverse effective mass of row J.
 inline Real InverseEffectiveMass(const RowJacobian& J, const RowBodies& b)
 {
-    const Real angular = b.iA * J.aA * J.aA + b.iB * J.aB * J.aB;
+    const Real angular = AngularInverseMass(J.aA, J.aB, b.iA, b.iB);
     return J.linear ? b.mA + b.mB + angular : angular;
 }
 
@@ -75,17 +102,25 @@ inline Real RowMass(Real k)
 
 inline Real RowVelocity(const RowJacobian& J, const RowBodies& b)
 {
-    return Dot(J.n, b.vB - b.vA) + J.aB * b.wB - J.aA * b.wA;
+    return RowVelocityOf(J.n, J.aA, J.aB, b.vA, b.wA, b.vB, b.wB);
+}
+
+/// Applies the row impulse λ along n with levers aA, aB: +λ·J to B, −λ·J to A.
+template <typename V, typename R>
+[[gnu::always_inline]] inline void ApplyRowImpulseOf(V n, R aA, R aB, R lambda, R mA, R iA, R mB,
+                                                     R iB, V& vA, R& wA, V& vB, R& wB)
+{
+    const V P = lambda * n;
+    vA = vA - mA * P;
+    wA = wA - iA * lambda * aA;
+    vB = vB + mB * P;
+    wB = wB + iB * lambda * aB;
 }
 
 /// Applies the row impulse λ: +λ·J to B, −λ·J to A.
 inline void ApplyRowImpulse(const RowJacobian& J, Real lambda, RowBodies& b)
 {
-    const Vec2 P = lambda * J.n;
-    b.vA -= b.mA * P;
-    b.wA -= b.iA * lambda * J.aA;
-    b.vB += b.mB * P;
-    b.wB += b.iB * lambda * J.aB;
+    ApplyRowImpulseOf(J.n, J.aA, J.aB, lambda, b.mA, b.iA, b.mB, b.iB, b.vA, b.wA, b.vB, b.wB);
 }
 
 /// What a row is driven to this update: the velocity bias (for a soft row already ×
@@ -128,8 +163,8 @@ inline RowTarget OneSidedTarget(Real C, bool useBias, const Softness& softness, 
 inline Real SoftRowImpulse(Real mass, Real cdot, const RowTarget& target, Real& accumulated,
                            Real lower = -kMaxReal, Real upper = kMaxReal)
 {
-    const Real impulse = -mass * (target.softness.massScale * cdot + target.bias) -
-                         target.softness.impulseScale * accumulated;
+    const Real impulse = SoftImpulseOf(mass, cdot, target.bias, target.softness.massScale,
+                                       target.softness.impulseScale, accumulated);
     const Real next = Clamp(accumulated + impulse, lower, upper);
     const Real applied = next - accumulated;
     accumulated = next;

@@ -64,12 +64,14 @@ void SoftStepSolver::SolveIsland(SolverWorld& world, Island& island, const StepC
         SubStep(i == 0, step);
     }
     CloseStep();
+    m_contacts.CollectLanes();
     m_contacts.Restitution(m_context);
     m_contacts.Store(world.contacts, m_context);
     for (Joint* joint : m_joints)
     {
         ScaleJointImpulses(*joint, Real(m_context.substeps));
     }
+    m_revolutes.Store(Real(m_context.substeps));
 
     ScatterSoftBodies(m_bodies, island);
     FinishBodies(world, island);
@@ -114,6 +116,7 @@ void SoftStepSolver::ScaleImpulses(Real factor)
         return;
     }
     m_contacts.ScaleImpulses(factor);
+    m_revolutes.ScaleImpulses(factor);
     for (Joint* joint : m_joints)
     {
         ScaleJointImpulses(*joint, factor);
@@ -130,6 +133,7 @@ void SoftStepSolver::CloseStep()
     m_contacts.SaveImpulses();
     m_contacts.ScaleImpulses(Real(0.5));
     m_contacts.WarmStart(m_context);
+    m_revolutes.CloseStep(m_context);
     for (std::size_t k = 0; k < m_joints.size(); ++k)
     {
         Joint scratch = *m_joints[k];
@@ -146,22 +150,61 @@ void SoftStepSolver::CloseStep()
 void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Real warmScale)
 {
     m_joints.clear();
-    m_frames.resize(island.joints.size());
-    for (std::size_t k = 0; k < island.joints.size(); ++k)
+    m_frames.clear();
+    std::size_t laneCandidates = 0;
+    for (const std::int32_t index : island.joints)
     {
-        Joint& joint = world.joints[island.joints[k]].joint;
+        Joint& joint = world.joints[index].joint;
         const Body& bodyA = world.bodies[joint.bodyA];
         const Body& bodyB = world.bodies[joint.bodyB];
         StoreOtherJointBodies(joint, world.bodies);
-        PrepareSoftJoint(joint, m_frames[k], JointBodyOf(bodyA), JointBodyOf(bodyB),
+        PrepareSoftJoint(joint, m_frames.emplace_back(), JointBodyOf(bodyA), JointBodyOf(bodyB),
                          m_bodies.start[bodyA.islandIndex], m_bodies.start[bodyB.islandIndex],
                          warmScale, m_context);
         m_joints.push_back(&joint);
+        laneCandidates += SoftRevoluteLanes::LaneJoint(joint, m_context) != nullptr ? 1 : 0;
+    }
+    SplitLaneJoints(laneCandidates >= kMinSoftLaneRows);
+}
+
+void SoftStepSolver::SplitLaneJoints(bool useLanes)
+{
+    m_laneJoints.clear();
+    m_laneJointSlots.clear();
+    m_laneFrames.clear();
+    if (useLanes)
+    {
+        // The plain revolute joints go to the lanes; the others stay in island order.
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < m_joints.size(); ++k)
+        {
+            if (RevoluteJoint* revolute = SoftRevoluteLanes::LaneJoint(*m_joints[k], m_context))
+            {
+                m_laneJoints.push_back(revolute);
+                m_laneJointSlots.push_back(m_joints[k]);
+                m_laneFrames.push_back(m_frames[k]);
+                continue;
+            }
+            m_joints[kept] = m_joints[k];
+            m_frames[kept] = m_frames[k];
+            ++kept;
+        }
+        m_joints.resize(kept);
+        m_frames.resize(kept);
+    }
+    m_revolutes.Prepare(m_laneJoints, m_laneFrames,
+                        static_cast<std::int32_t>(m_bodies.start.size()));
+    // The lane joints no colour had room for, after the others.
+    for (const std::int32_t k : m_revolutes.Overflow())
+    {
+        m_joints.push_back(m_laneJointSlots[k]);
+        m_frames.push_back(m_laneFrames[k]);
     }
 }
 
 void SoftStepSolver::WarmStartJoints()
 {
+    m_revolutes.WarmStart(m_context);
     for (std::size_t k = 0; k < m_joints.size(); ++k)
     {
         WarmStartSoftJoint(*m_joints[k], m_frames[k], m_context);
@@ -170,6 +213,7 @@ void SoftStepSolver::WarmStartJoints()
 
 void SoftStepSolver::SolveJoints(bool useBias)
 {
+    m_revolutes.Solve(m_context, useBias);
     for (std::size_t k = 0; k < m_joints.size(); ++k)
     {
         SolveSoftJoint(*m_joints[k], m_frames[k], m_context, useBias);

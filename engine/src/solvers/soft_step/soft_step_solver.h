@@ -22,6 +22,7 @@
 #include "solvers/soft_step/soft_bodies.h"
 #include "solvers/soft_step/soft_contact_solver.h"
 #include "solvers/soft_step/soft_joint.h"
+#include "solvers/soft_step/soft_revolute_lanes.h"
 #include "solvers/solver.h"
 
 #include <vector>
@@ -44,6 +45,8 @@ class SoftStepSolver final : public Solver
   private:
     void SolveIsland(SolverWorld& world, Island& island, const StepContext& step);
     void PrepareJoints(SolverWorld& world, const Island& island, Real warmScale);
+    /// With `useLanes`, moves the plain revolute joints of the prepared joints to the lanes.
+    void SplitLaneJoints(bool useLanes);
     void SubStep(bool first, const StepContext& step);
     /// Scales every accumulated impulse of the island (contacts and joints).
     void ScaleImpulses(Real factor);
@@ -58,8 +61,16 @@ class SoftStepSolver final : public Solver
     Island m_island;
     SoftBodies m_bodies;
     SoftContactSolver m_contacts;
+    /// The joints solved one by one (in island order, then the lane joints no colour took),
+    /// and their frames.
     std::vector<Joint*> m_joints;
     std::vector<SoftJointFrame> m_frames;
+    /// The plain revolute joints, solved by colour in SIMD lanes (soft_revolute_lanes.h), and
+    /// their frames while they are prepared.
+    SoftRevoluteLanes m_revolutes;
+    std::vector<RevoluteJoint*> m_laneJoints;
+    std::vector<Joint*> m_laneJointSlots;
+    std::vector<SoftJointFrame> m_laneFrames;
 };
 
 /// The soft coefficients of one step's sub-steps from the settings (SoftStepSettings): contact

@@ -1,0 +1,495 @@
+#include "solvers/soft_step/soft_contact_lanes.h"
+
+#include "solvers/box2d/contact_constraint.h"
+#include "solvers/lanes/lane_bodies.h"
+#include "solvers/soft_step/soft_contact_solver.h"
+#include "solvers/soft_step/soft_delta_lanes.h"
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// Clamp with Box2D's tie rule, as the scalar Clamp: Max(low, Min(a, high)).
+[[gnu::always_inline]] inline RealW ClampW(RealW a, RealW low, RealW high)
+{
+    return MaxW(low, MinW(a, high));
+}
+
+/// 1/k, or 0 for a row no body can move along (as RowMass).
+[[gnu::always_inline]] inline RealW RowMassW(RealW k)
+{
+    const MaskW positive = k > 0;
+    return Select(positive, Splat(1) / Select(positive, k, Splat(1)), Splat(0));
+}
+
+/// SmallRotation per lane: the same series, and std::sin/std::cos in lanes beyond 0.5 rad.
+RotW SmallRotationW(RealW angle)
+{
+    RotW q;
+    SmallRotationSeries(angle, q.s, q.c);
+    const MaskW large = MaxW(angle, -angle) > Real(0.5);
+    if (AnyLane(large))
+    {
+        for (int l = 0; l < kLanes; ++l)
+        {
+            if (large[l] != 0)
+            {
+                const Rot r(angle[l]);
+                q.s[l] = r.s;
+                q.c[l] = r.c;
+            }
+        }
+    }
+    return q;
+}
+
+/// q·r, as Mul(Rot, Rot).
+[[gnu::always_inline]] inline RotW MulRot(RotW q, RotW r)
+{
+    return {q.s * r.c + q.c * r.s, q.c * r.c - q.s * r.s};
+}
+
+/// A row's target per lane (RowTarget): the bias and the softness it is solved with.
+struct TargetW
+{
+    RealW bias, massScale, impulseScale;
+};
+
+/// OneSidedTarget per lane for a normal row at error C.
+[[gnu::always_inline]] inline TargetW NormalTarget(const SoftContactGroup& g, RealW C, bool pushOut,
+                                                   Real invH, Real maxPush)
+{
+    const MaskW apart = C > 0;
+    const RealW speculative = MinW(C, Splat(Real(1e9))) * invH;
+    if (!pushOut)
+    {
+        return {Select(apart, speculative, Splat(0)), Splat(1), Splat(0)};
+    }
+    const RealW push = MaxW(g.softBias * C, Splat(-maxPush));
+    return {Select(apart, speculative, push), Select(apart, Splat(1), g.softMass),
+            Select(apart, Splat(0), g.softImpulse)};
+}
+
+/// Applies impulse λ along n at point j's levers (ApplyRowImpulse).
+[[gnu::always_inline]] inline void ApplyRow(const SoftContactGroup& g, Vec2W n, RealW aA, RealW aB,
+                                            RealW lambda, BodyStateW& a, BodyStateW& b)
+{
+    ApplyRowImpulseOf(n, aA, aB, lambda, g.invMassA, g.invIA, g.invMassB, g.invIB, a.linear,
+                      a.angular, b.linear, b.angular);
+}
+
+/// J·v of the row along n through point j's levers.
+[[gnu::always_inline]] inline RealW RowVelocityW(Vec2W n, RealW aA, RealW aB, const BodyStateW& a,
+                                                 const BodyStateW& b)
+{
+    return RowVelocityOf(n, aA, aB, a.linear, a.angular, b.linear, b.angular);
+}
+
+/// The normal rows one by one (SolveRow, accumulated impulse ≥ 0).
+[[gnu::always_inline]] inline void SolveNormalRows(SoftContactGroup& g, const TargetW (&t)[2],
+                                                   BodyStateW& a, BodyStateW& b)
+{
+    for (int j = 0; j < 2; ++j)
+    {
+        const RealW aA = Cross(g.rA[j], g.normal), aB = Cross(g.rB[j], g.normal);
+        const RealW impulse =
+            SoftImpulseOf(g.normalMass[j], RowVelocityW(g.normal, aA, aB, a, b), t[j].bias,
+                          t[j].massScale, t[j].impulseScale, g.normalImpulse[j]);
+        const RealW next = ClampW(g.normalImpulse[j] + impulse, Splat(0), Splat(kMaxReal));
+        const RealW applied = next - g.normalImpulse[j];
+        g.normalImpulse[j] = next;
+        ApplyRow(g, g.normal, aA, aB, applied, a, b);
+        g.totalNormalImpulse[j] += applied;
+    }
+}
+
+/// The two normal rows as one block (SolveTwoPointBlock's cases in its order); a lane where no
+/// case holds keeps its impulses.
+[[gnu::always_inline]] inline void SolveNormalBlock(SoftContactGroup& g, const TargetW (&t)[2],
+                                                    BodyStateW& a, BodyStateW& b)
+{
+    const RealW aA1 = Cross(g.rA[0], g.normal), aB1 = Cross(g.rB[0], g.normal);
+    const RealW aA2 = Cross(g.rA[1], g.normal), aB2 = Cross(g.rB[1], g.normal);
+    const RealW a1 = g.normalImpulse[0], a2 = g.normalImpulse[1];
+    const RealW v1 = RowVelocityW(g.normal, aA1, aB1, a, b) + t[0].bias;
+    const RealW v2 = RowVelocityW(g.normal, aA2, aB2, a, b) + t[1].bias;
+    const RealW b1 = v1 - (g.k11 * a1 + g.k12 * a2);
+    const RealW b2 = v2 - (g.k12 * a1 + g.k22 * a2);
+    const RealW zero = Splat(0);
+    const RealW x1 = -(g.inv11 * b1 + g.inv12 * b2);
+    const RealW x2 = -(g.inv21 * b1 + g.inv22 * b2);
+    const MaskW case1 = (x1 >= 0) & (x2 >= 0);
+    const RealW y1 = -g.normalMass[0] * b1;
+    const MaskW case2 = (y1 >= 0) & (g.k12 * y1 + b2 >= 0);
+    const RealW z2 = -g.normalMass[1] * b2;
+    const MaskW case3 = (z2 >= 0) & (g.k12 * z2 + b1 >= 0);
+    const MaskW case4 = (b1 >= 0) & (b2 >= 0);
+    RealW new1 = Select(case4, zero, a1), new2 = Select(case4, zero, a2);
+    new1 = Select(case3, zero, new1);
+    new2 = Select(case3, z2, new2);
+    new1 = Select(case2, y1, new1);
+    new2 = Select(case2, zero, new2);
+    new1 = Select(case1, x1, new1);
+    new2 = Select(case1, x2, new2);
+    const RealW applied1 = new1 - a1, applied2 = new2 - a2;
+    ApplyRow(g, g.normal, aA1, aB1, applied1, a, b);
+    ApplyRow(g, g.normal, aA2, aB2, applied2, a, b);
+    g.normalImpulse[0] = new1;
+    g.normalImpulse[1] = new2;
+    g.totalNormalImpulse[0] += applied1;
+    g.totalNormalImpulse[1] += applied2;
+}
+
+/// Friction of both points (rigid, driven to the conveyor's speed, |λt| ≤ μ·λn), in the lanes
+/// with μ > 0.
+[[gnu::always_inline]] inline void SolveFriction(SoftContactGroup& g, BodyStateW& a, BodyStateW& b)
+{
+    const Vec2W tangent{g.normal.y, -g.normal.x};
+    const RealW bias = -g.tangentSpeed;
+    for (int j = 0; j < 2; ++j)
+    {
+        const RealW aA = Cross(g.rA[j], tangent), aB = Cross(g.rB[j], tangent);
+        const RealW maxFriction = g.friction * g.normalImpulse[j];
+        const RealW impulse = SoftImpulseOf(g.tangentMass[j], RowVelocityW(tangent, aA, aB, a, b),
+                                            bias, Splat(1), Splat(0), g.tangentImpulse[j]);
+        const RealW next = ClampW(g.tangentImpulse[j] + impulse, -maxFriction, maxFriction);
+        const RealW applied = Select(g.hasFriction, next - g.tangentImpulse[j], Splat(0));
+        g.tangentImpulse[j] = Select(g.hasFriction, next, g.tangentImpulse[j]);
+        ApplyRow(g, tangent, aA, aB, applied, a, b);
+        g.totalTangentImpulse[j] += applied;
+    }
+}
+
+/// The spin rows of rolling resistance, lane by lane (rare).
+void SolveRolling(SoftContactGroup& g, BodyStateW& a, BodyStateW& b)
+{
+    for (int l = 0; l < kLanes; ++l)
+    {
+        if (!(g.rollingResistance[l] > 0))
+        {
+            continue;
+        }
+        Real accumulated = g.rollingImpulse[l];
+        const Real lambda = SolveRollingRow(g.rollingMass[l], g.rollingResistance[l],
+                                            g.normalImpulse[0][l] + g.normalImpulse[1][l],
+                                            a.angular[l], b.angular[l], accumulated);
+        g.rollingImpulse[l] = accumulated;
+        a.angular[l] -= g.invIA[l] * lambda;
+        b.angular[l] += g.invIB[l] * lambda;
+        g.totalRollingImpulse[l] += lambda;
+    }
+}
+
+void WarmStartGroup(SoftContactGroup& g, Velocity* velocities)
+{
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
+    const Vec2W tangent{g.normal.y, -g.normal.x};
+    for (int j = 0; j < 2; ++j)
+    {
+        const Vec2W P = g.normalImpulse[j] * g.normal + g.tangentImpulse[j] * tangent;
+        ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA[j], g.rB[j], P);
+        g.totalNormalImpulse[j] += g.normalImpulse[j];
+        g.totalTangentImpulse[j] += g.tangentImpulse[j];
+    }
+    a.angular = a.angular - g.invIA * g.rollingImpulse;
+    b.angular = b.angular + g.invIB * g.rollingImpulse;
+    g.totalRollingImpulse += g.rollingImpulse;
+    Scatter(velocities, g.storeA, a);
+    Scatter(velocities, g.storeB, b);
+}
+
+void SolveGroup(SoftContactGroup& g, const SoftStepContext& context, bool useBias, bool friction)
+{
+    Velocity* velocities = context.bodies->velocities.data();
+    const SoftDelta* deltas = context.bodies->deltas.data();
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
+    const DeltaW dA = GatherDeltas(deltas, g.indexA);
+    const DeltaW dB = GatherDeltas(deltas, g.indexB);
+    const RealW slop = Splat(context.step->tolerances.linearSlop);
+    // Rigid contacts leave the overlap to CorrectPositions; soft ones push it out here.
+    const bool pushOut = useBias && context.contactModel == SoftContactModel::Soft;
+    TargetW targets[2];
+    for (int j = 0; j < 2; ++j)
+    {
+        const RealW C = SeparationOf(g.baseSeparation[j], g.normal, dA.dp, dA.dq, dB.dp, dB.dq,
+                                     g.rA[j], g.rB[j], slop);
+        targets[j] = NormalTarget(g, C, pushOut, context.invH, context.maxPushOut);
+    }
+    // The block only where both rows are rigid now (always for rigid contacts).
+    MaskW block = g.block;
+    if (pushOut)
+    {
+        for (const TargetW& t : targets)
+        {
+            block = block & (t.massScale == 1) & (t.impulseScale == 0);
+        }
+    }
+    if (!AnyLane(block))
+    {
+        SolveNormalRows(g, targets, a, b);
+    }
+    else if (!AnyLane(g.valid & ~block))
+    {
+        SolveNormalBlock(g, targets, a, b);
+    }
+    else
+    {
+        // Mixed: each lane takes the velocities and impulses of its own kind of solve.
+        BodyStateW aRows = a, bRows = b;
+        SoftContactGroup rows = g;
+        SolveNormalRows(rows, targets, aRows, bRows);
+        SolveNormalBlock(g, targets, a, b);
+        a.linear = Select(block, a.linear, aRows.linear);
+        a.angular = Select(block, a.angular, aRows.angular);
+        b.linear = Select(block, b.linear, bRows.linear);
+        b.angular = Select(block, b.angular, bRows.angular);
+        for (int j = 0; j < 2; ++j)
+        {
+            g.normalImpulse[j] = Select(block, g.normalImpulse[j], rows.normalImpulse[j]);
+            g.totalNormalImpulse[j] =
+                Select(block, g.totalNormalImpulse[j], rows.totalNormalImpulse[j]);
+        }
+    }
+    if (friction)
+    {
+        SolveFriction(g, a, b);
+        if (g.anyRolling)
+        {
+            SolveRolling(g, a, b);
+        }
+    }
+    Scatter(velocities, g.storeA, a);
+    Scatter(velocities, g.storeB, b);
+}
+
+void CorrectGroup(const SoftContactGroup& g, const SoftStepContext& context)
+{
+    SoftDelta* deltas = context.bodies->deltas.data();
+    DeltaW dA = GatherDeltas(deltas, g.indexA);
+    DeltaW dB = GatherDeltas(deltas, g.indexB);
+    const RealW slop = Splat(context.step->tolerances.linearSlop);
+    const RealW maxCorrection = Splat(context.maxPushOut * context.h);
+    bool moved = false;
+    for (int j = 0; j < 2; ++j)
+    {
+        // Non-linear Gauss-Seidel on the separation: each point sees the last one's move.
+        const RealW C = ClampW(context.contactCorrection *
+                                   SeparationOf(g.baseSeparation[j], g.normal, dA.dp, dA.dq, dB.dp,
+                                                dB.dq, g.rA[j], g.rB[j], slop),
+                               -maxCorrection, Splat(0));
+        const MaskW move = g.hasPoint[j] & (C != 0);
+        if (!AnyLane(move))
+        {
+            continue;
+        }
+        moved = true;
+        const Vec2W rA = Mul(dA.dq, g.rA[j]);
+        const Vec2W rB = Mul(dB.dq, g.rB[j]);
+        const RealW aA = Cross(rA, g.normal), aB = Cross(rB, g.normal);
+        const RealW k = g.invMassA + g.invMassB + AngularInverseMass(aA, aB, g.invIA, g.invIB);
+        const RealW lambda = -C * RowMassW(k);
+        const Vec2W P = lambda * g.normal;
+        const DeltaW nextA{dA.dp - g.invMassA * P,
+                           MulRot(SmallRotationW(-g.invIA * lambda * aA), dA.dq)};
+        const DeltaW nextB{dB.dp + g.invMassB * P,
+                           MulRot(SmallRotationW(g.invIB * lambda * aB), dB.dq)};
+        dA = {Select(move, nextA.dp, dA.dp),
+              {Select(move, nextA.dq.s, dA.dq.s), Select(move, nextA.dq.c, dA.dq.c)}};
+        dB = {Select(move, nextB.dp, dB.dp),
+              {Select(move, nextB.dq.s, dB.dq.s), Select(move, nextB.dq.c, dB.dq.c)}};
+    }
+    if (moved)
+    {
+        ScatterDeltas(deltas, g.storeA, dA);
+        ScatterDeltas(deltas, g.storeB, dB);
+    }
+}
+
+/// Lane l of group g from contact c (prepared by SoftContactSolver).
+void PackLane(SoftContactGroup& g, int l, std::int32_t source, const SoftContact& c,
+              std::int32_t discardIndex)
+{
+    g.source[l] = source;
+    g.indexA[l] = c.indexA;
+    g.indexB[l] = c.indexB;
+    g.storeA[l] = SolverMoves(c.mA, c.iA) ? c.indexA : discardIndex;
+    g.storeB[l] = SolverMoves(c.mB, c.iB) ? c.indexB : discardIndex;
+    g.invMassA[l] = c.mA;
+    g.invIA[l] = c.iA;
+    g.invMassB[l] = c.mB;
+    g.invIB[l] = c.iB;
+    g.friction[l] = c.friction;
+    g.tangentSpeed[l] = c.tangentSpeed;
+    g.rollingResistance[l] = c.rollingResistance;
+    g.rollingMass[l] = c.rollingMass;
+    g.rollingImpulse[l] = c.rollingImpulse;
+    g.totalRollingImpulse[l] = c.totalRollingImpulse;
+    g.anyRolling = g.anyRolling || c.rollingResistance > 0;
+    g.softBias[l] = c.softness.biasScale;
+    g.softMass[l] = c.softness.massScale;
+    g.softImpulse[l] = c.softness.impulseScale;
+    g.normal.x[l] = c.normal.x;
+    g.normal.y[l] = c.normal.y;
+    for (int j = 0; j < c.pointCount; ++j)
+    {
+        const SoftContactPoint& p = c.points[j];
+        g.rA[j].x[l] = p.rA.x;
+        g.rA[j].y[l] = p.rA.y;
+        g.rB[j].x[l] = p.rB.x;
+        g.rB[j].y[l] = p.rB.y;
+        g.baseSeparation[j][l] = p.baseSeparation;
+        g.normalMass[j][l] = p.normalMass;
+        g.tangentMass[j][l] = p.tangentMass;
+        g.normalImpulse[j][l] = p.normalImpulse;
+        g.tangentImpulse[j][l] = p.tangentImpulse;
+        g.totalNormalImpulse[j][l] = p.totalNormalImpulse;
+        g.totalTangentImpulse[j][l] = p.totalTangentImpulse;
+        g.hasPoint[j][l] = -1;
+    }
+    if (c.block)
+    {
+        g.block[l] = -1;
+        g.k11[l] = c.K.ex.x;
+        g.k12[l] = c.K.ex.y;
+        g.k22[l] = c.K.ey.y;
+        g.inv11[l] = c.invK.ex.x;
+        g.inv12[l] = c.invK.ey.x;
+        g.inv21[l] = c.invK.ex.y;
+        g.inv22[l] = c.invK.ey.y;
+    }
+    g.hasFriction[l] = c.friction > 0 ? -1 : 0;
+    g.valid[l] = -1;
+}
+
+} // namespace
+
+void SoftContactLanes::Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount)
+{
+    ColourSoftRows(
+        contacts.size(), bodyCount,
+        [&](std::size_t i)
+        {
+            const SoftContact& c = contacts[i];
+            return ConstraintBodies{c.indexA, c.indexB, SolverMoves(c.mA, c.iA),
+                                    SolverMoves(c.mB, c.iB)};
+        },
+        m_colouring);
+    m_groups.clear();
+    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
+    {
+        const std::int32_t end = m_colouring.colourStarts[colour + 1];
+        for (std::int32_t first = m_colouring.colourStarts[colour]; first < end; first += kLanes)
+        {
+            SoftContactGroup& g = m_groups.emplace_back();
+            for (int l = 0; l < kLanes; ++l)
+            {
+                g.source[l] = -1;
+                g.storeA[l] = g.storeB[l] = bodyCount;
+            }
+            int filled = 0;
+            for (; filled < kLanes && first + filled < end; ++filled)
+            {
+                const std::int32_t k = m_colouring.order[first + filled];
+                PackLane(g, filled, k, contacts[k], bodyCount);
+            }
+            // Empty lanes read lane 0's bodies and change nothing (zero masses, no point).
+            for (int l = filled; l < kLanes; ++l)
+            {
+                g.indexA[l] = g.indexA[0];
+                g.indexB[l] = g.indexB[0];
+            }
+        }
+    }
+}
+
+void SoftContactLanes::WarmStart(const SoftStepContext& context)
+{
+    for (SoftContactGroup& g : m_groups)
+    {
+        WarmStartGroup(g, context.bodies->velocities.data());
+    }
+}
+
+void SoftContactLanes::Solve(const SoftStepContext& context, bool useBias)
+{
+    const bool friction = !useBias || context.frictionInSolve;
+    for (SoftContactGroup& g : m_groups)
+    {
+        SolveGroup(g, context, useBias, friction);
+    }
+}
+
+void SoftContactLanes::CorrectPositions(const SoftStepContext& context)
+{
+    for (const SoftContactGroup& g : m_groups)
+    {
+        CorrectGroup(g, context);
+    }
+}
+
+void SoftContactLanes::ScaleImpulses(Real factor)
+{
+    for (SoftContactGroup& g : m_groups)
+    {
+        for (int j = 0; j < 2; ++j)
+        {
+            g.normalImpulse[j] *= factor;
+            g.tangentImpulse[j] *= factor;
+        }
+        g.rollingImpulse *= factor;
+    }
+}
+
+void SoftContactLanes::SaveImpulses()
+{
+    m_saved.resize(m_groups.size());
+    for (std::size_t i = 0; i < m_groups.size(); ++i)
+    {
+        const SoftContactGroup& g = m_groups[i];
+        m_saved[i] = {{g.normalImpulse[0], g.normalImpulse[1]},
+                      {g.tangentImpulse[0], g.tangentImpulse[1]},
+                      g.rollingImpulse};
+    }
+}
+
+void SoftContactLanes::RestoreImpulses()
+{
+    for (std::size_t i = 0; i < m_groups.size(); ++i)
+    {
+        SoftContactGroup& g = m_groups[i];
+        const SoftGroupImpulses& saved = m_saved[i];
+        for (int j = 0; j < 2; ++j)
+        {
+            g.normalImpulse[j] = saved.normal[j];
+            g.tangentImpulse[j] = saved.tangent[j];
+        }
+        g.rollingImpulse = saved.rolling;
+    }
+}
+
+void SoftContactLanes::Collect(std::span<SoftContact> contacts) const
+{
+    for (const SoftContactGroup& g : m_groups)
+    {
+        for (int l = 0; l < kLanes && g.source[l] >= 0; ++l)
+        {
+            SoftContact& c = contacts[g.source[l]];
+            c.rollingImpulse = g.rollingImpulse[l];
+            c.totalRollingImpulse = g.totalRollingImpulse[l];
+            for (int j = 0; j < c.pointCount; ++j)
+            {
+                SoftContactPoint& p = c.points[j];
+                p.normalImpulse = g.normalImpulse[j][l];
+                p.tangentImpulse = g.tangentImpulse[j][l];
+                p.totalNormalImpulse = g.totalNormalImpulse[j][l];
+                p.totalTangentImpulse = g.totalTangentImpulse[j][l];
+            }
+        }
+    }
+}
+
+} // namespace meff::detail

@@ -1,0 +1,112 @@
+// The soft step's contact rows by colour in SIMD lanes: the island's contacts are coloured as
+// the colour back end colours them (contact_colouring.h: a colour's contacts share no body the
+// solver moves) and each colour's contacts are packed kLanes (four; AVX2: eight) to a group, from
+// the rows SoftContactSolver prepared one by one. Every pass of the sub-steps — warm start, the
+// biased and the relax sweeps, the rigid position correction, the impulses' scaling, saving and
+// restoring — then runs group by group, colour after colour, each lane doing a contact's
+// operations in the same order as the scalar rows (soft_row.h's templates are the same code),
+// so a contact solved in a lane gives the bits it would give solved alone in that order. Only the
+// Gauss-Seidel order changes (colour order instead of island order), and it does not depend on
+// the lane count: the SSE2 and AVX2 builds give the same results. The contacts no colour had room
+// for are left to the caller, which solves them one by one after the lanes.
+#pragma once
+
+#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/wide_real.h"
+#include "solvers/soft_step/soft_step_context.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace meff::detail
+{
+
+struct SoftContact;
+
+/// An island with fewer rows of a kind (contacts; plain revolute joints) than this keeps them
+/// scalar, in island order: a handful of lane groups saves little, and island order carries a
+/// load along a short chain or stack in fewer sweeps than colour order, whose colours alternate
+/// along it (chain20's largest anchor gap: 11.8 mm in island order, 14.6 mm by colour). The
+/// threshold counts rows, not groups, so it does not depend on the lane count.
+inline constexpr std::size_t kMinSoftLaneRows = 32;
+
+/// Colours `count` rows for the soft step's lanes (ColourConstraints, the rows' bodies from
+/// `bodiesOf(i)`), or leaves every row to the overflow, in order, below kMinSoftLaneRows.
+template <typename BodiesOf>
+void ColourSoftRows(std::size_t count, std::int32_t bodyCount, BodiesOf&& bodiesOf,
+                    ConstraintColouring& out)
+{
+    if (count < kMinSoftLaneRows)
+    {
+        out.order.clear();
+        out.colourStarts.assign(1, 0);
+        out.overflow.resize(count);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            out.overflow[i] = static_cast<std::int32_t>(i);
+        }
+        return;
+    }
+    ColourConstraints(count, static_cast<std::size_t>(bodyCount), bodiesOf, out);
+}
+
+/// kLanes contacts' rows, one per lane. A lane with one point has a second point whose masses,
+/// lever arms and impulses are zero, which the updates leave unchanged; an empty lane has zero
+/// masses throughout and writes the discard slot.
+struct SoftContactGroup
+{
+    std::int32_t source[kLanes];                 ///< the contact's island position, −1: empty
+    std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices
+    std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (discard slot)
+    RealW invMassA, invIA, invMassB, invIB;      ///< 1/kg, 1/(kg·m²)
+    RealW friction, tangentSpeed;                ///< μ; the conveyor's speed (m/s)
+    RealW rollingResistance, rollingMass, rollingImpulse, totalRollingImpulse;
+    RealW softBias, softMass, softImpulse; ///< the normal rows' Softness while solving
+    Vec2W normal;
+    Vec2W rA[2], rB[2];                        ///< lever arms at the step's start (m)
+    RealW baseSeparation[2];                   ///< separation − (rB − rA)·n at the start (m)
+    RealW normalMass[2], tangentMass[2];       ///< 1/k of each row (kg)
+    RealW normalImpulse[2], tangentImpulse[2]; ///< accumulated in this sub-step (N·s)
+    RealW totalNormalImpulse[2], totalTangentImpulse[2];
+    RealW k11, k12, k22;              ///< the normal rows' block K (1/kg)
+    RealW inv11, inv12, inv21, inv22; ///< K⁻¹
+    MaskW hasPoint[2];
+    MaskW block;       ///< two-point lanes whose normal rows are solved as the block
+    MaskW hasFriction; ///< lanes with μ > 0
+    MaskW valid;       ///< lanes holding a contact
+    bool anyRolling = false;
+};
+
+/// The accumulated impulses of one group, kept aside by SaveImpulses.
+struct SoftGroupImpulses
+{
+    RealW normal[2], tangent[2], rolling;
+};
+
+class SoftContactLanes
+{
+  public:
+    /// Colours the island's prepared contacts (island order) and packs the coloured ones into
+    /// groups. `bodyCount` is the island's; its discard slot is bodyCount.
+    void Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount);
+    /// Island positions of the contacts no colour had room for, in island order.
+    std::span<const std::int32_t> Overflow() const { return m_colouring.overflow; }
+
+    void WarmStart(const SoftStepContext& context);
+    void Solve(const SoftStepContext& context, bool useBias);
+    void CorrectPositions(const SoftStepContext& context);
+    void ScaleImpulses(Real factor);
+    void SaveImpulses();
+    void RestoreImpulses();
+    /// Copies the lanes' impulses and totals back into their contacts.
+    void Collect(std::span<SoftContact> contacts) const;
+
+  private:
+    ConstraintColouring m_colouring;
+    std::vector<SoftContactGroup> m_groups; ///< colour after colour
+    std::vector<SoftGroupImpulses> m_saved;
+};
+
+} // namespace meff::detail

@@ -1,0 +1,92 @@
+// The soft step's body motions (SoftDelta: dp, dq since the step began) in SIMD lanes: kLanes
+// bodies' deltas gathered from the island's array into lanes and scattered back, as
+// lane_bodies.h does for velocities — shared by the soft step's contact and joint lanes.
+#pragma once
+
+#include "solvers/lanes/lane_bodies.h"
+#include "solvers/soft_step/soft_bodies.h"
+
+#include <cstdint>
+#include <cstring>
+
+namespace meff::detail
+{
+
+static_assert(sizeof(SoftDelta) == sizeof(Real4) && alignof(SoftDelta) == sizeof(Real4));
+
+/// Each lane's body motion since the step began (SoftDelta).
+struct DeltaW
+{
+    Vec2W dp;
+    RotW dq;
+};
+
+/// Four bodies' deltas (dp.x, dp.y, dq.s, dq.c): four vector loads and a 4×4 transpose.
+[[gnu::always_inline]] inline void GatherDeltas4(const SoftDelta* deltas, const std::int32_t* index,
+                                                 Real4 (&out)[4])
+{
+    Real4 r[4];
+    for (int i = 0; i < 4; ++i)
+    {
+        std::memcpy(&r[i], &deltas[index[i]], sizeof(Real4));
+    }
+    const Real4 xy01 = __builtin_shufflevector(r[0], r[1], 0, 4, 1, 5);
+    const Real4 xy23 = __builtin_shufflevector(r[2], r[3], 0, 4, 1, 5);
+    const Real4 sc01 = __builtin_shufflevector(r[0], r[1], 2, 6, 3, 7);
+    const Real4 sc23 = __builtin_shufflevector(r[2], r[3], 2, 6, 3, 7);
+    out[0] = __builtin_shufflevector(xy01, xy23, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(xy01, xy23, 2, 3, 6, 7);
+    out[2] = __builtin_shufflevector(sc01, sc23, 0, 1, 4, 5);
+    out[3] = __builtin_shufflevector(sc01, sc23, 2, 3, 6, 7);
+}
+
+/// The transpose of GatherDeltas4 and four vector stores.
+[[gnu::always_inline]] inline void ScatterDeltas4(SoftDelta* deltas, const std::int32_t* store,
+                                                  const Real4 (&in)[4])
+{
+    const Real4 xy01 = __builtin_shufflevector(in[0], in[1], 0, 4, 1, 5);
+    const Real4 xy23 = __builtin_shufflevector(in[0], in[1], 2, 6, 3, 7);
+    const Real4 sc01 = __builtin_shufflevector(in[2], in[3], 0, 4, 1, 5);
+    const Real4 sc23 = __builtin_shufflevector(in[2], in[3], 2, 6, 3, 7);
+    const Real4 r[4] = {__builtin_shufflevector(xy01, sc01, 0, 1, 4, 5),
+                        __builtin_shufflevector(xy01, sc01, 2, 3, 6, 7),
+                        __builtin_shufflevector(xy23, sc23, 0, 1, 4, 5),
+                        __builtin_shufflevector(xy23, sc23, 2, 3, 6, 7)};
+    for (int i = 0; i < 4; ++i)
+    {
+        std::memcpy(static_cast<void*>(&deltas[store[i]]), &r[i], sizeof(Real4));
+    }
+}
+
+[[gnu::always_inline]] inline DeltaW GatherDeltas(const SoftDelta* deltas,
+                                                  const std::int32_t (&index)[kLanes])
+{
+#if MEFF_SIMD_LANES == 8
+    Real4 low[4], high[4];
+    GatherDeltas4(deltas, index, low);
+    GatherDeltas4(deltas, index + 4, high);
+    return {{Join(low[0], high[0]), Join(low[1], high[1])},
+            {Join(low[2], high[2]), Join(low[3], high[3])}};
+#else
+    Real4 all[4];
+    GatherDeltas4(deltas, index, all);
+    return {{all[0], all[1]}, {all[2], all[3]}};
+#endif
+}
+
+[[gnu::always_inline]] inline void ScatterDeltas(SoftDelta* deltas,
+                                                 const std::int32_t (&store)[kLanes],
+                                                 const DeltaW& d)
+{
+#if MEFF_SIMD_LANES == 8
+    const Real4 low[4] = {LowHalf(d.dp.x), LowHalf(d.dp.y), LowHalf(d.dq.s), LowHalf(d.dq.c)};
+    const Real4 high[4] = {HighHalf(d.dp.x), HighHalf(d.dp.y), HighHalf(d.dq.s), HighHalf(d.dq.c)};
+    ScatterDeltas4(deltas, store, low);
+    ScatterDeltas4(deltas, store + 4, high);
+#else
+    const Real4 all[4] = {d.dp.x, d.dp.y, d.dq.s, d.dq.c};
+    ScatterDeltas4(deltas, store, all);
+#endif
+}
+
+} // namespace meff::detail

@@ -1,0 +1,198 @@
+#include "solvers/soft_step/soft_revolute_lanes.h"
+
+#include "solvers/lanes/lane_bodies.h"
+#include "solvers/soft_step/soft_delta_lanes.h"
+
+#include <variant>
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// Each lane's anchors now and the gap between them (AnchorsNow).
+struct AnchorsW
+{
+    Vec2W rA, rB, d;
+};
+
+[[gnu::always_inline]] inline AnchorsW AnchorsNowW(const SoftRevoluteGroup& g,
+                                                   const SoftBodies& bodies)
+{
+    const DeltaW dA = GatherDeltas(bodies.deltas.data(), g.indexA);
+    const DeltaW dB = GatherDeltas(bodies.deltas.data(), g.indexB);
+    const Vec2W rA = Mul(dA.dq, g.rA0);
+    const Vec2W rB = Mul(dB.dq, g.rB0);
+    return {rA, rB, (dB.dp - dA.dp) + g.deltaCenter + (rB - rA)};
+}
+
+[[gnu::always_inline]] inline LaneMasses Masses(const SoftRevoluteGroup& g)
+{
+    return {g.invMassA, g.invIA, g.invMassB, g.invIB};
+}
+
+void WarmStartGroup(const SoftRevoluteGroup& g, const SoftBodies& bodies, Velocity* velocities)
+{
+    const AnchorsW at = AnchorsNowW(g, bodies);
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
+    ApplyImpulseW(Masses(g), a, b, at.rA, at.rB, g.impulse);
+    Scatter(velocities, g.storeA, a);
+    Scatter(velocities, g.storeB, b);
+}
+
+/// SolvePoint's block update per lane (without a bound on the impulse's length: the revolute
+/// joint has none).
+void SolveGroup(SoftRevoluteGroup& g, const SoftStepContext& context, bool useBias,
+                Velocity* velocities)
+{
+    const AnchorsW at = AnchorsNowW(g, *context.bodies);
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
+    const Softness soft = useBias ? context.joint : kRigid;
+    const Vec2W bias = useBias ? Splat(context.joint.biasScale) * at.d : Vec2W{};
+    // PointBlock: the seed's k along x̂ and ŷ on the diagonal.
+    const Vec2W rA = at.rA, rB = at.rB;
+    const RealW k11 = g.invMassA + g.invMassB + rA.y * rA.y * g.invIA + rB.y * rB.y * g.invIB;
+    const RealW k12 = -rA.y * rA.x * g.invIA - rB.y * rB.x * g.invIB;
+    const RealW k22 = g.invMassA + g.invMassB + rA.x * rA.x * g.invIA + rB.x * rB.x * g.invIB;
+    const Vec2W rhs = Splat(soft.massScale) * RelativeVelocity(a, b, rA, rB) + bias;
+    // Mat22::Solve.
+    const RealW det = k11 * k22 - k12 * k12;
+    const MaskW invertible = det != 0;
+    const RealW invDet = Select(invertible, Splat(1) / Select(invertible, det, Splat(1)), det);
+    const Vec2W x{invDet * (k22 * rhs.x - k12 * rhs.y), invDet * (k11 * rhs.y - k12 * rhs.x)};
+    const RealW impulseScale = Splat(soft.impulseScale);
+    const Vec2W step{-x.x - impulseScale * g.impulse.x, -x.y - impulseScale * g.impulse.y};
+    const Vec2W next = g.impulse + step;
+    const Vec2W applied = next - g.impulse;
+    g.impulse = next;
+    ApplyImpulseW(Masses(g), a, b, rA, rB, applied);
+    Scatter(velocities, g.storeA, a);
+    Scatter(velocities, g.storeB, b);
+}
+
+} // namespace
+
+RevoluteJoint* SoftRevoluteLanes::LaneJoint(Joint& joint, const SoftStepContext& context)
+{
+    auto* revolute = std::get_if<RevoluteJoint>(&joint.data);
+    if (revolute == nullptr || !context.step->solver.blockJoints || revolute->enableLimit ||
+        revolute->enableMotor || revolute->enableSpring)
+    {
+        return nullptr;
+    }
+    return revolute;
+}
+
+void SoftRevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
+                                std::span<const SoftJointFrame> frames, std::int32_t bodyCount)
+{
+    ColourSoftRows(
+        joints.size(), bodyCount,
+        [&](std::size_t i)
+        {
+            const SoftJointFrame& f = frames[i];
+            return ConstraintBodies{f.indexA, f.indexB, SolverMoves(f.mA, f.iA),
+                                    SolverMoves(f.mB, f.iB)};
+        },
+        m_colouring);
+    m_groups.clear();
+    m_sources.clear();
+    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
+    {
+        const std::int32_t end = m_colouring.colourStarts[colour + 1];
+        for (std::int32_t first = m_colouring.colourStarts[colour]; first < end; first += kLanes)
+        {
+            SoftRevoluteGroup& g = m_groups.emplace_back();
+            int filled = 0;
+            for (; filled < kLanes && first + filled < end; ++filled)
+            {
+                const std::int32_t k = m_colouring.order[first + filled];
+                const SoftJointFrame& f = frames[k];
+                const RevoluteJoint& joint = *joints[k];
+                const int l = filled;
+                g.indexA[l] = f.indexA;
+                g.indexB[l] = f.indexB;
+                g.storeA[l] = SolverMoves(f.mA, f.iA) ? f.indexA : bodyCount;
+                g.storeB[l] = SolverMoves(f.mB, f.iB) ? f.indexB : bodyCount;
+                g.invMassA[l] = f.mA;
+                g.invIA[l] = f.iA;
+                g.invMassB[l] = f.mB;
+                g.invIB[l] = f.iB;
+                g.rA0.x[l] = f.rA0.x;
+                g.rA0.y[l] = f.rA0.y;
+                g.rB0.x[l] = f.rB0.x;
+                g.rB0.y[l] = f.rB0.y;
+                g.deltaCenter.x[l] = f.deltaCenter.x;
+                g.deltaCenter.y[l] = f.deltaCenter.y;
+                g.impulse.x[l] = joint.impulse.x;
+                g.impulse.y[l] = joint.impulse.y;
+                m_sources.push_back(joints[k]);
+            }
+            // Empty lanes read lane 0's bodies, have zero masses and change nothing.
+            for (int l = filled; l < kLanes; ++l)
+            {
+                g.indexA[l] = g.indexA[0];
+                g.indexB[l] = g.indexB[0];
+                g.storeA[l] = g.storeB[l] = bodyCount;
+                m_sources.push_back(nullptr);
+            }
+        }
+    }
+}
+
+void SoftRevoluteLanes::WarmStart(const SoftStepContext& context)
+{
+    for (const SoftRevoluteGroup& g : m_groups)
+    {
+        WarmStartGroup(g, *context.bodies, context.bodies->velocities.data());
+    }
+}
+
+void SoftRevoluteLanes::Solve(const SoftStepContext& context, bool useBias)
+{
+    for (SoftRevoluteGroup& g : m_groups)
+    {
+        SolveGroup(g, context, useBias, context.bodies->velocities.data());
+    }
+}
+
+void SoftRevoluteLanes::ScaleImpulses(Real factor)
+{
+    for (SoftRevoluteGroup& g : m_groups)
+    {
+        g.impulse = Splat(factor) * g.impulse;
+    }
+}
+
+void SoftRevoluteLanes::CloseStep(const SoftStepContext& context)
+{
+    for (SoftRevoluteGroup& g : m_groups)
+    {
+        g.savedImpulse = g.impulse;
+        g.impulse = Splat(Real(0.5)) * g.impulse;
+        WarmStartGroup(g, *context.bodies, context.bodies->velocities.data());
+        SolveGroup(g, context, false, context.bodies->velocities.data());
+        g.impulse = g.savedImpulse;
+    }
+}
+
+void SoftRevoluteLanes::Store(Real factor) const
+{
+    for (std::size_t i = 0; i < m_groups.size(); ++i)
+    {
+        const SoftRevoluteGroup& g = m_groups[i];
+        for (int l = 0; l < kLanes; ++l)
+        {
+            if (RevoluteJoint* joint = m_sources[i * kLanes + l])
+            {
+                joint->impulse = Vec2{g.impulse.x[l], g.impulse.y[l]};
+                joint->impulse *= factor;
+            }
+        }
+    }
+}
+
+} // namespace meff::detail
