@@ -14,6 +14,11 @@ Rot SmallRotation(Real angle)
         return Rot(angle);
     }
     Rot q;
+    if (std::abs(angle) <= kShortSeriesAngle)
+    {
+        ShortRotationSeries(angle, q.s, q.c);
+        return q;
+    }
     SmallRotationSeries(angle, q.s, q.c);
     return q;
 }

@@ -46,6 +46,21 @@ void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step)
 /// The island's state at the step's end, into island.positions and island.velocities.
 void ScatterSoftBodies(const SoftBodies& bodies, Island& island);
 
+/// Below this angle (rad) SmallRotation's series stops at the 5th and 4th power: the first term
+/// left out is under (1/16)⁶/720 < 2e-10, far below float's rounding, and most turns within a
+/// sub-step (a position correction, a slow spin) are this small.
+inline constexpr Real kShortSeriesAngle = Real(0.0625);
+
+/// Sine and cosine of `angle` (rad) by their Taylor series to the 5th and 4th power, for
+/// |angle| ≤ kShortSeriesAngle. Written once for a Real and for SIMD lanes (RealW).
+template <typename R>
+[[gnu::always_inline]] inline void ShortRotationSeries(R angle, R& s, R& c)
+{
+    const R a2 = angle * angle;
+    c = Real(1) - a2 / Real(2) * (Real(1) - a2 / Real(12));
+    s = angle * (Real(1) - a2 / Real(6) * (Real(1) - a2 / Real(20)));
+}
+
 /// Sine and cosine of `angle` (rad) by their Taylor series to the 9th and 8th power: below
 /// |angle| = 0.5 the first term left out is under 0.5¹⁰/10! < 3e-10, far below float's rounding.
 /// Written once for a Real and for SIMD lanes (RealW).
@@ -63,7 +78,7 @@ template <typename R>
 }
 
 /// The rotation by `angle` (rad), by its Taylor series where that is exact to float precision
-/// (|angle| ≤ 0.5) and std::sin/std::cos beyond.
+/// (|angle| ≤ 0.5; a shorter one to kShortSeriesAngle) and std::sin/std::cos beyond.
 Rot SmallRotation(Real angle);
 
 /// The relative rotation of B with respect to A since the step began (rad), from their

@@ -28,8 +28,17 @@ namespace
 RotW SmallRotationW(RealW angle)
 {
     RotW q;
-    SmallRotationSeries(angle, q.s, q.c);
-    const MaskW large = MaxW(angle, -angle) > Real(0.5);
+    ShortRotationSeries(angle, q.s, q.c);
+    const RealW magnitude = MaxW(angle, -angle);
+    const MaskW small = magnitude <= kShortSeriesAngle;
+    if (AllLanes(small))
+    {
+        return q;
+    }
+    RotW full;
+    SmallRotationSeries(angle, full.s, full.c);
+    q = {Select(small, q.s, full.s), Select(small, q.c, full.c)};
+    const MaskW large = magnitude > Real(0.5);
     if (AnyLane(large))
     {
         for (int l = 0; l < kLanes; ++l)
