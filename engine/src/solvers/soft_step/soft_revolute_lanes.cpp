@@ -87,13 +87,14 @@ RevoluteJoint* SoftRevoluteLanes::LaneJoint(Joint& joint, const SoftStepContext&
 }
 
 void SoftRevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
-                                std::span<const SoftJointFrame> frames, std::int32_t bodyCount)
+                                std::span<const SoftJointFrame> frames,
+                                std::span<const std::int32_t> rows, std::int32_t bodyCount)
 {
     ColourSoftRows(
         joints.size(), bodyCount,
         [&](std::size_t i)
         {
-            const SoftJointFrame& f = frames[i];
+            const SoftJointFrame& f = frames[rows[i]];
             return ConstraintBodies{f.indexA, f.indexB, SolverMoves(f.mA, f.iA),
                                     SolverMoves(f.mB, f.iB)};
         },
@@ -110,7 +111,7 @@ void SoftRevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
             for (; filled < kLanes && first + filled < end; ++filled)
             {
                 const std::int32_t k = m_colouring.order[first + filled];
-                const SoftJointFrame& f = frames[k];
+                const SoftJointFrame& f = frames[rows[k]];
                 const RevoluteJoint& joint = *joints[k];
                 const int l = filled;
                 g.indexA[l] = f.indexA;

@@ -40,11 +40,12 @@ class SoftRevoluteLanes
     /// Whether the lanes can take this joint: a revolute joint with the point block only.
     static RevoluteJoint* LaneJoint(Joint& joint, const SoftStepContext& context);
 
-    /// Colours the prepared joints (their frames) and packs the coloured ones into groups.
-    /// `bodyCount` is the island's; its discard slot is bodyCount.
+    /// Colours the prepared joints and packs the coloured ones into groups: joint i is
+    /// `joints[i]`, its frame `frames[rows[i]]`. `bodyCount` is the island's; its discard slot
+    /// is bodyCount.
     void Prepare(std::span<RevoluteJoint* const> joints, std::span<const SoftJointFrame> frames,
-                 std::int32_t bodyCount);
-    /// Positions in Prepare's `joints` of the joints no colour had room for, in their order.
+                 std::span<const std::int32_t> rows, std::int32_t bodyCount);
+    /// Positions i in Prepare's `joints` of the joints no colour had room for, in their order.
     std::span<const std::int32_t> Overflow() const { return m_colouring.overflow; }
 
     void WarmStart(const SoftStepContext& context);

@@ -170,36 +170,52 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
 void SoftStepSolver::SplitLaneJoints(bool useLanes)
 {
     m_laneJoints.clear();
-    m_laneJointSlots.clear();
-    m_laneFrames.clear();
+    m_laneRows.clear();
     if (useLanes)
     {
-        // The plain revolute joints go to the lanes; the others stay in island order.
-        std::size_t kept = 0;
         for (std::size_t k = 0; k < m_joints.size(); ++k)
         {
             if (RevoluteJoint* revolute = SoftRevoluteLanes::LaneJoint(*m_joints[k], m_context))
             {
                 m_laneJoints.push_back(revolute);
-                m_laneJointSlots.push_back(m_joints[k]);
-                m_laneFrames.push_back(m_frames[k]);
-                continue;
+                m_laneRows.push_back(static_cast<std::int32_t>(k));
             }
+        }
+    }
+    m_revolutes.Prepare(m_laneJoints, m_frames, m_laneRows,
+                        static_cast<std::int32_t>(m_bodies.start.size()));
+    if (m_laneRows.empty())
+    {
+        return;
+    }
+    // The joints the lanes took leave the scalar list; the others, and the lane joints no
+    // colour had room for, stay in island order.
+    m_inLanes.assign(m_joints.size(), 1);
+    for (const std::int32_t i : m_revolutes.Overflow())
+    {
+        m_inLanes[m_laneRows[i]] = 0;
+    }
+    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    {
+        m_inLanes[k] =
+            m_inLanes[k] != 0 && SoftRevoluteLanes::LaneJoint(*m_joints[k], m_context) ? 1 : 0;
+    }
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    {
+        if (m_inLanes[k] != 0)
+        {
+            continue;
+        }
+        if (kept != k)
+        {
             m_joints[kept] = m_joints[k];
             m_frames[kept] = m_frames[k];
-            ++kept;
         }
-        m_joints.resize(kept);
-        m_frames.resize(kept);
+        ++kept;
     }
-    m_revolutes.Prepare(m_laneJoints, m_laneFrames,
-                        static_cast<std::int32_t>(m_bodies.start.size()));
-    // The lane joints no colour had room for, after the others.
-    for (const std::int32_t k : m_revolutes.Overflow())
-    {
-        m_joints.push_back(m_laneJointSlots[k]);
-        m_frames.push_back(m_laneFrames[k]);
-    }
+    m_joints.resize(kept);
+    m_frames.resize(kept);
 }
 
 void SoftStepSolver::WarmStartJoints()

@@ -25,6 +25,7 @@
 #include "solvers/soft_step/soft_revolute_lanes.h"
 #include "solvers/solver.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace meff::detail
@@ -61,16 +62,15 @@ class SoftStepSolver final : public Solver
     Island m_island;
     SoftBodies m_bodies;
     SoftContactSolver m_contacts;
-    /// The joints solved one by one (in island order, then the lane joints no colour took),
-    /// and their frames.
+    /// The joints solved one by one, in island order, and their frames.
     std::vector<Joint*> m_joints;
     std::vector<SoftJointFrame> m_frames;
-    /// The plain revolute joints, solved by colour in SIMD lanes (soft_revolute_lanes.h), and
-    /// their frames while they are prepared.
+    /// The plain revolute joints, solved by colour in SIMD lanes (soft_revolute_lanes.h);
+    /// while they are prepared, their positions in m_joints and whether the lanes took each.
     SoftRevoluteLanes m_revolutes;
     std::vector<RevoluteJoint*> m_laneJoints;
-    std::vector<Joint*> m_laneJointSlots;
-    std::vector<SoftJointFrame> m_laneFrames;
+    std::vector<std::int32_t> m_laneRows;
+    std::vector<std::uint8_t> m_inLanes;
 };
 
 /// The soft coefficients of one step's sub-steps from the settings (SoftStepSettings): contact
