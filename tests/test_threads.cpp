@@ -67,11 +67,17 @@ class BackwardsTasks final : public TaskSystem
     }
 };
 
+/// A bench scene (samples/bench/) stepped by `kind`.
+Scene BenchScene(const std::string& name, SolverKind kind = SolverKind::Colour)
+{
+    Scene scene = LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/bench/" + name + ".json");
+    scene.world.solver.kind = kind;
+    return scene;
+}
+
 Scene LargePyramid()
 {
-    Scene scene = LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/bench/large_pyramid.json");
-    scene.world.solver.kind = SolverKind::Colour;
-    return scene;
+    return BenchScene("large_pyramid");
 }
 
 /// large_pyramid with joints: every 9th box hinged to the next one at their midpoint (plain
@@ -116,8 +122,9 @@ void StepAlike(BuiltScene& reference, std::vector<BuiltScene>& worlds, int steps
 }
 
 /// The scene stepped on one thread and on pools of 1, 2, 3 and 8 threads (and on
-/// BackwardsTasks), hashes compared every step; the pools must really have split the work.
-void CheckThreadCounts(const Scene& scene, bool withJoints, int steps)
+/// BackwardsTasks), hashes compared every step; the pools must really have split the work,
+/// more than `jobsPerStep` jobs of two ranges or more a step.
+void CheckThreadCounts(const Scene& scene, bool withJoints, int steps, int jobsPerStep = 1)
 {
     const auto build = [&]
     {
@@ -145,9 +152,7 @@ void CheckThreadCounts(const Scene& scene, bool withJoints, int steps)
     for (std::size_t p = 0; p < pools.size(); ++p)
     {
         INFO("pool of " << pools[p]->ThreadCount() << " threads");
-        // The contact lanes handed their colours over: large_pyramid's colours hold hundreds
-        // of groups of four contacts, more than two ranges of kMinGroupsPerTask (64).
-        CHECK(pools[p]->jobs > steps);
+        CHECK(pools[p]->jobs > jobsPerStep * steps);
         if (pools[p]->ThreadCount() > 1)
         {
             // Hundreds of jobs of several ranges each: the pool's threads took some of them.
@@ -215,7 +220,42 @@ TEST_CASE("large_pyramid by colour has the same state hash every step on 1, 2, 3
 {
     // 40 steps: the pyramid's 5,050 boxes settle under load from the first step, every
     // contact of every colour solved each step (sleep is off in the bench scenes).
+    // The contact lanes handed their colours over: large_pyramid's colours hold hundreds of
+    // groups of four contacts, more than two ranges of kMinGroupsPerTask (64), and its 5,050
+    // bodies are more than two ranges of kMinBodiesPerTask (512) for the per-body loops.
     CheckThreadCounts(LargePyramid(), false, 40);
+}
+
+TEST_CASE("joint_grid by colour has the same state hash every step on 1, 2, 3 and 8 threads",
+          "[threads]")
+{
+    // joint_grid: 10,000 bodies, 19,794 plain revolute joints (the joint lanes), no contact.
+    // Its colours hold over a thousand groups of four joints each, more than two ranges of
+    // kMinJointGroupsPerTask (128), so each of the 8 velocity sweeps a step hands at least one
+    // job per colour to the threads, besides the 3 per-body loops (integrating velocities and
+    // positions, writing the bodies back: 10,000 bodies, many ranges of 512): more than 11
+    // jobs a step shows that the joint lanes were spread. The grid swings under gravity from
+    // its top row, every joint loaded, from the first step.
+    CheckThreadCounts(BenchScene("joint_grid"), false, 20, 11);
+}
+
+TEST_CASE("The Box2D back end steps on one thread whatever task system the world has", "[threads]")
+{
+    // Its results are Box2D 2.4.1's, bit for bit, in Box2D's order: nothing of it is handed to
+    // the threads, and its state hash is the one of a world without them.
+    const Scene scene = BenchScene("joint_grid", SolverKind::Box2D);
+    BuiltScene reference = BuildWorld(scene);
+    BuiltScene threaded = BuildWorld(scene);
+    CountingTasks pool(2);
+    threaded.world.SetTaskSystem(&pool);
+    const Real dt = static_cast<Real>(scene.world.dt);
+    for (int step = 0; step < 3; ++step)
+    {
+        reference.world.Step(dt);
+        threaded.world.Step(dt);
+        REQUIRE(threaded.world.GetStateHash() == reference.world.GetStateHash());
+    }
+    CHECK(pool.jobs == 0);
 }
 
 TEST_CASE("large_pyramid with revolute and distance joints by colour has the same state hash "

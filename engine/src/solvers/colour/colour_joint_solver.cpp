@@ -73,7 +73,7 @@ void ColourJointSolver::SolveVelocities(SolverData& data)
 {
     if (m_lanesInUse)
     {
-        m_lanes.SolveVelocities(data.velocities);
+        m_lanes.SolveVelocities(data);
     }
     SolveSequentialVelocities(m_sequential, data);
 }
@@ -91,7 +91,7 @@ bool ColourJointSolver::SolvePositions(SolverData& data)
     bool okay = true;
     if (m_lanesInUse)
     {
-        okay = m_lanes.SolvePositions(data.positions, data.step.tolerances);
+        okay = m_lanes.SolvePositions(data);
     }
     const bool sequentialOkay = SolveSequentialPositions(m_sequential, data);
     return okay && sequentialOkay;

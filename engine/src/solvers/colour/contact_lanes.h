@@ -16,10 +16,9 @@
 #pragma once
 
 #include "solvers/box2d/contact_constraint.h"
+#include "solvers/colour/colour_groups.h"
 #include "solvers/colour/contact_colouring.h"
-#include "solvers/lanes/lane_bodies.h"
 #include "solvers/lanes/wide_real.h"
-#include "tasks/parallel_ranges.h"
 
 #include <cstdint>
 #include <span>
@@ -98,7 +97,10 @@ class ContactLanes
                       std::span<SolvedContact> solved, const SolverData& data);
     /// Runs solve(group, discard) on each of colour c's groups, spread over the world's threads.
     template <typename Solve>
-    void ForEachGroupOfColour(int c, const SolverData& data, Solve&& solve);
+    void ForEachGroupOfColour(int c, const SolverData& data, Solve&& solve)
+    {
+        detail::ForEachGroupOfColour(m_groupStarts, c, data, kMinGroupsPerTask, solve);
+    }
 
     ConstraintColouring m_colouring;
     std::vector<ContactVelocityGroup> m_velocityGroups;
@@ -108,20 +110,5 @@ class ContactLanes
     /// Each position group's smallest separation per lane in the last position sweep.
     std::vector<RealW> m_groupMinSeparation;
 };
-
-template <typename Solve>
-void ContactLanes::ForEachGroupOfColour(int c, const SolverData& data, Solve&& solve)
-{
-    const std::int32_t first = m_groupStarts[c];
-    ForRanges(data.tasks, m_groupStarts[c + 1] - first, kMinGroupsPerTask,
-              [&](int begin, int end, int worker)
-              {
-                  const DiscardSlots discard{data.discardIndex, data.discardIndex + worker};
-                  for (std::int32_t i = first + begin; i < first + end; ++i)
-                  {
-                      solve(i, discard);
-                  }
-              });
-}
 
 } // namespace meff::detail

@@ -327,15 +327,7 @@ bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact
     }
     ColourContacts(island, static_cast<std::size_t>(data.discardIndex), m_colouring);
     // Each colour's contacts kLanes to a group, colour after colour.
-    const int colours = m_colouring.ColourCount();
-    m_groupStarts.resize(static_cast<std::size_t>(colours) + 1);
-    m_groupStarts[0] = 0;
-    for (int c = 0; c < colours; ++c)
-    {
-        const std::int32_t contacts = m_colouring.colourStarts[c + 1] - m_colouring.colourStarts[c];
-        m_groupStarts[c + 1] = m_groupStarts[c] + (contacts + kLanes - 1) / kLanes;
-    }
-    const std::int32_t groups = m_groupStarts.back();
+    const std::int32_t groups = GroupStartsOf(m_colouring, m_groupStarts);
     m_velocityGroups.resize(static_cast<std::size_t>(groups));
     m_positionGroups.resize(static_cast<std::size_t>(groups));
     m_groupMinSeparation.resize(static_cast<std::size_t>(groups));

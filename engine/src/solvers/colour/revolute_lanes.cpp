@@ -32,10 +32,11 @@ void PackLane(RevoluteJointGroup& g, int l, RevoluteJoint& joint, std::int32_t d
     joint.springImpulse = 0;
 }
 
-/// RevoluteJoint's InitVelocityConstraints for kLanes joints: lever arms at the step's start,
-/// the point rows' K = J·M⁻¹·Jᵀ and its inverse determinant (K is fixed over the velocity
-/// iterations, so it is inverted once here, not in every Mat22::Solve), then the warm start.
-void PrepareGroup(RevoluteJointGroup& g, const SolverData& data)
+/// RevoluteJoint's InitVelocityConstraints for kLanes joints, but the warm start (WarmStartGroup):
+/// lever arms at the step's start, the point rows' K = J·M⁻¹·Jᵀ and its inverse determinant (K is
+/// fixed over the velocity iterations, so it is inverted once here, not in every Mat22::Solve).
+/// Reads only the positions.
+void PrepareRows(RevoluteJointGroup& g, const SolverData& data)
 {
     const RealW aA = Gather(data.positions, g.indexA).angular;
     const RealW aB = Gather(data.positions, g.indexB).angular;
@@ -48,21 +49,18 @@ void PrepareGroup(RevoluteJointGroup& g, const SolverData& data)
     g.k21 = g.k12;
     g.k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
     g.invDetK = InverseDeterminant(g.k11, g.k12, g.k21, g.k22);
+    // Impulses are force·dt: rescale last step's to this step's dt (none without warm start).
+    g.impulse = data.step.solver.warmStarting ? Splat(data.step.dtRatio) * g.impulse : Vec2W{};
+}
 
-    if (data.step.solver.warmStarting)
-    {
-        // Impulses are force·dt: rescale last step's to this step's dt.
-        g.impulse = Splat(data.step.dtRatio) * g.impulse;
-        BodyStateW a = Gather(data.velocities, g.indexA);
-        BodyStateW b = Gather(data.velocities, g.indexB);
-        ApplyImpulseW({mA, iA, mB, iB}, a, b, rA, rB, g.impulse);
-        Scatter(data.velocities, g.storeA, a);
-        Scatter(data.velocities, g.storeB, b);
-    }
-    else
-    {
-        g.impulse = Vec2W{};
-    }
+/// The warm start: last step's accumulated impulse (scaled in PrepareRows) applied again.
+void WarmStartGroup(const RevoluteJointGroup& g, Velocity* velocities, DiscardSlots discard)
+{
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
+    ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA, g.rB, g.impulse);
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
 /// x = K⁻¹·b for the lanes' 2×2 K, as Mat22::Solve (0 where det K = 0).
@@ -74,7 +72,7 @@ void PrepareGroup(RevoluteJointGroup& g, const SolverData& data)
 
 /// The point rows as one 2×2 block (RevoluteJoint's SolveVelocityConstraints with
 /// blockJoints): Cdot = vB + wB×rB − vA − wA×rA, λ = −K⁻¹·Cdot.
-void SolveVelocityGroup(RevoluteJointGroup& g, Velocity* velocities)
+void SolveVelocityGroup(RevoluteJointGroup& g, Velocity* velocities, DiscardSlots discard)
 {
     BodyStateW a = Gather(velocities, g.indexA);
     BodyStateW b = Gather(velocities, g.indexB);
@@ -82,13 +80,13 @@ void SolveVelocityGroup(RevoluteJointGroup& g, Velocity* velocities)
     const Vec2W impulse = SolveK(g.k11, g.k12, g.k21, g.k22, g.invDetK, Vec2W{-cdot.x, -cdot.y});
     g.impulse = g.impulse + impulse;
     ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA, g.rB, impulse);
-    Scatter(velocities, g.storeA, a);
-    Scatter(velocities, g.storeB, b);
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
 /// One Newton step on the anchor gap C = cB + rB − cA − rA with K from the current lever arms
 /// (RevoluteJoint's SolvePositionConstraints with blockJoints). Returns each lane's |C|².
-RealW SolvePositionGroup(const RevoluteJointGroup& g, Position* positions)
+RealW SolvePositionGroup(const RevoluteJointGroup& g, Position* positions, DiscardSlots discard)
 {
     BodyStateW a = Gather(positions, g.indexA);
     BodyStateW b = Gather(positions, g.indexB);
@@ -102,53 +100,89 @@ RealW SolvePositionGroup(const RevoluteJointGroup& g, Position* positions)
     const RealW k22 = mA + mB + iA * rA.x * rA.x + iB * rB.x * rB.x;
     const Vec2W x = SolveK(k11, k12, k12, k22, InverseDeterminant(k11, k12, k12, k22), C);
     ApplyImpulseW({mA, iA, mB, iB}, a, b, rA, rB, Vec2W{-x.x, -x.y});
-    Scatter(positions, g.storeA, a);
-    Scatter(positions, g.storeB, b);
+    ScatterFromWorker(positions, g.storeA, discard, a);
+    ScatterFromWorker(positions, g.storeB, discard, b);
     return C.x * C.x + C.y * C.y;
 }
 
 } // namespace
 
+void RevoluteLanes::PrepareGroup(std::int32_t i, int colour, std::span<RevoluteJoint* const> joints,
+                                 const SolverData& data)
+{
+    const std::int32_t end = m_colouring.colourStarts[colour + 1];
+    const std::int32_t first =
+        m_colouring.colourStarts[colour] + (i - m_groupStarts[colour]) * kLanes;
+    RevoluteJointGroup& g = m_groups[i];
+    g = RevoluteJointGroup{};
+    // Empty lanes write the discard slot; all their masses are zero.
+    std::fill(std::begin(g.storeA), std::end(g.storeA), data.discardIndex);
+    std::fill(std::begin(g.storeB), std::end(g.storeB), data.discardIndex);
+    for (int l = 0; l < kLanes; ++l)
+    {
+        RevoluteJoint* joint = first + l < end ? joints[m_colouring.order[first + l]] : nullptr;
+        m_sources[static_cast<std::size_t>(i) * kLanes + l] = joint;
+        if (joint != nullptr)
+        {
+            PackLane(g, l, *joint, data.discardIndex);
+        }
+        else
+        {
+            // Lane 0's body A, which only this group of its colour writes (body 0 may be
+            // another group's, written by another thread at that moment); as both bodies, so
+            // that the empty lane's anchor gap is zero in SolvePositions.
+            g.indexA[l] = g.indexB[l] = g.indexA[0];
+        }
+    }
+    PrepareRows(g, data);
+}
+
 void RevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
                             std::span<const ConstraintBodies> bodies, const SolverData& data)
 {
     // The island's bodies are the solver indices below the discard slot.
-    const std::int32_t discardIndex = data.discardIndex;
     ColourConstraints(
-        joints.size(), static_cast<std::size_t>(discardIndex),
+        joints.size(), static_cast<std::size_t>(data.discardIndex),
         [&](std::size_t i) { return bodies[i]; }, m_colouring);
-    m_groups.clear();
-    m_sources.clear();
-    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
+    const std::int32_t groups = GroupStartsOf(m_colouring, m_groupStarts);
+    m_groups.resize(static_cast<std::size_t>(groups));
+    m_sources.resize(static_cast<std::size_t>(groups) * kLanes);
+    m_groupLargestSquared.resize(static_cast<std::size_t>(groups));
+
+    // Packing and the rows only read the bodies, so every group may be prepared at once.
+    ForRanges(data.tasks, groups, kMinJointGroupsPerTask,
+              [&](int begin, int end, int)
+              {
+                  auto colour = static_cast<int>(
+                      std::upper_bound(m_groupStarts.begin(), m_groupStarts.end(), begin) -
+                      m_groupStarts.begin() - 1);
+                  for (std::int32_t i = begin; i < end; ++i)
+                  {
+                      while (i >= m_groupStarts[colour + 1])
+                      {
+                          ++colour;
+                      }
+                      PrepareGroup(i, colour, joints, data);
+                  }
+              });
+    if (data.step.solver.warmStarting)
     {
-        const std::int32_t begin = m_colouring.colourStarts[colour];
-        const std::int32_t end = m_colouring.colourStarts[colour + 1];
-        for (std::int32_t first = begin; first < end; first += kLanes)
+        for (int c = 0; c < m_colouring.ColourCount(); ++c)
         {
-            // Empty lanes read body 0 and write the discard slot; all their masses are zero.
-            RevoluteJointGroup& g = m_groups.emplace_back(RevoluteJointGroup{});
-            std::fill(std::begin(g.storeA), std::end(g.storeA), discardIndex);
-            std::fill(std::begin(g.storeB), std::end(g.storeB), discardIndex);
-            for (int l = 0; l < kLanes; ++l)
-            {
-                RevoluteJoint* joint =
-                    first + l < end ? joints[m_colouring.order[first + l]] : nullptr;
-                m_sources.push_back(joint);
-                if (joint != nullptr)
-                {
-                    PackLane(g, l, *joint, discardIndex);
-                }
-            }
-            PrepareGroup(g, data);
+            ForEachGroupOfColour(m_groupStarts, c, data, kMinJointGroupsPerTask,
+                                 [&](std::int32_t i, DiscardSlots discard)
+                                 { WarmStartGroup(m_groups[i], data.velocities, discard); });
         }
     }
 }
 
-void RevoluteLanes::SolveVelocities(Velocity* velocities)
+void RevoluteLanes::SolveVelocities(const SolverData& data)
 {
-    for (RevoluteJointGroup& group : m_groups)
+    for (int c = 0; c < m_colouring.ColourCount(); ++c)
     {
-        SolveVelocityGroup(group, velocities);
+        ForEachGroupOfColour(m_groupStarts, c, data, kMinJointGroupsPerTask,
+                             [&](std::int32_t i, DiscardSlots discard)
+                             { SolveVelocityGroup(m_groups[i], data.velocities, discard); });
     }
 }
 
@@ -165,12 +199,21 @@ void RevoluteLanes::StoreImpulses() const
     }
 }
 
-bool RevoluteLanes::SolvePositions(Position* positions, const Tolerances& tolerances)
+bool RevoluteLanes::SolvePositions(const SolverData& data)
 {
-    RealW largestSquared = Splat(0);
-    for (const RevoluteJointGroup& group : m_groups)
+    for (int c = 0; c < m_colouring.ColourCount(); ++c)
     {
-        largestSquared = MaxW(largestSquared, SolvePositionGroup(group, positions));
+        ForEachGroupOfColour(m_groupStarts, c, data, kMinJointGroupsPerTask,
+                             [&](std::int32_t i, DiscardSlots discard) {
+                                 m_groupLargestSquared[i] =
+                                     SolvePositionGroup(m_groups[i], data.positions, discard);
+                             });
+    }
+    // In group order whatever the threads: the same maximum, NaN included.
+    RealW largestSquared = Splat(0);
+    for (const RealW groupLargest : m_groupLargestSquared)
+    {
+        largestSquared = MaxW(largestSquared, groupLargest);
     }
     Real largest = 0;
     for (int l = 0; l < kLanes; ++l)
@@ -178,7 +221,7 @@ bool RevoluteLanes::SolvePositions(Position* positions, const Tolerances& tolera
         largest = Max(largest, largestSquared[l]);
     }
     // √ is monotonic and correctly rounded, so √(max |C|²) is the largest |C| exactly.
-    return std::sqrt(largest) <= tolerances.linearSlop;
+    return std::sqrt(largest) <= data.step.tolerances.linearSlop;
 }
 
 } // namespace meff::detail
