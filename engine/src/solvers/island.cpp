@@ -1,6 +1,7 @@
 #include "solvers/island.h"
 
 #include "dynamics/joint_slot.h"
+#include "tasks/parallel_ranges.h"
 #include "meff/error.h"
 
 #include <string>
@@ -162,8 +163,10 @@ bool CanSeedIsland(const Body& body)
     return body.alive && !body.islandFlag && body.awake && body.type != BodyType::Static;
 }
 
-void FinishBodies(SolverWorld& world, const Island& island)
+void FinishBodies(SolverWorld& world, const Island& island, TaskSystem* tasks)
 {
+    // Checked on the calling thread, in island order: the error names the first bad body
+    // whatever the threads, and no body is written before all are known good.
     for (std::size_t i = 0; i < island.bodies.size(); ++i)
     {
         const Position& p = island.positions[i];
@@ -178,15 +181,21 @@ void FinishBodies(SolverWorld& world, const Island& island)
                                   world.stepCount, bodyIndex);
         }
     }
-    for (std::size_t i = 0; i < island.bodies.size(); ++i)
-    {
-        Body& body = world.bodies[island.bodies[i]];
-        body.sweep.c = island.positions[i].c;
-        body.sweep.a = island.positions[i].a;
-        body.linearVelocity = island.velocities[i].v;
-        body.angularVelocity = island.velocities[i].w;
-        SynchronizeTransform(body);
-    }
+    // Each body is its own: any thread may take any range of them.
+    ForRanges(tasks, static_cast<int>(island.bodies.size()), kMinBodiesPerTask,
+              [&](int begin, int end, int)
+              {
+                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
+                       ++i)
+                  {
+                      Body& body = world.bodies[island.bodies[i]];
+                      body.sweep.c = island.positions[i].c;
+                      body.sweep.a = island.positions[i].a;
+                      body.linearVelocity = island.velocities[i].v;
+                      body.angularVelocity = island.velocities[i].w;
+                      SynchronizeTransform(body);
+                  }
+              });
 }
 
 void UpdateSleep(SolverWorld& world, const Island& island, const StepContext& step,

@@ -57,10 +57,16 @@ bool CanSeedIsland(const Body& body);
 template <typename SolveIsland>
 void ForEachAwakeIsland(SolverWorld& world, Island& island, SolveIsland&& solve);
 
+/// The fewest bodies a thread is handed at once by the per-body loops (integration, writing
+/// the bodies back): a body costs tens of operations, so a range of fewer would cost less
+/// than waking a thread for it.
+inline constexpr int kMinBodiesPerTask = 512;
+
 /// Writes the island's solved state (island.positions, island.velocities) into its bodies and
-/// their transforms. Refuses a non-finite state first, throwing SimulationError naming the body
-/// and the step, so the bodies keep their last good state and stay readable.
-void FinishBodies(SolverWorld& world, const Island& island);
+/// their transforms, bodies spread over `tasks` (null: the calling thread alone). Refuses a
+/// non-finite state first, throwing SimulationError naming the first such body (in island
+/// order) and the step, so the bodies keep their last good state and stay readable.
+void FinishBodies(SolverWorld& world, const Island& island, TaskSystem* tasks = nullptr);
 
 /// After an island is solved (b2Island::Solve's sleep pass): advances each body's rest time
 /// and puts the whole island to sleep once every body has rested timeToSleep and the position

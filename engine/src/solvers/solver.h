@@ -52,7 +52,8 @@ struct SolverWorld
     bool allowSleep;
     std::uint64_t stepCount; ///< steps taken so far, for error messages
     SolvedContactSink& solvedContacts;
-    /// The world's threads (World::SetTaskSystem), or null. The Box2D back end ignores them.
+    /// The world's threads (World::SetTaskSystem), or null. The Box2D back end steps without
+    /// them (Box2DSolver::Step).
     TaskSystem* tasks = nullptr;
 };
 

@@ -5,9 +5,13 @@ namespace meff::detail
 
 void Box2DSolver::Step(SolverWorld& world, const StepContext& step)
 {
-    ForEachAwakeIsland(world, m_island,
+    // Box2D 2.4.1 steps on one thread, and so does its mirror: the world's threads are not
+    // handed to the shared island step (its per-body loops would take them).
+    SolverWorld oneThread = world;
+    oneThread.tasks = nullptr;
+    ForEachAwakeIsland(oneThread, m_island,
                        [&](Island& island)
-                       { SolveIsland(world, island, step, m_contacts, m_joints); });
+                       { SolveIsland(oneThread, island, step, m_contacts, m_joints); });
 }
 
 } // namespace meff::detail

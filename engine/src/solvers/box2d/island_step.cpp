@@ -28,6 +28,47 @@ bool CorrectPositions(ContactStage& contacts, JointStage& joints, SolverData& da
     return false;
 }
 
+/// One body's velocity for the step (and its sweep's start set to its pose): semi-implicit
+/// Euler v += h·(g + F/m), then the damping ODE dv/dt = −c·v solved implicitly (stable for any
+/// c·h). Only dynamic bodies change.
+Velocity IntegrateVelocity(Body& body, Vec2 gravity, Real h)
+{
+    Vec2 v = body.linearVelocity;
+    Real w = body.angularVelocity;
+    body.sweep.c0 = body.sweep.c;
+    body.sweep.a0 = body.sweep.a;
+    if (body.type == BodyType::Dynamic)
+    {
+        v += h * body.invMass * (body.gravityScale * body.mass * gravity + body.force);
+        w += h * body.invI * body.torque;
+        v *= Real(1) / (Real(1) + h * body.linearDamping);
+        w *= Real(1) / (Real(1) + h * body.angularDamping);
+    }
+    return {v, w};
+}
+
+/// Moves one body by h·v, its motion clamped to Tolerances::maxTranslation and maxRotation (a
+/// body cannot outrun the broad phase's margins); the clamp also scales its velocity.
+void IntegratePosition(Position& position, Velocity& velocity, const StepContext& step)
+{
+    const Real h = step.dt;
+    const Tolerances& tol = step.tolerances;
+    Vec2 v = velocity.v;
+    Real w = velocity.w;
+    const Vec2 translation = h * v;
+    if (Dot(translation, translation) > tol.maxTranslation * tol.maxTranslation)
+    {
+        v *= tol.maxTranslation / translation.Length();
+    }
+    const Real rotation = h * w;
+    if (rotation * rotation > tol.maxRotation * tol.maxRotation)
+    {
+        w *= tol.maxRotation / std::abs(rotation);
+    }
+    position = {position.c + h * v, position.a + h * w};
+    velocity = {v, w};
+}
+
 } // namespace
 
 void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
@@ -53,9 +94,9 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
     StoreContactImpulses(contacts.SolvedContacts(), world.contacts);
     joints.StoreImpulses();
 
-    IntegratePositions(island, step);
+    IntegratePositions(island, step, world.tasks);
     const bool positionSolved = CorrectPositions(contacts, joints, data);
-    FinishBodies(world, island);
+    FinishBodies(world, island, world.tasks);
     world.solvedContacts.Record(contacts.SolvedContacts(), contacts.AnyHitEvents(), step);
     if (world.allowSleep)
     {
@@ -71,57 +112,31 @@ void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& 
     island.positions.resize(count + discardSlots);
     island.velocities.resize(count + discardSlots);
     const Real h = step.dt;
-    for (std::size_t i = 0; i < count; ++i)
-    {
-        Body& body = world.bodies[island.bodies[i]];
-        Vec2 v = body.linearVelocity;
-        Real w = body.angularVelocity;
-        body.sweep.c0 = body.sweep.c;
-        body.sweep.a0 = body.sweep.a;
-        if (body.type == BodyType::Dynamic)
-        {
-            // Semi-implicit Euler: v += h·(g + F/m), then the damping ODE dv/dt = −c·v solved
-            // implicitly (stable for any c·h).
-            v += h * body.invMass * (body.gravityScale * body.mass * world.gravity + body.force);
-            w += h * body.invI * body.torque;
-            v *= Real(1) / (Real(1) + h * body.linearDamping);
-            w *= Real(1) / (Real(1) + h * body.angularDamping);
-        }
-        island.positions[i] = {body.sweep.c, body.sweep.a};
-        island.velocities[i] = {v, w};
-    }
+    // Each body is its own: any thread may take any range of them.
+    ForRanges(world.tasks, static_cast<int>(count), kMinBodiesPerTask,
+              [&](int begin, int end, int)
+              {
+                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
+                       ++i)
+                  {
+                      Body& body = world.bodies[island.bodies[i]];
+                      island.positions[i] = {body.sweep.c, body.sweep.a};
+                      island.velocities[i] = IntegrateVelocity(body, world.gravity, h);
+                  }
+              });
 }
 
-void IntegratePositions(Island& island, const StepContext& step)
+void IntegratePositions(Island& island, const StepContext& step, TaskSystem* tasks)
 {
-    const Real h = step.dt;
-    const Tolerances& tol = step.tolerances;
-    const Real maxTranslationSquared = tol.maxTranslation * tol.maxTranslation;
-    const Real maxRotationSquared = tol.maxRotation * tol.maxRotation;
-    for (std::size_t i = 0; i < island.bodies.size(); ++i)
-    {
-        Vec2 c = island.positions[i].c;
-        Real a = island.positions[i].a;
-        Vec2 v = island.velocities[i].v;
-        Real w = island.velocities[i].w;
-
-        // Clamp the motion of one step: a body cannot outrun the broad phase's margins.
-        const Vec2 translation = h * v;
-        if (Dot(translation, translation) > maxTranslationSquared)
-        {
-            v *= tol.maxTranslation / translation.Length();
-        }
-        const Real rotation = h * w;
-        if (rotation * rotation > maxRotationSquared)
-        {
-            w *= tol.maxRotation / std::abs(rotation);
-        }
-
-        c += h * v;
-        a += h * w;
-        island.positions[i] = {c, a};
-        island.velocities[i] = {v, w};
-    }
+    ForRanges(tasks, static_cast<int>(island.bodies.size()), kMinBodiesPerTask,
+              [&](int begin, int end, int)
+              {
+                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
+                       ++i)
+                  {
+                      IntegratePosition(island.positions[i], island.velocities[i], step);
+                  }
+              });
 }
 
 void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts)

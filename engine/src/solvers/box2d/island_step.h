@@ -70,11 +70,11 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
 
 /// Copies the island's bodies into island.positions/velocities (a slot more per worker of
 /// world.tasks for the lanes' discard, SolverData::discardIndex) and adds gravity, forces and
-/// damping to the velocities.
+/// damping to the velocities, bodies spread over world.tasks.
 void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step);
 /// Moves every body of the island by h·v (its motion clamped to Tolerances::maxTranslation
-/// and maxRotation per step).
-void IntegratePositions(Island& island, const StepContext& step);
+/// and maxRotation per step), bodies spread over `tasks` (null: the calling thread alone).
+void IntegratePositions(Island& island, const StepContext& step, TaskSystem* tasks = nullptr);
 /// Writes each solved contact's accumulated impulses into its manifold: next step's warm start.
 void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts);
 
