@@ -7,14 +7,20 @@
   * a folder that already holds frames is refused (exit status 2, one line, nothing changed)
     without --overwrite; with it, the old frames are removed first, so a shorter render leaves
     none of the longer one's behind; other files in the folder are left alone;
-  * --gif with --shard is refused (a movie needs every frame).
+  * --gif with --shard is refused (a movie needs every frame);
+  * --threads 3 (the world stepped on a pool of three) writes the same files as --threads 1:
+    large_pyramid by colour, whose contact colours and bodies are many enough to be spread
+    over the threads.
 """
+import json
 import os
 import shutil
 import subprocess
 import sys
 
 MEFF, SCENE, WORK = sys.argv[1:4]
+PYRAMID = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "samples",
+                       "bench", "large_pyramid.json")
 COMMON = ["render", SCENE, "--frames", "8", "--every", "2", "--size", "160x120", "--contacts",
           "--impulses", "--joints", "--overlay-box2d"]
 
@@ -60,4 +66,20 @@ if list(files(one)) != ["frame_00000.png", "frame_00001.png", "notes.txt"]:
     sys.exit(f"FAIL: --overwrite left {list(files(one))}; expected the 2 new frames and notes.txt")
 run(COMMON + ["--out", os.path.join(WORK, "movie"), "--shard", "1/2", "--gif",
               os.path.join(WORK, "x.gif")], expect=2)
-print("render: --jobs 2 = --jobs 1, 2 shards = 1 job, --overwrite refuses and replaces")
+
+with open(PYRAMID) as text:
+    pyramid = json.load(text)
+pyramid["world"]["solver"] = "colour"
+colour_scene = os.path.join(WORK, "large_pyramid_colour.json")
+with open(colour_scene, "w") as text:
+    json.dump(pyramid, text)
+by_threads = {}
+for threads in ("1", "3"):
+    folder = os.path.join(WORK, "threads" + threads)
+    run(["render", colour_scene, "--frames", "4", "--every", "2", "--size", "160x120",
+         "--contacts", "--impulses", "--out", folder, "--threads", threads])
+    by_threads[threads] = files(folder)
+if len(by_threads["1"]) != 3 or by_threads["3"] != by_threads["1"]:
+    sys.exit(f"FAIL: --threads 3 wrote other files than --threads 1: {list(by_threads['3'])}")
+print("render: --jobs 2 = --jobs 1, 2 shards = 1 job, --overwrite refuses and replaces, "
+      "--threads 3 = --threads 1")

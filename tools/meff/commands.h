@@ -39,13 +39,14 @@ Command AddValidateCommand(CLI::App& parent);
 
 /// `meff render SCENE.json --out DIR [--frames N] [--every K] [--size WxH]
 /// [--camera x,y,height] [--contacts] [--impulses] [--joints] [--overlay-box2d]
-/// [--gif FILE | --mp4 FILE]`
+/// [--gif FILE | --mp4 FILE] [--jobs N] [--threads T]`
 Command AddRenderCommand(CLI::App& parent);
 
 /// `meff bench SCENE.json... [--steps N] [--runs R] [--threads T] [--json FILE]`
 Command AddBenchCommand(CLI::App& parent);
 
-/// `meff sweep SCENE.json [--out DIR] [--quick] [--seconds S] [--runs R] [--no-plot]`
+/// `meff sweep SCENE.json [--out DIR] [--quick] [--seconds S] [--runs R] [--no-plot]
+/// [--jobs N] [--threads T]`
 Command AddSweepCommand(CLI::App& parent);
 
 /// Adds `--solver box2d|colour|soft_step`: the solver back end to run instead of the scene's

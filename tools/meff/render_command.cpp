@@ -6,6 +6,7 @@
 #include "parallel.h"
 #include "plot_program.h"
 #include "progress.h"
+#include "threads_option.h"
 
 #include "meff/box2d_mirror.h"
 #include "meff/render.h"
@@ -52,7 +53,8 @@ struct RenderOptions
     std::string gifPath;
     std::string mp4Path;
     bool overwrite = false;
-    int jobs = 0; ///< 0: one per core
+    int jobs = 0;    ///< 0: one per core
+    int threads = 1; ///< to step the world on (--threads)
     Shard shard;
 };
 
@@ -310,9 +312,10 @@ void DrawBox2D(const Scene& scene, const validation::Box2DMirror& mirror, DebugD
 /// The largest contact normal impulse and joint reaction impulse over the run, from a separate
 /// world stepped ahead: one arrow scale for the whole sequence, so that arrows compare across
 /// frames. A run that fails part way gives what it reached (the real run reports the failure).
-double LargestImpulse(const Scene& scene, int frames)
+double LargestImpulse(const Scene& scene, int frames, TaskSystem* threads)
 {
     BuiltScene built = BuildWorld(scene);
+    built.world.SetTaskSystem(threads);
     const Real dt = Real(scene.world.dt);
     double largest = 0;
     try
@@ -449,6 +452,8 @@ int Run(const RenderOptions& options)
     {
         return kExitBadInput;
     }
+    const std::unique_ptr<TaskSystem> threads = MakeThreads(options.threads);
+    built->world.SetTaskSystem(threads.get());
     const int frames = options.frames.value_or(scene->world.frames);
 
     const std::filesystem::path directory(options.outDirectory);
@@ -516,7 +521,7 @@ int Run(const RenderOptions& options)
     {
         // The largest arrow of the run spans a sixth of the image height; the legend shows a
         // round impulse near a quarter of it.
-        const double largest = LargestImpulse(*scene, frames);
+        const double largest = LargestImpulse(*scene, frames, threads.get());
         const double reference = largest > 0 ? largest : 1.0;
         flags.impulseScale = Real(double(frameOptions.camera.height) / 6 / reference);
         frameOptions.legendImpulse = render::NiceCeil(reference / 4);
@@ -703,6 +708,8 @@ Command AddRenderCommand(CLI::App& parent)
                   "DIR may hold frames of an earlier render: remove them first (without it, "
                   "such a folder is refused)");
     AddJobsOption(app, options->jobs, "Draw and write frames");
+    AddThreadsOption(*app, options->threads,
+                     "Threads to step the world on (the frames are drawn on --jobs)");
     AddShardOption(app, options->shard,
                    "frames (frame k to shard k mod N + 1; each shard steps the whole run)");
     return {app, [options] { return Run(*options); }};

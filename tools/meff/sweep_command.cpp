@@ -42,6 +42,7 @@
 #include "parallel.h"
 #include "plot_program.h"
 #include "progress.h"
+#include "threads_option.h"
 
 #include "meff/box2d_mirror.h"
 #include "meff/box2d_v3_features.h"
@@ -89,6 +90,8 @@ struct SweepOptions
     /// Settings measured at once. 1 by default, unlike validate's: the costs are timings, and
     /// runs sharing the cores time each other's turns (the errors are the same for every N).
     int jobs = 1;
+    /// Threads each meff world steps on (--threads); Box2D 2.4.1 steps on one.
+    int threads = 1;
     Shard shard;
 };
 
@@ -235,9 +238,10 @@ struct BodyState
 class MeffEngine
 {
   public:
-    explicit MeffEngine(const Scene& scene)
+    MeffEngine(const Scene& scene, TaskSystem* threads)
         : m_built(BuildWorld(scene)), m_dt(static_cast<Real>(scene.world.dt))
     {
+        m_built.world.SetTaskSystem(threads);
     }
 
     void Step() { m_built.Step(m_dt); }
@@ -283,7 +287,8 @@ class MeffEngine
 class Box2DEngine
 {
   public:
-    explicit Box2DEngine(const Scene& scene) : m_mirror(scene)
+    /// Box2D 2.4.1 steps on one thread: `threads` is not used.
+    Box2DEngine(const Scene& scene, TaskSystem* /*threads*/) : m_mirror(scene)
     {
         // No PostSolve listener: the sweep reads contacts from the contact list itself, and a
         // game that needs no impulses runs Box2D this way.
@@ -423,11 +428,12 @@ RunLength LengthOf(const Scene& scene, double seconds)
 /// Runs the scene once, measuring everything at every frame. `followed` is the scene index of
 /// the body to record frame by frame, if any.
 template <typename Engine>
-Trace Measure(const Scene& scene, double seconds, std::optional<std::size_t> followed)
+Trace Measure(const Scene& scene, TaskSystem* threads, double seconds,
+              std::optional<std::size_t> followed)
 {
     Trace trace;
     const RunLength length = LengthOf(scene, seconds);
-    Engine engine(scene);
+    Engine engine(scene, threads);
     const auto sample = [&]
     {
         std::vector<Vec2d>& centers = trace.centers.emplace_back();
@@ -501,7 +507,7 @@ struct Timing
 
 /// The steps after the first, per simulated second.
 template <typename Engine>
-Timing TimeRun(const Scene& scene, double seconds)
+Timing TimeRun(const Scene& scene, TaskSystem* threads, double seconds)
 {
     using Clock = std::chrono::steady_clock;
     const RunLength length = LengthOf(scene, seconds);
@@ -514,7 +520,7 @@ Timing TimeRun(const Scene& scene, double seconds)
     int repetitions = 0;
     while (wallMs < kMinimumTimedMs)
     {
-        Engine engine(scene);
+        Engine engine(scene, threads);
         engine.Step();
         const Clock::time_point start = Clock::now();
         const double cpuStart = ThreadCpuMs();
@@ -1057,8 +1063,8 @@ bool Plot(const std::filesystem::path& directory, const std::string& csvPath,
 }
 
 template <typename Engine>
-Row RunSetting(const Scene& scene, const Setting& setting, const char* engine, double seconds,
-               const ErrorModel& model)
+Row RunSetting(const Scene& scene, TaskSystem* threads, const Setting& setting, const char* engine,
+               double seconds, const ErrorModel& model)
 {
     Row row;
     row.engine = engine;
@@ -1066,19 +1072,19 @@ Row RunSetting(const Scene& scene, const Setting& setting, const char* engine, d
         std::string(engine) == "box2d" || sizeof(Real) == sizeof(float) ? "float" : "double";
     row.setting = setting;
     row.frames = LengthOf(scene, seconds).frames;
-    row.trace = Measure<Engine>(scene, seconds, model.Followed());
+    row.trace = Measure<Engine>(scene, threads, seconds, model.Followed());
     row.error = model.Error(row.trace);
     return row;
 }
 
 template <typename Engine>
-void TimeSetting(const Scene& scene, double seconds, Row& row)
+void TimeSetting(const Scene& scene, TaskSystem* threads, double seconds, Row& row)
 {
     if (row.trace.failed)
     {
         return; // a run that blows up has no cost worth quoting
     }
-    const Timing timing = TimeRun<Engine>(scene, seconds);
+    const Timing timing = TimeRun<Engine>(scene, threads, seconds);
     row.msPerSecond.push_back(timing.wall);
     row.cpuMsPerSecond.push_back(timing.cpu);
     ++row.runs;
@@ -1169,7 +1175,10 @@ int RunSweep(const SweepOptions& options)
                                    scene.world.solver.warmStarting};
             const Scene referenceScene = WithSetting(scene, settings);
             const auto start = std::chrono::steady_clock::now();
-            const Trace reference = Measure<MeffEngine>(referenceScene, seconds, std::nullopt);
+            // The reference steps in Box2D's order (the setting's default back end), which
+            // takes no threads.
+            const Trace reference =
+                Measure<MeffEngine>(referenceScene, nullptr, seconds, std::nullopt);
             if (reference.failed)
             {
                 std::fprintf(stderr, "meff sweep: %s: the reference run failed: %s\n",
@@ -1229,14 +1238,18 @@ int RunSweep(const SweepOptions& options)
         const Setting& setting = grid[n];
         const Scene settingScene = WithSetting(scene, setting);
         const std::string meffName = MeffEngineName(setting);
-        Row meffRow =
-            RunSetting<MeffEngine>(settingScene, setting, meffName.c_str(), seconds, *model);
+        // Each setting measured at once (--jobs) steps on a pool of its own: a pool is handed
+        // one job at a time.
+        const std::unique_ptr<TaskSystem> threads = MakeThreads(options.threads);
+        Row meffRow = RunSetting<MeffEngine>(settingScene, threads.get(), setting, meffName.c_str(),
+                                             seconds, *model);
         // Box2D 2.4.1 has only its own order: the other back ends' settings are meff's alone.
         const bool withBox2D = setting.solver == SolverKind::Box2D && box2dCanRun;
         std::optional<Row> box2dRow;
         if (withBox2D)
         {
-            box2dRow = RunSetting<Box2DEngine>(settingScene, setting, "box2d", seconds, *model);
+            box2dRow =
+                RunSetting<Box2DEngine>(settingScene, nullptr, setting, "box2d", seconds, *model);
         }
         // The engines take turns to go first, so that neither always runs on a warm cache.
         for (int r = 0; r < runs; ++r)
@@ -1244,15 +1257,15 @@ int RunSweep(const SweepOptions& options)
             const bool meffFirst = (n + r) % 2 == 0;
             if (meffFirst)
             {
-                TimeSetting<MeffEngine>(settingScene, seconds, meffRow);
+                TimeSetting<MeffEngine>(settingScene, threads.get(), seconds, meffRow);
             }
             if (box2dRow)
             {
-                TimeSetting<Box2DEngine>(settingScene, seconds, *box2dRow);
+                TimeSetting<Box2DEngine>(settingScene, nullptr, seconds, *box2dRow);
             }
             if (!meffFirst)
             {
-                TimeSetting<MeffEngine>(settingScene, seconds, meffRow);
+                TimeSetting<MeffEngine>(settingScene, threads.get(), seconds, meffRow);
             }
         }
         std::vector<Row*> settingRows{&meffRow};
@@ -1389,6 +1402,9 @@ Command AddSweepCommand(CLI::App& parent)
                     "sharing cores slow each other; every error is the same for any N)")
         ->type_name("N")
         ->check(CLI::Range(1, 1024));
+    AddThreadsOption(*app, options->threads,
+                     "Threads each meff world steps on (Box2D 2.4.1 steps on one; with --cost "
+                     "cpu only the stepping thread's CPU time is counted, not the pool's)");
     AddShardOption(app, options->shard,
                    "settings (setting n to shard n mod N + 1; sweep.csv then holds that share)");
     return {app, [options] { return RunSweep(*options); }};

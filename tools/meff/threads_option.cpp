@@ -9,9 +9,10 @@ CLI::Option* AddThreadsOption(CLI::App& app, int& threads, const std::string& wh
 {
     return app
         .add_option("--threads", threads,
-                    what + " (default 1). For now only the colour back end (--solver colour, "
-                           "world.solver \"colour\") uses them, in its contact lanes; the results "
-                           "are the same bit for bit for any N")
+                    what + " (default 1). Only the colour back end (--solver colour, "
+                           "world.solver \"colour\") uses them: its contact and joint lanes, "
+                           "integration and writing the bodies back; the results are the same "
+                           "bit for bit for any N")
         ->type_name("N")
         ->check(CLI::Range(1, 1024));
 }

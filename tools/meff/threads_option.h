@@ -1,5 +1,5 @@
-// `--threads N` of `meff run` and `meff bench`: threads lent to the world for its steps
-// (World::SetTaskSystem), the same results for any N.
+// `--threads N` of `meff run`, `bench`, `sweep` and `render`: threads lent to the world for its
+// steps (World::SetTaskSystem), the same results for any N.
 #pragma once
 
 #include "meff/task_system.h"
