@@ -47,6 +47,8 @@ struct ConstraintBodies
 {
     std::int32_t indexA = 0, indexB = 0; ///< solver body indices
     bool movesA = false, movesB = false; ///< whether the solver changes that body's state
+
+    bool operator==(const ConstraintBodies&) const = default;
 };
 
 /// Greedy colouring in the given order: constraint i (of `count`, described by

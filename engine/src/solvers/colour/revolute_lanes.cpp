@@ -140,10 +140,19 @@ void RevoluteLanes::PrepareGroup(std::int32_t i, int colour, std::span<RevoluteJ
 void RevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
                             std::span<const ConstraintBodies> bodies, const SolverData& data)
 {
-    // The island's bodies are the solver indices below the discard slot.
-    ColourConstraints(
-        joints.size(), static_cast<std::size_t>(data.discardIndex),
-        [&](std::size_t i) { return bodies[i]; }, m_colouring);
+    // The island's bodies are the solver indices below the discard slot. The colouring is a
+    // function of the joints' bodies and the body count alone, so when they are last step's
+    // (a grid, a chain or a net whose joints and islands did not change) last step's colouring
+    // is reused as it is: comparing them costs less than colouring again.
+    const auto bodyCount = static_cast<std::size_t>(data.discardIndex);
+    if (m_colouring.colourStarts.empty() || bodyCount != m_colouredBodyCount ||
+        !std::equal(bodies.begin(), bodies.end(), m_colouredBodies.begin(), m_colouredBodies.end()))
+    {
+        ColourConstraints(
+            joints.size(), bodyCount, [&](std::size_t i) { return bodies[i]; }, m_colouring);
+        m_colouredBodies.assign(bodies.begin(), bodies.end());
+        m_colouredBodyCount = bodyCount;
+    }
     const std::int32_t groups = GroupStartsOf(m_colouring, m_groupStarts);
     m_groups.resize(static_cast<std::size_t>(groups));
     m_sources.resize(static_cast<std::size_t>(groups) * kLanes);
