@@ -1,5 +1,7 @@
 #include "solvers/colour/contact_lanes.h"
 
+#include "solvers/lanes/block_lanes.h"
+
 #include "solvers/lanes/lane_bodies.h"
 
 #include <algorithm>
@@ -81,31 +83,10 @@ void SolveNormalBlock(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
     const RealW vn2 = Dot(RelativeVelocity(a, b, g.rA[1], g.rB[1]), g.normal);
     const RealW b1 = (vn1 - g.velocityBias[0]) - (g.k11 * a1 + g.k12 * a2);
     const RealW b2 = (vn2 - g.velocityBias[1]) - (g.k12 * a1 + g.k22 * a2);
-    const RealW zero = Splat(0);
-
-    // Case 1: both in contact, x = −K⁻¹·b.
-    const RealW x1 = -(g.inv11 * b1 + g.inv12 * b2);
-    const RealW x2 = -(g.inv21 * b1 + g.inv22 * b2);
-    const MaskW case1 = (x1 >= 0) & (x2 >= 0);
-    // Case 2: point 1 only (x2 = 0, vn2 ≥ 0).
-    const RealW y1 = -g.normalMass[0] * b1;
-    const MaskW case2 = (y1 >= 0) & (g.k12 * y1 + b2 >= 0);
-    // Case 3: point 2 only (x1 = 0, vn1 ≥ 0).
-    const RealW z2 = -g.normalMass[1] * b2;
-    const MaskW case3 = (z2 >= 0) & (g.k12 * z2 + b1 >= 0);
-    // Case 4: both separating.
-    const MaskW case4 = (b1 >= 0) & (b2 >= 0);
-
-    RealW new1 = Select(case4, zero, a1), new2 = Select(case4, zero, a2);
-    new1 = Select(case3, zero, new1);
-    new2 = Select(case3, z2, new2);
-    new1 = Select(case2, y1, new1);
-    new2 = Select(case2, zero, new2);
-    new1 = Select(case1, x1, new1);
-    new2 = Select(case1, x2, new2);
+    const auto [block1, block2] = SolveBlockLanes(g, a1, a2, b1, b2);
     // Only the block lanes take the block's answer.
-    new1 = Select(g.block, new1, a1);
-    new2 = Select(g.block, new2, a2);
+    const RealW new1 = Select(g.block, block1, a1);
+    const RealW new2 = Select(g.block, block2, a2);
 
     const Vec2W P1 = (new1 - a1) * g.normal;
     const Vec2W P2 = (new2 - a2) * g.normal;

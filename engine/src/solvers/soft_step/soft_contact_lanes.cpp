@@ -1,6 +1,7 @@
 #include "solvers/soft_step/soft_contact_lanes.h"
 
 #include "solvers/box2d/contact_constraint.h"
+#include "solvers/lanes/block_lanes.h"
 #include "solvers/lanes/lane_bodies.h"
 #include "solvers/soft_step/soft_contact_solver.h"
 #include "solvers/soft_step/soft_delta_lanes.h"
@@ -126,22 +127,7 @@ struct TargetW
     const RealW v2 = RowVelocityW(g.normal, aA2, aB2, a, b) + t[1].bias;
     const RealW b1 = v1 - (g.k11 * a1 + g.k12 * a2);
     const RealW b2 = v2 - (g.k12 * a1 + g.k22 * a2);
-    const RealW zero = Splat(0);
-    const RealW x1 = -(g.inv11 * b1 + g.inv12 * b2);
-    const RealW x2 = -(g.inv21 * b1 + g.inv22 * b2);
-    const MaskW case1 = (x1 >= 0) & (x2 >= 0);
-    const RealW y1 = -g.normalMass[0] * b1;
-    const MaskW case2 = (y1 >= 0) & (g.k12 * y1 + b2 >= 0);
-    const RealW z2 = -g.normalMass[1] * b2;
-    const MaskW case3 = (z2 >= 0) & (g.k12 * z2 + b1 >= 0);
-    const MaskW case4 = (b1 >= 0) & (b2 >= 0);
-    RealW new1 = Select(case4, zero, a1), new2 = Select(case4, zero, a2);
-    new1 = Select(case3, zero, new1);
-    new2 = Select(case3, z2, new2);
-    new1 = Select(case2, y1, new1);
-    new2 = Select(case2, zero, new2);
-    new1 = Select(case1, x1, new1);
-    new2 = Select(case1, x2, new2);
+    const auto [new1, new2] = SolveBlockLanes(g, a1, a2, b1, b2);
     const RealW applied1 = new1 - a1, applied2 = new2 - a2;
     ApplyRow(g, g.normal, aA1, aB1, applied1, a, b);
     ApplyRow(g, g.normal, aA2, aB2, applied2, a, b);

@@ -1,0 +1,48 @@
+// The two normal rows of a two-point manifold as one block, lane by lane: shared by the colour
+// back end's contact lanes and the soft step's.
+#pragma once
+
+#include "solvers/lanes/wide_real.h"
+
+namespace meff::detail
+{
+
+/// New accumulated impulses of the two rows.
+struct BlockImpulsesW
+{
+    RealW x1, x2;
+};
+
+/// Solves vn = K·x + b as one LCP by total enumeration of its four cases in Box2D's order (as
+/// ContactSolver's SolveNormalBlock), b = (vn − bias) − K·a being the rows' velocity error at
+/// the old impulses a. A lane where no case holds keeps a. `Group` holds K's k12, K⁻¹ (inv11,
+/// inv12, inv21, inv22) and each row's own effective mass (normalMass[2], 1/kii).
+template <typename Group>
+[[gnu::always_inline]] inline BlockImpulsesW SolveBlockLanes(const Group& g, RealW a1, RealW a2,
+                                                             RealW b1, RealW b2)
+{
+    const RealW zero = Splat(0);
+    // Case 1: both in contact, x = −K⁻¹·b.
+    const RealW x1 = -(g.inv11 * b1 + g.inv12 * b2);
+    const RealW x2 = -(g.inv21 * b1 + g.inv22 * b2);
+    const MaskW case1 = (x1 >= 0) & (x2 >= 0);
+    // Case 2: point 1 only (x2 = 0, vn2 ≥ 0).
+    const RealW y1 = -g.normalMass[0] * b1;
+    const MaskW case2 = (y1 >= 0) & (g.k12 * y1 + b2 >= 0);
+    // Case 3: point 2 only (x1 = 0, vn1 ≥ 0).
+    const RealW z2 = -g.normalMass[1] * b2;
+    const MaskW case3 = (z2 >= 0) & (g.k12 * z2 + b1 >= 0);
+    // Case 4: both separating.
+    const MaskW case4 = (b1 >= 0) & (b2 >= 0);
+
+    RealW new1 = Select(case4, zero, a1), new2 = Select(case4, zero, a2);
+    new1 = Select(case3, zero, new1);
+    new2 = Select(case3, z2, new2);
+    new1 = Select(case2, y1, new1);
+    new2 = Select(case2, zero, new2);
+    new1 = Select(case1, x1, new1);
+    new2 = Select(case1, x2, new2);
+    return {new1, new2};
+}
+
+} // namespace meff::detail
