@@ -3,6 +3,7 @@
 #include "solvers/lanes/block_lanes.h"
 
 #include "solvers/lanes/lane_bodies.h"
+#include "solvers/lanes/rolling_lanes.h"
 
 #include <algorithm>
 
@@ -37,25 +38,9 @@ namespace
     }
 }
 
-/// The spin rows of rolling resistance (as SolveRollingRow), lane by lane: contacts with it
-/// are rare, so the lanes without it (resistance 0: limit 0, nothing applied) cost nothing else.
 void SolveRolling(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
 {
-    for (int l = 0; l < kLanes; ++l)
-    {
-        if (!(g.rollingResistance[l] > 0))
-        {
-            continue;
-        }
-        // A lane of a vector type is not an lvalue a reference may bind to (clang refuses it).
-        Real accumulated = g.rollingImpulse[l];
-        const Real lambda = SolveRollingRow(g.rollingMass[l], g.rollingResistance[l],
-                                            g.normalImpulse[0][l] + g.normalImpulse[1][l],
-                                            a.angular[l], b.angular[l], accumulated);
-        g.rollingImpulse[l] = accumulated;
-        a.angular[l] -= g.invIA[l] * lambda;
-        b.angular[l] += g.invIB[l] * lambda;
-    }
+    SolveRollingLanes(g, a, b, [](int, Real) {});
 }
 
 /// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0.

@@ -3,6 +3,7 @@
 #include "solvers/box2d/contact_constraint.h"
 #include "solvers/lanes/block_lanes.h"
 #include "solvers/lanes/lane_bodies.h"
+#include "solvers/lanes/rolling_lanes.h"
 #include "solvers/soft_step/soft_contact_solver.h"
 #include "solvers/soft_step/soft_delta_lanes.h"
 
@@ -157,24 +158,10 @@ struct TargetW
     }
 }
 
-/// The spin rows of rolling resistance, lane by lane (rare).
+/// The spin rows of rolling resistance, their impulses totalled over the step.
 void SolveRolling(SoftContactGroup& g, BodyStateW& a, BodyStateW& b)
 {
-    for (int l = 0; l < kLanes; ++l)
-    {
-        if (!(g.rollingResistance[l] > 0))
-        {
-            continue;
-        }
-        Real accumulated = g.rollingImpulse[l];
-        const Real lambda = SolveRollingRow(g.rollingMass[l], g.rollingResistance[l],
-                                            g.normalImpulse[0][l] + g.normalImpulse[1][l],
-                                            a.angular[l], b.angular[l], accumulated);
-        g.rollingImpulse[l] = accumulated;
-        a.angular[l] -= g.invIA[l] * lambda;
-        b.angular[l] += g.invIB[l] * lambda;
-        g.totalRollingImpulse[l] += lambda;
-    }
+    SolveRollingLanes(g, a, b, [&](int l, Real lambda) { g.totalRollingImpulse[l] += lambda; });
 }
 
 void WarmStartGroup(SoftContactGroup& g, Velocity* velocities)
