@@ -293,6 +293,13 @@ struct OffscreenRenderer::Impl
                               " pixels)");
         }
     }
+
+    /// Leaves this thread with no current context. A context may be current on one thread at a
+    /// time, and render's threads take turns with the renderers (a frame may be drawn on another
+    /// thread than the last): a context still current on the thread that drew the last frame
+    /// while another thread makes it current crashed or hung OSMesa 22 (llvmpipe), about one
+    /// render in 30 with two threads.
+    static void Release() { OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0); }
 };
 
 OffscreenRenderer::OffscreenRenderer(int width, int height, int supersample)
@@ -335,6 +342,7 @@ OffscreenRenderer::OffscreenRenderer(int width, int height, int supersample)
     maxHeight = std::min(maxHeight, viewport[1]);
     if (width > maxWidth || height > maxHeight)
     {
+        Impl::Release();
         OSMesaDestroyContext(impl.context);
         throw RenderError("OSMesa cannot draw " + std::to_string(width) + "x" +
                           std::to_string(height) + " pixels (its limit is " +
@@ -348,6 +356,7 @@ OffscreenRenderer::OffscreenRenderer(int width, int height, int supersample)
     }
     impl.supersample = factor;
     impl.buffer.assign(std::size_t(impl.BufferWidth()) * std::size_t(impl.BufferHeight()) * 4, 0);
+    Impl::Release(); // BeginFrame makes it current on the thread that draws
 }
 
 OffscreenRenderer::~OffscreenRenderer()
@@ -412,7 +421,8 @@ Vec2 OffscreenRenderer::ScreenToWorld(double x, double y) const
 Image OffscreenRenderer::EndFrame()
 {
     Impl& impl = *m_impl;
-    glFinish();
+    glFinish(); // the buffer then holds the whole frame, and is ours alone
+    Impl::Release();
     const int s = impl.supersample;
     const int bufferWidth = impl.BufferWidth();
     const int bufferHeight = impl.BufferHeight();
