@@ -28,8 +28,10 @@ struct SeparatingFace
 Real FaceSeparation(const Polygon& poly1, const Transform& xf1, int edge, const Polygon& poly2,
                     const Transform& xf2);
 
-/// CollidePolygons, also writing which face separated the pair when it returns for want of
-/// overlap along a face normal (`separating.edge` < 0 otherwise).
+/// CollidePolygons, starting from the face that last separated the pair (`separating`, as this
+/// left it last time; edge < 0: none), which is tested first, and writing which face separates
+/// them when it returns for want of overlap along a face normal (`separating.edge` < 0
+/// otherwise). The manifold is the same bits as without the hint.
 void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transform& xfA,
                      const Polygon& polygonB, const Transform& xfB, SeparatingFace& separating);
 

@@ -184,8 +184,17 @@ void CollidePolygons(Manifold& manifold, const Polygon& polygonA, const Transfor
                      const Polygon& polygonB, const Transform& xfB, SeparatingFace& separating)
 {
     manifold.pointCount = 0;
-    separating.edge = -1;
     const Real totalRadius = polygonA.radius + polygonB.radius;
+    // The face that separated the pair last time first: when it still separates them, so does
+    // the full search below (FaceSeparation), with no points either way.
+    if (separating.edge >= 0 &&
+        (separating.onB
+             ? FaceSeparation(polygonB, xfB, separating.edge, polygonA, xfA)
+             : FaceSeparation(polygonA, xfA, separating.edge, polygonB, xfB)) > totalRadius)
+    {
+        return;
+    }
+    separating.edge = -1;
 
     // Box2D's order: B's faces are only searched when A's do not separate the pair (in a
     // crowded scene most pairs the broad phase finds stop here).

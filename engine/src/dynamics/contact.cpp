@@ -112,29 +112,6 @@ static void Evaluate(Manifold& manifold, const Shape& a, const Transform& xfA, c
     }
 }
 
-/// Two sharp polygons: Box2D 2.4.1's CollidePolygons, but when they were apart at the last
-/// update the face that separated them then is tested first. Its separation has the bits the
-/// full search gives that face (FaceSeparation), and the search returns the largest face's, so
-/// when it exceeds the radii the search would return no points too: the manifold is the same,
-/// for a fraction of the work (most of a crowd's pairs are apart, and stay apart along the same
-/// face from step to step).
-void CollideSharpPolygons(Contact& contact, const Polygon& a, const Transform& xfA,
-                          const Polygon& b, const Transform& xfB)
-{
-    const SeparatingFace face = contact.separatingFace;
-    if (face.edge >= 0)
-    {
-        const Real separation = face.onB ? FaceSeparation(b, xfB, face.edge, a, xfA)
-                                         : FaceSeparation(a, xfA, face.edge, b, xfB);
-        if (separation > a.radius + b.radius)
-        {
-            contact.manifold.pointCount = 0;
-            return;
-        }
-    }
-    CollidePolygons(contact.manifold, a, xfA, b, xfB, contact.separatingFace);
-}
-
 bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
                     const Shape& shapeB, const Transform& xfB)
 {
@@ -143,7 +120,10 @@ bool UpdateManifold(Contact& contact, const Shape& shapeA, const Transform& xfA,
     if (shapeA.type == ShapeType::Polygon && shapeB.type == ShapeType::Polygon && !shapeA.rounded &&
         !shapeB.rounded)
     {
-        CollideSharpPolygons(contact, shapeA.polygon, xfA, shapeB.polygon, xfB);
+        // Box2D 2.4.1's CollidePolygons, but the face that separated the pair at the last update
+        // is tested first: most of a crowd's pairs are apart, and stay apart along the same face
+        // from step to step (exact, so Box2D's back end uses it too).
+        CollidePolygons(manifold, shapeA.polygon, xfA, shapeB.polygon, xfB, contact.separatingFace);
     }
     else
     {

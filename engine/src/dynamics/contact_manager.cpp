@@ -317,7 +317,8 @@ void Collide(WorldState& world)
             continue;
         }
 
-        if (recycleDistance > 0 &&
+        // The flag first: it is never set in Box2D's back end, whose every contact comes here.
+        if ((contact.flags & Contact::PoseKept) != 0 && recycleDistance > 0 &&
             KeepsManifold(recycleDistance, contact, shapeB, bodyA.xf, bodyB.xf))
         {
             // What UpdateContact would do to a contact that stays touching with the same
@@ -339,7 +340,9 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     const Shape& shapeB = world.shapes[contact.shapeB];
     Body& bodyA = world.bodies[contact.bodyA];
     Body& bodyB = world.bodies[contact.bodyB];
-    contact.flags &= ~Contact::Disabled; // an updated contact takes part again (Box2D: enabled)
+    // An updated contact takes part again (Box2D: enabled), and keeps its pose only if recycling
+    // (below).
+    contact.flags &= ~(Contact::Disabled | Contact::PoseKept);
 
     const bool wasTouching = contact.IsTouching();
     const bool touching = contact.IsSensor()
@@ -349,10 +352,6 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     {
         contact.keptPose = MulT(bodyA.xf, bodyB.xf);
         contact.flags |= Contact::PoseKept;
-    }
-    else
-    {
-        contact.flags &= ~Contact::PoseKept;
     }
     if (!contact.IsSensor() && touching != wasTouching)
     {
@@ -377,7 +376,7 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     {
         RecordTouchEnded(world, contact);
     }
-    if (touching && !contact.IsSensor())
+    if (touching && !contact.IsSensor() && world.preSolve)
     {
         RunPreSolve(world, contactIndex);
     }
