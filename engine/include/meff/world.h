@@ -626,8 +626,9 @@ class World
     void CastRay(Vec2 origin, Vec2 translation, QueryFilter filter, CastCallback callback) const;
 
     /// Every shape whose broad-phase box overlaps `box`, as Box2D 2.4.1's b2World::QueryAABB.
-    /// The broad-phase box is the shape's bounding box fattened by Tolerances::aabbMargin (and
-    /// stretched ahead of fast motion), so shapes up to a margin away are found too: a cheap
+    /// The broad-phase box is the shape's bounding box fattened by the solver back end's margin
+    /// (Box2D's and the soft step's: Tolerances::aabbMargin; colour's: half of it) and
+    /// stretched ahead of fast motion, so shapes up to a margin away are found too: a cheap
     /// candidate list. For the exact answer, test GetShapeAABB(shape) in the callback.
     void OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback callback) const;
     /// Every shape containing the point (its boundary included), by each shape's exact test:
@@ -678,8 +679,9 @@ class World
 
     /// The shape's bounding box at its body's current transform, skin included (m).
     AABB GetShapeAABB(ShapeId id) const;
-    /// The shape's box in the broad phase: the bounding box fattened by the AABB margin and
-    /// the predicted motion, as the broad phase last updated it (m). OverlapAABB tests these.
+    /// The shape's box in the broad phase: the bounding box fattened by the back end's margin
+    /// and the predicted motion (OverlapAABB), as the broad phase last updated it (m).
+    /// OverlapAABB tests these.
     AABB GetShapeFatAABB(ShapeId id) const;
 
     // Determinism and rollback
