@@ -25,7 +25,7 @@ void WarmStartSoft(const FrictionJoint& joint, const SoftJointState& state, RowB
 void SolveSoft(FrictionJoint& joint, const SoftJointState& state, bool, RowBodies& b)
 {
     const SoftStepContext& context = state.context;
-    const Real h = context.halfKick ? Real(0.5) * context.h : context.h;
+    const Real h = context.KickTime();
     const Real maxTorque = h * joint.maxTorque;
     SolveRow(AngularRow(), RowMass(b.iA + b.iB), RowTarget{}, joint.angularImpulse, b, -maxTorque,
              maxTorque);

@@ -25,13 +25,13 @@ void SolveSoft(MotorJoint& joint, const SoftJointState& state, bool useBias, Row
 {
     const SoftStepContext& context = state.context;
     const Real rate = joint.correctionFactor * context.step->invDt;
-    const Real maxTorque = context.h * joint.maxTorque;
+    const Real maxTorque = context.KickTime() * joint.maxTorque;
     const Real angularBias = useBias ? rate * (state.frame.angle0 + state.Rotation()) : Real(0);
     SolveRow(AngularRow(), RowMass(b.iA + b.iB), RowTarget{angularBias, kRigid},
              joint.angularImpulse, b, -maxTorque, maxTorque);
     const Softness correction{rate, 1, 0};
     SolvePoint(state.at.rA, state.at.rB, state.at.d, useBias, correction, joint.linearImpulse, b,
-               context.step->solver.blockJoints, context.h * joint.maxForce);
+               context.step->solver.blockJoints, context.KickTime() * joint.maxForce);
 }
 
 void ScaleImpulses(MotorJoint& joint, Real factor)

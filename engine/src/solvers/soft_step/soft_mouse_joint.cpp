@@ -37,7 +37,7 @@ void SolveSoft(MouseJoint& joint, const SoftJointState& state, bool useBias, Row
     // The target is a world point: only B's motion counts.
     const Vec2 C = state.dB.dp + state.frame.deltaCenter + state.at.rB;
     SolvePoint({}, state.at.rB, C, true, *spring, joint.impulse, b,
-               context.step->solver.blockJoints, context.h * joint.maxForce);
+               context.step->solver.blockJoints, context.KickTime() * joint.maxForce);
 }
 
 void ScaleImpulses(MouseJoint& joint, Real factor)

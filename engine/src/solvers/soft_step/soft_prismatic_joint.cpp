@@ -2,7 +2,7 @@
 // angle relative to A. With d the anchors' gap and a, p the axis and its perpendicular turned
 // with A since the step began:
 //   perpendicular  C = p·d = 0,   angular C = θ0 + (rotation since the start) = 0
-//   motor          a·(vB − vA) + a2·wB − a1·wA = motorSpeed, |λ| ≤ h·maxMotorForce
+//   motor          a·(vB − vA) + a2·wB − a1·wA = motorSpeed, |λ| ≤ h·maxMotorForce (h: KickTime)
 //   limits         lower C = a·d − lower ≥ 0, upper C = upper − a·d ≥ 0
 //   spring         C = a·d − targetTranslation, when enabled: a real spring
 //                  (FrequencySpringSoftness) on the axial row, once per kick
@@ -73,7 +73,7 @@ void SolveSoft(PrismaticJoint& joint, const SoftJointState& state, bool useBias,
     }
     if (joint.enableMotor)
     {
-        const Real maxImpulse = context.h * joint.maxMotorForce;
+        const Real maxImpulse = context.KickTime() * joint.maxMotorForce;
         SolveRow(axial, axialMass, RowTarget{-joint.motorSpeed, kRigid}, joint.motorImpulse, b,
                  -maxImpulse, maxImpulse);
     }

@@ -1,8 +1,9 @@
 // Revolute joint in the soft step: the point rows hold B's anchor on A's (C = anchor B − anchor
-// A), a motor drives wB − wA to the motor speed with at most h·maxMotorTorque, and the limits
-// keep θ = θ0 + (rotation since the start) within [lower, upper], each row on the seed's
-// scalar effective mass (the angular rows' k = 1/IA + 1/IB). An enabled spring pulls θ towards
-// targetAngle: a real spring (FrequencySpringSoftness), once per kick.
+// A), a motor drives wB − wA to the motor speed with at most h·maxMotorTorque (h the kick's
+// time, SoftStepContext::KickTime: half a sub-step in the half kicks), and the limits keep θ = θ0 +
+// (rotation since the start) within [lower, upper], each row on the seed's scalar effective mass
+// (the angular rows' k = 1/IA + 1/IB). An enabled spring pulls θ towards targetAngle: a real spring
+// (FrequencySpringSoftness), once per kick.
 #include "solvers/soft_step/soft_joint.h"
 
 namespace meff::detail
@@ -58,7 +59,7 @@ void SolveSoft(RevoluteJoint& joint, const SoftJointState& state, bool useBias, 
     }
     if (joint.enableMotor && !fixedRotation)
     {
-        const Real maxImpulse = context.h * joint.maxMotorTorque;
+        const Real maxImpulse = context.KickTime() * joint.maxMotorTorque;
         SolveRow(AngularRow(), axialMass, RowTarget{-joint.motorSpeed, kRigid}, joint.motorImpulse,
                  b, -maxImpulse, maxImpulse);
     }

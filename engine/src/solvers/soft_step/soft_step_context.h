@@ -27,6 +27,11 @@ struct SoftStepContext
     bool halfKick = false;        ///< this sweep belongs to one of the step's two half sub-steps
     bool closing = false;         ///< the closing half kick's sweep: springs act, rigid rows relax
     SoftBodies* bodies = nullptr;
+
+    /// The time this sweep's impulses act over (s): a sub-step, or half of one in the step's
+    /// opening and closing half kicks. A row bounded by a force or torque (motors, friction
+    /// joints, the mouse) may give at most that × the bound.
+    Real KickTime() const { return halfKick ? Real(0.5) * h : h; }
 };
 
 } // namespace meff::detail

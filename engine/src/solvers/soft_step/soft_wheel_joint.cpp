@@ -1,6 +1,6 @@
 // Wheel joint in the soft step: B's anchor is held on a line fixed in A (the perpendicular row,
 // C = p·d = 0), a spring of the joint's stiffness and damping acts along the line (a real
-// spring, once per sub-step), a motor drives wB − wA with at most h·maxMotorTorque,
+// spring, once per sub-step), a motor drives wB − wA with at most h·maxMotorTorque (h: KickTime),
 // and limits keep the translation a·d within [lower, upper].
 #include "solvers/soft_step/soft_joint.h"
 
@@ -66,7 +66,7 @@ void SolveSoft(WheelJoint& joint, const SoftJointState& state, bool useBias, Row
     }
     if (joint.enableMotor)
     {
-        const Real maxImpulse = context.h * joint.maxMotorTorque;
+        const Real maxImpulse = context.KickTime() * joint.maxMotorTorque;
         SolveRow(AngularRow(), RowMass(b.iA + b.iB), RowTarget{-joint.motorSpeed, kRigid},
                  joint.motorImpulse, b, -maxImpulse, maxImpulse);
     }
