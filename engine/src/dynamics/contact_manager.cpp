@@ -5,6 +5,9 @@
 
 #include "dynamics/events.h"
 #include "dynamics/world_state.h"
+#include "tasks/parallel_ranges.h"
+
+#include <vector>
 
 namespace meff::detail
 {
@@ -273,92 +276,128 @@ void FlagContactsForFiltering(WorldState& world, std::int32_t bodyA, std::int32_
     }
 }
 
-void Collide(WorldState& world)
+namespace
 {
-    // Recycling is the back end's choice (0: never, Box2D's), and off with a pre-solve callback.
-    const Real recycleDistance = world.preSolve ? Real(0) : world.collision.recycleDistance;
-    for (std::int32_t c = world.contactList; c != kNullIndex;)
+
+/// Contacts to a range of the threaded Collide's manifold pass: a manifold costs a few hundred
+/// to a few thousand instructions, so 64 of them outweigh handing a range to another thread.
+constexpr int kMinContactsPerTask = 64;
+
+/// Recycling is the back end's choice (0: never, Box2D's), and off with a pre-solve callback.
+Real RecycleDistance(const WorldState& world)
+{
+    return world.preSolve ? Real(0) : world.collision.recycleDistance;
+}
+
+/// Collide's choice for one contact from the activity test on: the part that a contact skipped
+/// as asleep repeats when an earlier contact of the list woke one of its bodies.
+CollideAction DecideActive(const WorldState& world, const Contact& contact, Real recycleDistance)
+{
+    const Body& bodyA = world.bodies[contact.bodyA];
+    const Body& bodyB = world.bodies[contact.bodyB];
+    const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
+    const bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
+    if (!activeA && !activeB)
     {
-        Contact& contact = world.contacts[c];
-        const std::int32_t next = contact.next;
+        return CollideAction::Asleep;
+    }
+    // Pairs whose fat boxes part are destroyed; the rest get a fresh manifold or keep theirs.
+    const Shape& shapeA = world.shapes[contact.shapeA];
+    const Shape& shapeB = world.shapes[contact.shapeB];
+    if (!world.broadPhase.TestOverlap(shapeA.proxyId, shapeB.proxyId))
+    {
+        return CollideAction::Destroy;
+    }
+    if (recycleDistance > 0 && KeepsManifold(recycleDistance, contact, shapeB, bodyA.xf, bodyB.xf))
+    {
+        return CollideAction::Keep;
+    }
+    return CollideAction::Update;
+}
+
+/// Collide's choice for one contact. A contact flagged for filtering is filtered first, as
+/// b2ContactManager::Collide: the bodies, then the filter (bits, then the user's); the flag is
+/// cleared when the pair still collides.
+CollideAction Decide(WorldState& world, Contact& contact, Real recycleDistance)
+{
+    if ((contact.flags & Contact::Filter) != 0)
+    {
         const Shape& shapeA = world.shapes[contact.shapeA];
         const Shape& shapeB = world.shapes[contact.shapeB];
-
-        if ((contact.flags & Contact::Filter) != 0)
+        if (!BodiesShouldCollide(world, contact.bodyB, contact.bodyA) ||
+            !FiltersAllow(shapeA.def.filter, shapeB.def.filter) ||
+            !CustomFilterAllows(world, contact.shapeA, contact.shapeB))
         {
-            // As b2ContactManager::Collide: the bodies, then the filter (bits, then the
-            // user's).
-            if (!BodiesShouldCollide(world, contact.bodyB, contact.bodyA) ||
-                !FiltersAllow(shapeA.def.filter, shapeB.def.filter) ||
-                !CustomFilterAllows(world, contact.shapeA, contact.shapeB))
-            {
-                DestroyContact(world, c);
-                c = next;
-                continue;
-            }
-            contact.flags &= ~Contact::Filter;
+            return CollideAction::Destroy;
         }
+        contact.flags &= ~Contact::Filter;
+    }
+    return DecideActive(world, contact, recycleDistance);
+}
 
-        const Body& bodyA = world.bodies[contact.bodyA];
-        const Body& bodyB = world.bodies[contact.bodyB];
-        const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
-        const bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
-        if (!activeA && !activeB)
-        {
-            c = next;
-            continue;
-        }
+/// What UpdateContact would do to a contact that stays touching with the same manifold: no
+/// events, and no pre-solve callback (recycling is off with one).
+void KeepManifold(Contact& contact)
+{
+    contact.flags &= ~Contact::Disabled;
+}
 
-        // Pairs whose fat boxes part are destroyed; the rest get a fresh manifold.
-        if (!world.broadPhase.TestOverlap(shapeA.proxyId, shapeB.proxyId))
-        {
-            DestroyContact(world, c);
-            c = next;
-            continue;
-        }
-
-        // The flag first: it is never set in Box2D's back end, whose every contact comes here.
-        if ((contact.flags & Contact::PoseKept) != 0 && recycleDistance > 0 &&
-            KeepsManifold(recycleDistance, contact, shapeB, bodyA.xf, bodyB.xf))
-        {
-            // What UpdateContact would do to a contact that stays touching with the same
-            // manifold (no events; the pre-solve callback is off while recycling).
-            contact.flags &= ~Contact::Disabled;
-            c = next;
-            continue;
-        }
-
+/// Does Collide's `action` to contact `c` at once.
+void Perform(WorldState& world, std::int32_t c, CollideAction action)
+{
+    switch (action)
+    {
+    case CollideAction::Destroy:
+        DestroyContact(world, c);
+        break;
+    case CollideAction::Keep:
+        KeepManifold(world.contacts[c]);
+        break;
+    case CollideAction::Update:
         UpdateContact(world, c);
-        c = next;
+        break;
+    case CollideAction::Asleep:
+        break;
     }
 }
 
-void UpdateContact(WorldState& world, std::int32_t contactIndex)
+/// UpdateContact's first half, which writes only the contact, so that contacts can be computed
+/// on several threads at once: the manifold (a sensor's overlap) at the bodies' present poses,
+/// and the pose it was computed at for recycling. Returns the new touching state.
+bool ComputeContact(const WorldState& world, Contact& contact)
 {
-    Contact& contact = world.contacts[contactIndex];
     const Shape& shapeA = world.shapes[contact.shapeA];
     const Shape& shapeB = world.shapes[contact.shapeB];
-    Body& bodyA = world.bodies[contact.bodyA];
-    Body& bodyB = world.bodies[contact.bodyB];
-    // An updated contact takes part again (Box2D: enabled), and keeps its pose only if recycling
-    // (below).
-    contact.flags &= ~(Contact::Disabled | Contact::PoseKept);
-
-    const bool wasTouching = contact.IsTouching();
+    const Transform& xfA = world.bodies[contact.bodyA].xf;
+    const Transform& xfB = world.bodies[contact.bodyB].xf;
     const bool touching = contact.IsSensor()
-                              ? UpdateSensorOverlap(contact, shapeA, bodyA.xf, shapeB, bodyB.xf)
-                              : UpdateManifold(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+                              ? UpdateSensorOverlap(contact, shapeA, xfA, shapeB, xfB)
+                              : UpdateManifold(contact, shapeA, xfA, shapeB, xfB);
     if (world.collision.recycleDistance > 0 && !contact.IsSensor())
     {
-        contact.keptPose = MulT(bodyA.xf, bodyB.xf);
+        contact.keptPose = MulT(xfA, xfB);
         contact.flags |= Contact::PoseKept;
     }
+    else
+    {
+        contact.flags &= ~Contact::PoseKept;
+    }
+    return touching;
+}
+
+/// UpdateContact's second half, which touches the rest of the world and so runs on the
+/// stepping thread, in list order: wakes, the touching flag, begin/end events, pre-solve.
+void ApplyContact(WorldState& world, std::int32_t contactIndex, bool touching)
+{
+    Contact& contact = world.contacts[contactIndex];
+    contact.flags &= ~Contact::Disabled; // an updated contact takes part again (Box2D: enabled)
+    const bool wasTouching = contact.IsTouching();
     if (!contact.IsSensor() && touching != wasTouching)
     {
         // A solid contact that begins or ends changes both bodies' islands: wake them
         // (b2Contact::Update; a sensor's overlap wakes nobody).
-        WakeBody(bodyA);
-        WakeBody(bodyB);
+        WakeBody(world, contact.bodyA);
+        WakeBody(world, contact.bodyB);
     }
     if (touching)
     {
@@ -376,10 +415,114 @@ void UpdateContact(WorldState& world, std::int32_t contactIndex)
     {
         RecordTouchEnded(world, contact);
     }
-    if (touching && !contact.IsSensor() && world.preSolve)
+    if (touching && !contact.IsSensor())
     {
         RunPreSolve(world, contactIndex);
     }
+}
+
+/// Box2D 2.4.1's walk: each contact decided and done in turn.
+void CollideSerial(WorldState& world)
+{
+    const Real recycleDistance = RecycleDistance(world);
+    for (std::int32_t c = world.contactList; c != kNullIndex;)
+    {
+        const std::int32_t next = world.contacts[c].next; // c may be destroyed
+        Perform(world, c, Decide(world, world.contacts[c], recycleDistance));
+        c = next;
+    }
+}
+
+/// The threaded Collide's first pass: every contact decided in list order (deciding changes
+/// nothing but the contact's filter flag), the work that must wait listed in that order. A kept
+/// manifold is done at once: it writes only its own contact's flags and records nothing.
+void ListCollideWork(WorldState& world, std::vector<CollideEntry>& entries)
+{
+    entries.clear();
+    const Real recycleDistance = RecycleDistance(world);
+    for (std::int32_t c = world.contactList; c != kNullIndex;)
+    {
+        Contact& contact = world.contacts[c];
+        const CollideAction action = Decide(world, contact, recycleDistance);
+        if (action == CollideAction::Keep)
+        {
+            KeepManifold(contact);
+        }
+        else
+        {
+            entries.push_back({c, action, false});
+        }
+        c = contact.next;
+    }
+}
+
+/// The second pass: the fresh manifolds, on the threads (each writes its own contact and entry).
+void ComputeListedManifolds(WorldState& world, std::vector<CollideEntry>& entries)
+{
+    ForRanges(world.tasks, static_cast<int>(entries.size()), kMinContactsPerTask,
+              [&world, &entries](int begin, int end, int)
+              {
+                  for (int i = begin; i < end; ++i)
+                  {
+                      CollideEntry& entry = entries[static_cast<std::size_t>(i)];
+                      if (entry.action == CollideAction::Update)
+                      {
+                          entry.touching = ComputeContact(world, world.contacts[entry.contact]);
+                      }
+                  }
+              });
+}
+
+/// The third pass, in list order, so that wakes, events and their order are the serial walk's.
+/// A contact found asleep in the first pass is decided again here, where the serial walk would
+/// have decided it: an earlier contact that began or ended touching may have woken a body.
+void ApplyListedWork(WorldState& world, const std::vector<CollideEntry>& entries)
+{
+    const Real recycleDistance = RecycleDistance(world);
+    for (const CollideEntry& entry : entries)
+    {
+        switch (entry.action)
+        {
+        case CollideAction::Update:
+            ApplyContact(world, entry.contact, entry.touching);
+            break;
+        case CollideAction::Asleep:
+            Perform(world, entry.contact,
+                    DecideActive(world, world.contacts[entry.contact], recycleDistance));
+            break;
+        default:
+            Perform(world, entry.contact, entry.action);
+            break;
+        }
+    }
+}
+
+/// The manifolds go to the threads only where nothing else can notice: never for Box2D's back
+/// end (single-threaded, bit for bit Box2D 2.4.1), nor with a pre-solve callback (the user's
+/// code, called in list order on the stepping thread, between the manifolds).
+bool CollidesOnThreads(const WorldState& world)
+{
+    return world.tasks != nullptr && world.solver.kind != SolverKind::Box2D && !world.preSolve;
+}
+
+} // namespace
+
+void Collide(WorldState& world)
+{
+    if (!CollidesOnThreads(world))
+    {
+        CollideSerial(world);
+        return;
+    }
+    std::vector<CollideEntry>& entries = world.scratch.collide;
+    ListCollideWork(world, entries);
+    ComputeListedManifolds(world, entries);
+    ApplyListedWork(world, entries);
+}
+
+void UpdateContact(WorldState& world, std::int32_t contactIndex)
+{
+    ApplyContact(world, contactIndex, ComputeContact(world, world.contacts[contactIndex]));
 }
 
 } // namespace meff::detail

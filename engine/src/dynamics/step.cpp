@@ -18,11 +18,13 @@
 #include "dynamics/contact_reports.h"
 #include "dynamics/events.h"
 #include "dynamics/world_state.h"
+#include "tasks/parallel_ranges.h"
 #include "meff/world.h"
 
 #include <chrono>
 #include <exception>
 #include <string>
+#include <vector>
 
 namespace meff
 {
@@ -162,37 +164,118 @@ void Solve(WorldState& world, const StepContext& step)
     world.solvers.For(step.solver.kind).Step(view, step);
 }
 
-void SynchronizeShapes(WorldState& world)
+namespace
 {
-    for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
-    {
-        Body& body = world.bodies[b];
-        // A body outside every island did not move; static bodies never move in a step.
-        if (!body.islandFlag || body.type == BodyType::Static)
-        {
-            continue;
-        }
-        SynchronizeBodyShapes(world, body);
-    }
+
+/// Bodies to a range of the threaded SynchronizeShapes: a body's boxes cost little (two boxes
+/// per shape), so ranges are as long as the island step's per-body loops.
+constexpr int kMinBodiesPerSyncTask = 512;
+
+/// Did the body move in the step? A body outside every island did not; static bodies never do.
+bool Moved(const Body& body)
+{
+    return body.islandFlag && body.type != BodyType::Static;
 }
 
-void SynchronizeBodyShapes(WorldState& world, Body& body)
+/// The pose whose boxes, with the present pose's, cover the body's motion over the step. A body
+/// that fell asleep this step gets tight boxes at its resting pose, not boxes covering its last
+/// motion (Box2D 2.4.1's b2Body::SynchronizeFixtures).
+Transform StartPose(const Body& body)
 {
-    // A body that fell asleep this step gets tight boxes at its resting pose, not boxes
-    // covering its last motion (Box2D 2.4.1's b2Body::SynchronizeFixtures).
     Transform xf0 = body.xf;
     if (body.awake)
     {
         xf0.q.Set(body.sweep.a0);
         xf0.p = body.sweep.c0 - Mul(xf0.q, body.sweep.localCenter);
     }
+    return xf0;
+}
+
+/// Sets the shape's box to cover its motion from xf0 to xf1 and returns that motion's
+/// displacement (the broad phase stretches the fat box along it: MoveProxy).
+Vec2 SweepShapeBox(Shape& shape, const Transform& xf0, const Transform& xf1)
+{
+    const AABB box0 = shape.ComputeAABB(xf0);
+    const AABB box1 = shape.ComputeAABB(xf1);
+    shape.aabb = Combine(box0, box1);
+    return box1.GetCenter() - box0.GetCenter();
+}
+
+/// The moved bodies, in body-list order.
+void ListMovedBodies(const WorldState& world, std::vector<std::int32_t>& moved)
+{
+    moved.clear();
+    for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
+    {
+        if (Moved(world.bodies[b]))
+        {
+            moved.push_back(b);
+        }
+    }
+}
+
+/// The threaded SynchronizeShapes: the moved bodies' shapes' boxes computed on the threads
+/// (each range writes its own bodies' shapes and their displacements), then the broad phase's
+/// tree, which all proxies share, updated on this thread in body-list order, so that the tree
+/// is the serial walk's.
+void SynchronizeShapesOnThreads(WorldState& world)
+{
+    StepScratch& scratch = world.scratch;
+    ListMovedBodies(world, scratch.movedBodies);
+    scratch.displacements.resize(world.shapes.size());
+    ForRanges(world.tasks, static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
+              [&world, &scratch](int begin, int end, int)
+              {
+                  for (int i = begin; i < end; ++i)
+                  {
+                      const Body& body = world.bodies[scratch.movedBodies[std::size_t(i)]];
+                      const Transform xf0 = StartPose(body);
+                      for (const std::int32_t s : body.shapes)
+                      {
+                          scratch.displacements[std::size_t(s)] =
+                              SweepShapeBox(world.shapes[s], xf0, body.xf);
+                      }
+                  }
+              });
+    for (const std::int32_t b : scratch.movedBodies)
+    {
+        for (const std::int32_t s : world.bodies[b].shapes)
+        {
+            const Shape& shape = world.shapes[s];
+            world.broadPhase.MoveProxy(shape.proxyId, shape.aabb,
+                                       scratch.displacements[std::size_t(s)]);
+        }
+    }
+}
+
+} // namespace
+
+void SynchronizeShapes(WorldState& world)
+{
+    // Box2D's back end stays on one thread, its walk Box2D 2.4.1's.
+    if (world.tasks != nullptr && world.solver.kind != SolverKind::Box2D)
+    {
+        SynchronizeShapesOnThreads(world);
+        return;
+    }
+    for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
+    {
+        Body& body = world.bodies[b];
+        if (Moved(body))
+        {
+            SynchronizeBodyShapes(world, body);
+        }
+    }
+}
+
+void SynchronizeBodyShapes(WorldState& world, Body& body)
+{
+    const Transform xf0 = StartPose(body);
     for (const std::int32_t s : body.shapes)
     {
         Shape& shape = world.shapes[s];
-        const AABB box0 = shape.ComputeAABB(xf0);
-        const AABB box1 = shape.ComputeAABB(body.xf);
-        shape.aabb = Combine(box0, box1);
-        world.broadPhase.MoveProxy(shape.proxyId, shape.aabb, box1.GetCenter() - box0.GetCenter());
+        const Vec2 displacement = SweepShapeBox(shape, xf0, body.xf);
+        world.broadPhase.MoveProxy(shape.proxyId, shape.aabb, displacement);
     }
 }
 

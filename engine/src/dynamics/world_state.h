@@ -9,6 +9,7 @@
 #include "dynamics/joint_slot.h"
 #include "dynamics/pair_set.h"
 #include "dynamics/shape.h"
+#include "dynamics/step_scratch.h"
 #include "joints/joint.h"
 #include "solvers/box2d/contact_solver.h"
 #include "solvers/island.h"
@@ -73,6 +74,7 @@ struct WorldState
     /// set with the solver settings.
     CollisionPolicy collision;
     bool newShapes = false; ///< find new contacts before the next narrow phase
+    StepScratch scratch;    ///< the threaded collision stages' working memory (not state)
 
     SolverSet solvers;       ///< the back ends (SolverSettings::kind picks one each step)
     Island toiIsland;        ///< the mini-island of one time-of-impact event

@@ -1,0 +1,42 @@
+// Working memory of the step's threaded collision stages (Collide, SynchronizeShapes), kept in
+// the world from step to step so that a warmed-up world does not allocate for them. None of it
+// is state: it is rewritten before it is read, every step, and is outside snapshots and the
+// state hash.
+#pragma once
+
+#include "meff/math.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meff::detail
+{
+
+/// What Collide does with one contact, decided in list order before any of it is done.
+enum class CollideAction : std::uint8_t
+{
+    Asleep,  ///< both bodies inactive: nothing, unless an earlier contact wakes one
+    Destroy, ///< filtered out or the fat boxes parted
+    Keep,    ///< touching, and the manifold is kept (CollisionPolicy::recycleDistance)
+    Update,  ///< a fresh manifold (UpdateContact)
+};
+
+/// One contact of the threaded Collide's list-order sequence.
+struct CollideEntry
+{
+    std::int32_t contact;
+    CollideAction action;
+    bool touching; ///< Update: the fresh manifold's touching state, written by the threads
+};
+
+struct StepScratch
+{
+    /// The threaded Collide's contacts, in contact-list order (Keep is done at once, not kept).
+    std::vector<CollideEntry> collide;
+    /// The threaded SynchronizeShapes' moved bodies, in body-list order.
+    std::vector<std::int32_t> movedBodies;
+    /// Per shape index: the centre of its box's motion over the step (MoveProxy's displacement).
+    std::vector<Vec2> displacements;
+};
+
+} // namespace meff::detail
