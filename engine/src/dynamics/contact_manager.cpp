@@ -315,24 +315,31 @@ CollideAction DecideActive(const WorldState& world, const Contact& contact, Real
     return CollideAction::Update;
 }
 
-/// Collide's choice for one contact. A contact flagged for filtering is filtered first, as
-/// b2ContactManager::Collide: the bodies, then the filter (bits, then the user's); the flag is
-/// cleared when the pair still collides.
+/// Does a contact flagged for filtering still collide? As b2ContactManager::Collide: the
+/// bodies, then the filter (bits, then the user's); the flag is cleared when it does.
+bool PassesFilter(WorldState& world, Contact& contact)
+{
+    if ((contact.flags & Contact::Filter) == 0)
+    {
+        return true;
+    }
+    const Shape& shapeA = world.shapes[contact.shapeA];
+    const Shape& shapeB = world.shapes[contact.shapeB];
+    if (!BodiesShouldCollide(world, contact.bodyB, contact.bodyA) ||
+        !FiltersAllow(shapeA.def.filter, shapeB.def.filter) ||
+        !CustomFilterAllows(world, contact.shapeA, contact.shapeB))
+    {
+        return false;
+    }
+    contact.flags &= ~Contact::Filter;
+    return true;
+}
+
+/// Collide's choice for one contact: the filter first, then the rest.
 CollideAction Decide(WorldState& world, Contact& contact, Real recycleDistance)
 {
-    if ((contact.flags & Contact::Filter) != 0)
-    {
-        const Shape& shapeA = world.shapes[contact.shapeA];
-        const Shape& shapeB = world.shapes[contact.shapeB];
-        if (!BodiesShouldCollide(world, contact.bodyB, contact.bodyA) ||
-            !FiltersAllow(shapeA.def.filter, shapeB.def.filter) ||
-            !CustomFilterAllows(world, contact.shapeA, contact.shapeB))
-        {
-            return CollideAction::Destroy;
-        }
-        contact.flags &= ~Contact::Filter;
-    }
-    return DecideActive(world, contact, recycleDistance);
+    return PassesFilter(world, contact) ? DecideActive(world, contact, recycleDistance)
+                                        : CollideAction::Destroy;
 }
 
 /// What UpdateContact would do to a contact that stays touching with the same manifold: no
@@ -357,6 +364,7 @@ void Perform(WorldState& world, std::int32_t c, CollideAction action)
         UpdateContact(world, c);
         break;
     case CollideAction::Asleep:
+    case CollideAction::Pending:
         break;
     }
 }
@@ -433,48 +441,52 @@ void CollideSerial(WorldState& world)
     }
 }
 
-/// The threaded Collide's first pass: every contact decided in list order (deciding changes
-/// nothing but the contact's filter flag), the work that must wait listed in that order. A kept
-/// manifold is done at once: it writes only its own contact's flags and records nothing.
-void ListCollideWork(WorldState& world, std::vector<CollideEntry>& entries)
+/// The threaded Collide's first pass, in list order: the contacts listed, and filtered, since
+/// the user's filter is called on this thread in the serial walk's order.
+void ListContacts(WorldState& world, std::vector<CollideEntry>& entries)
 {
     entries.clear();
-    const Real recycleDistance = RecycleDistance(world);
     for (std::int32_t c = world.contactList; c != kNullIndex;)
     {
         Contact& contact = world.contacts[c];
-        const CollideAction action = Decide(world, contact, recycleDistance);
-        if (action == CollideAction::Keep)
-        {
-            KeepManifold(contact);
-        }
-        else
-        {
-            entries.push_back({c, action, false});
-        }
+        const bool passes = PassesFilter(world, contact);
+        entries.push_back({c, passes ? CollideAction::Pending : CollideAction::Destroy, false});
         c = contact.next;
     }
 }
 
-/// The second pass: the fresh manifolds, on the threads (each writes its own contact and entry).
-void ComputeListedManifolds(WorldState& world, std::vector<CollideEntry>& entries)
+/// The second pass, on the threads: each contact that passed the filter decided, its manifold
+/// kept or computed afresh. Each range writes only its own entries and contacts; deciding reads
+/// the bodies, shapes and fat boxes, which nothing changes until the third pass.
+void DecideAndCompute(WorldState& world, std::vector<CollideEntry>& entries)
 {
+    const Real recycleDistance = RecycleDistance(world);
     ForRanges(world.tasks, static_cast<int>(entries.size()), kMinContactsPerTask,
-              [&world, &entries](int begin, int end, int)
+              [&world, &entries, recycleDistance](int begin, int end, int)
               {
                   for (int i = begin; i < end; ++i)
                   {
                       CollideEntry& entry = entries[static_cast<std::size_t>(i)];
-                      if (entry.action == CollideAction::Update)
+                      if (entry.action != CollideAction::Pending)
                       {
-                          entry.touching = ComputeContact(world, world.contacts[entry.contact]);
+                          continue;
+                      }
+                      Contact& contact = world.contacts[entry.contact];
+                      entry.action = DecideActive(world, contact, recycleDistance);
+                      if (entry.action == CollideAction::Keep)
+                      {
+                          KeepManifold(contact);
+                      }
+                      else if (entry.action == CollideAction::Update)
+                      {
+                          entry.touching = ComputeContact(world, contact);
                       }
                   }
               });
 }
 
 /// The third pass, in list order, so that wakes, events and their order are the serial walk's.
-/// A contact found asleep in the first pass is decided again here, where the serial walk would
+/// A contact found asleep in the second pass is decided again here, where the serial walk would
 /// have decided it: an earlier contact that began or ended touching may have woken a body.
 void ApplyListedWork(WorldState& world, const std::vector<CollideEntry>& entries)
 {
@@ -490,8 +502,11 @@ void ApplyListedWork(WorldState& world, const std::vector<CollideEntry>& entries
             Perform(world, entry.contact,
                     DecideActive(world, world.contacts[entry.contact], recycleDistance));
             break;
-        default:
-            Perform(world, entry.contact, entry.action);
+        case CollideAction::Destroy:
+            DestroyContact(world, entry.contact);
+            break;
+        case CollideAction::Keep: // done on the threads
+        case CollideAction::Pending:
             break;
         }
     }
@@ -515,8 +530,8 @@ void Collide(WorldState& world)
         return;
     }
     std::vector<CollideEntry>& entries = world.scratch.collide;
-    ListCollideWork(world, entries);
-    ComputeListedManifolds(world, entries);
+    ListContacts(world, entries);
+    DecideAndCompute(world, entries);
     ApplyListedWork(world, entries);
 }
 

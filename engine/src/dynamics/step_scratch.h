@@ -15,23 +15,24 @@ namespace meff::detail
 /// What Collide does with one contact, decided in list order before any of it is done.
 enum class CollideAction : std::uint8_t
 {
+    Pending, ///< threaded Collide: passed the filter, the rest decided on the threads
     Asleep,  ///< both bodies inactive: nothing, unless an earlier contact wakes one
     Destroy, ///< filtered out or the fat boxes parted
     Keep,    ///< touching, and the manifold is kept (CollisionPolicy::recycleDistance)
     Update,  ///< a fresh manifold (UpdateContact)
 };
 
-/// One contact of the threaded Collide's list-order sequence.
+/// One contact of the threaded Collide, in list order.
 struct CollideEntry
 {
     std::int32_t contact;
-    CollideAction action;
-    bool touching; ///< Update: the fresh manifold's touching state, written by the threads
+    CollideAction action; ///< Pending or Destroy, then decided on the threads
+    bool touching;        ///< Update: the fresh manifold's touching state, written by the threads
 };
 
 struct StepScratch
 {
-    /// The threaded Collide's contacts, in contact-list order (Keep is done at once, not kept).
+    /// The threaded Collide's contacts, in contact-list order.
     std::vector<CollideEntry> collide;
     /// The threaded SynchronizeShapes' moved bodies, in body-list order.
     std::vector<std::int32_t> movedBodies;
