@@ -180,7 +180,7 @@ bool Moved(const Body& body)
 /// The pose whose boxes, with the present pose's, cover the body's motion over the step. A body
 /// that fell asleep this step gets tight boxes at its resting pose, not boxes covering its last
 /// motion (Box2D 2.4.1's b2Body::SynchronizeFixtures).
-Transform StartPose(const Body& body)
+[[gnu::always_inline]] inline Transform StartPose(const Body& body)
 {
     Transform xf0 = body.xf;
     if (body.awake)
@@ -193,7 +193,8 @@ Transform StartPose(const Body& body)
 
 /// Sets the shape's box to cover its motion from xf0 to xf1 and returns that motion's
 /// displacement (the broad phase stretches the fat box along it: MoveProxy).
-Vec2 SweepShapeBox(Shape& shape, const Transform& xf0, const Transform& xf1)
+[[gnu::always_inline]] inline Vec2 SweepShapeBox(Shape& shape, const Transform& xf0,
+                                                 const Transform& xf1)
 {
     const AABB box0 = shape.ComputeAABB(xf0);
     const AABB box1 = shape.ComputeAABB(xf1);
