@@ -312,7 +312,9 @@ Real RecycleDistance(const WorldState& world)
     {
         return CollideAction::Destroy;
     }
-    if (recycleDistance > 0 && KeepsManifold(recycleDistance, contact, shapeB, bodyA.xf, bodyB.xf))
+    // The flag first: it is never set in Box2D's back end, whose every contact comes here.
+    if ((contact.flags & Contact::PoseKept) != 0 && recycleDistance > 0 &&
+        KeepsManifold(recycleDistance, contact, shapeB, bodyA.xf, bodyB.xf))
     {
         return CollideAction::Keep;
     }
@@ -430,7 +432,7 @@ void ApplyContact(WorldState& world, std::int32_t contactIndex, bool touching)
     {
         RecordTouchEnded(world, contact);
     }
-    if (touching && !contact.IsSensor())
+    if (touching && !contact.IsSensor() && world.preSolve)
     {
         RunPreSolve(world, contactIndex);
     }
