@@ -68,8 +68,8 @@ int CountOverlapping(const World& world, const AABB& box)
 
 } // namespace
 
-TEST_CASE("Collision policy: Box2D's back end and the soft step keep Box2D 2.4.1's rule, colour "
-          "the throughput rule",
+TEST_CASE("Collision policy: Box2D's back end keeps Box2D 2.4.1's rule, the soft step its fat "
+          "boxes with kept manifolds, colour the throughput rule",
           "[collision_policy]")
 {
     const Tolerances tolerances;
@@ -84,6 +84,10 @@ TEST_CASE("Collision policy: Box2D's back end and the soft step keep Box2D 2.4.1
     CHECK(throughput.fatBoxes.displacementMultiplier == 2);
     CHECK(throughput.fatBoxes.stretchLimit == 1);
     CHECK(throughput.recycleDistance == tolerances.linearSlop);
+
+    const CollisionPolicy soft = detail::SoftStepCollision(tolerances);
+    CHECK(soft.fatBoxes == box2d.fatBoxes);
+    CHECK(soft.recycleDistance == tolerances.linearSlop);
 
     // The world applies its back end's rule to the boxes it makes: a box of half-extent 0.5 at
     // the origin has a fat box reaching 0.5 + margin. A query box 0.07 m beyond the shape's

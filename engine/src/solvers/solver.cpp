@@ -42,6 +42,13 @@ CollisionPolicy ThroughputCollision(const Tolerances& tolerances)
     return policy;
 }
 
+CollisionPolicy SoftStepCollision(const Tolerances& tolerances)
+{
+    CollisionPolicy policy = Box2DCollision(tolerances);
+    policy.recycleDistance = ThroughputCollision(tolerances).recycleDistance;
+    return policy;
+}
+
 SolverSet::SolverSet() = default;
 SolverSet::~SolverSet() = default;
 SolverSet::SolverSet(const SolverSet&) {}

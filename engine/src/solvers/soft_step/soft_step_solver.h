@@ -35,12 +35,10 @@ class SoftStepSolver final : public Solver
 {
   public:
     void Step(SolverWorld& world, const StepContext& step) override;
-    /// Box2D's for now: the throughput rule (smaller boxes, so another contact order, or kept
-    /// manifolds) moved pyramid20's settled displacement at 10 s from 2.7 cm to 3.5–3.7 cm, past
-    /// its 3 cm target (tests/extreme/test_soft_step_targets.cpp).
+    /// Box2D's fat boxes with the throughput rule's kept manifolds (SoftStepCollision).
     CollisionPolicy Collision(const Tolerances& tolerances) const override
     {
-        return Box2DCollision(tolerances);
+        return SoftStepCollision(tolerances);
     }
 
   private:
