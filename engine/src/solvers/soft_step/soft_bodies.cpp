@@ -1,8 +1,10 @@
 #include "solvers/soft_step/soft_bodies.h"
 
 #include "dynamics/body.h"
+#include "solvers/soft_step/soft_delta_lanes.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace meff::detail
 {
@@ -29,10 +31,8 @@ void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodi
     bodies.velocities.resize(count + 1);
     bodies.deltas.assign(count + 1, SoftDelta{});
     bodies.start.resize(count);
-    bodies.linearDelta.resize(count);
-    bodies.angularDelta.resize(count);
-    bodies.linearDamping.resize(count);
-    bodies.angularDamping.resize(count);
+    bodies.kick.resize(count);
+    bodies.damping.resize(count);
     for (std::size_t i = 0; i < count; ++i)
     {
         Body& body = world.bodies[island.bodies[i]];
@@ -40,15 +40,17 @@ void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodi
         body.sweep.a0 = body.sweep.a;
         bodies.start[i] = {body.sweep.c, body.sweep.a};
         bodies.velocities[i] = {body.linearVelocity, body.angularVelocity};
-        const bool dynamic = body.type == BodyType::Dynamic;
         // Static and kinematic bodies keep their velocities: no forces, no damping.
-        bodies.linearDelta[i] =
-            dynamic
-                ? h * body.invMass * (body.gravityScale * body.mass * world.gravity + body.force)
-                : Vec2{};
-        bodies.angularDelta[i] = dynamic ? h * body.invI * body.torque : Real(0);
-        bodies.linearDamping[i] = dynamic ? body.linearDamping : Real(0);
-        bodies.angularDamping[i] = dynamic ? body.angularDamping : Real(0);
+        if (body.type != BodyType::Dynamic)
+        {
+            bodies.kick[i] = {};
+            bodies.damping[i] = {};
+            continue;
+        }
+        bodies.kick[i] = {h * body.invMass *
+                              (body.gravityScale * body.mass * world.gravity + body.force),
+                          h * body.invI * body.torque};
+        bodies.damping[i] = {{body.linearDamping, body.linearDamping}, body.angularDamping};
     }
     bodies.velocities[count] = {};
     bodies.h = h;
@@ -57,47 +59,93 @@ void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodi
 void IntegrateSoftVelocities(SoftBodies& bodies, Real fraction)
 {
     // Semi-implicit Euler, the damping ODE dv/dt = −c·v solved implicitly over the kick
-    // (stable for any c·h).
+    // (stable for any c·h): v ← (v + fraction·Δv) / (1 + fraction·h·c). A body's velocity is one
+    // Real4 (v.x, v.y, w, padding), so the three components take one vector operation each
+    // step; where c = 0 the factor is exactly 1 and leaves v's bits as they are.
     const Real h = fraction * bodies.h;
     for (std::size_t i = 0; i < bodies.start.size(); ++i)
     {
-        Velocity& v = bodies.velocities[i];
-        v.v += fraction * bodies.linearDelta[i];
-        v.w += fraction * bodies.angularDelta[i];
-        if (bodies.linearDamping[i] > 0)
-        {
-            v.v *= Real(1) / (Real(1) + h * bodies.linearDamping[i]);
-        }
-        if (bodies.angularDamping[i] > 0)
-        {
-            v.w *= Real(1) / (Real(1) + h * bodies.angularDamping[i]);
-        }
+        Real4 v, kick, c;
+        std::memcpy(&v, &bodies.velocities[i], sizeof(Real4));
+        std::memcpy(&kick, &bodies.kick[i], sizeof(Real4));
+        std::memcpy(&c, &bodies.damping[i], sizeof(Real4));
+        v = (v + fraction * kick) * (Real(1) / (Real(1) + h * c));
+        std::memcpy(static_cast<void*>(&bodies.velocities[i]), &v, sizeof(Real4));
     }
 }
+
+namespace
+{
+
+/// The speed limits of IntegrateSoftPositions (per second).
+struct SpeedLimits
+{
+    Real linear, angular;
+};
+
+/// One body's sub-step of motion: the speeds clamped, dp ← dp + h·v, dq ← R(h·w)·dq.
+void IntegrateSoftPosition(Velocity& v, SoftDelta& d, Real h, SpeedLimits limits)
+{
+    // A body cannot outrun the broad phase's margins (Box2D's per-step clamp, per second).
+    const Real speedSquared = Dot(v.v, v.v);
+    if (speedSquared > limits.linear * limits.linear)
+    {
+        v.v *= limits.linear / std::sqrt(speedSquared);
+    }
+    if (v.w * v.w > limits.angular * limits.angular)
+    {
+        v.w *= limits.angular / std::abs(v.w);
+    }
+    d.dp += h * v.v;
+    // Rotate dq by the angle h·w itself (not its tangent, as normalizing q + h·w·q⊥ would):
+    // the angle the rows see is the angle integrated, and the pendulum keeps its period.
+    d.dq = Mul(SmallRotation(h * v.w), d.dq);
+}
+
+/// IntegrateSoftPosition for kLanes consecutive bodies from `first`, in SIMD lanes with the same
+/// operations per lane; bodies that must be slowed down go one by one (rare: only the clamp
+/// needs a square root).
+void IntegrateSoftPositionsW(SoftBodies& bodies, std::int32_t first, Real h, SpeedLimits limits)
+{
+    std::int32_t index[kLanes];
+    for (int l = 0; l < kLanes; ++l)
+    {
+        index[l] = first + l;
+    }
+    const BodyStateW v = Gather(bodies.velocities.data(), index);
+    const MaskW tooFast = (Dot(v.linear, v.linear) > limits.linear * limits.linear) |
+                          (v.angular * v.angular > limits.angular * limits.angular);
+    if (AnyLane(tooFast))
+    {
+        for (int l = 0; l < kLanes; ++l)
+        {
+            IntegrateSoftPosition(bodies.velocities[first + l], bodies.deltas[first + l], h,
+                                  limits);
+        }
+        return;
+    }
+    DeltaW d = GatherDeltas(bodies.deltas.data(), index);
+    const RealW hW = Splat(h);
+    d.dp = d.dp + Vec2W{hW * v.linear.x, hW * v.linear.y};
+    d.dq = MulRot(SmallRotationW(hW * v.angular), d.dq);
+    ScatterDeltas(bodies.deltas.data(), index, d);
+}
+
+} // namespace
 
 void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step)
 {
     const Tolerances& tol = step.tolerances;
-    const Real maxSpeed = tol.maxTranslation * step.invDt;
-    const Real maxAngularSpeed = tol.maxRotation * step.invDt;
-    for (std::size_t i = 0; i < bodies.start.size(); ++i)
+    const SpeedLimits limits{tol.maxTranslation * step.invDt, tol.maxRotation * step.invDt};
+    const auto count = static_cast<std::int32_t>(bodies.start.size());
+    std::int32_t i = 0;
+    for (; i + kLanes <= count; i += kLanes)
     {
-        Velocity& v = bodies.velocities[i];
-        // A body cannot outrun the broad phase's margins (Box2D's per-step clamp, per second).
-        const Real speedSquared = Dot(v.v, v.v);
-        if (speedSquared > maxSpeed * maxSpeed)
-        {
-            v.v *= maxSpeed / std::sqrt(speedSquared);
-        }
-        if (v.w * v.w > maxAngularSpeed * maxAngularSpeed)
-        {
-            v.w *= maxAngularSpeed / std::abs(v.w);
-        }
-        SoftDelta& d = bodies.deltas[i];
-        d.dp += h * v.v;
-        // Rotate dq by the angle h·w itself (not its tangent, as normalizing q + h·w·q⊥ would):
-        // the angle the rows see is the angle integrated, and the pendulum keeps its period.
-        d.dq = Mul(SmallRotation(h * v.w), d.dq);
+        IntegrateSoftPositionsW(bodies, i, h, limits);
+    }
+    for (; i < count; ++i)
+    {
+        IntegrateSoftPosition(bodies.velocities[i], bodies.deltas[i], h, limits);
     }
 }
 

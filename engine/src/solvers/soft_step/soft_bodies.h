@@ -27,11 +27,11 @@ struct SoftBodies
     /// By solver index (the island's order), with one slot more: SolverData::discardIndex.
     std::vector<Velocity> velocities;
     std::vector<SoftDelta> deltas;
-    std::vector<Position> start;     ///< centre of mass and angle when the step began
-    std::vector<Vec2> linearDelta;   ///< per sub-step: h·(F/m + gravityScale·g) (m/s)
-    std::vector<Real> angularDelta;  ///< per sub-step: h·T/I (rad/s)
-    std::vector<Real> linearDamping; ///< c (1/s)
-    std::vector<Real> angularDamping;
+    std::vector<Position> start; ///< centre of mass and angle when the step began
+    /// Per sub-step, as a Velocity: h·(F/m + gravityScale·g) (m/s) and h·T/I (rad/s).
+    std::vector<Velocity> kick;
+    /// The damping rates c (1/s) as a Velocity: linear, linear, angular; 0 where none.
+    std::vector<Velocity> damping;
     Real h = 0; ///< the sub-step (s)
 };
 

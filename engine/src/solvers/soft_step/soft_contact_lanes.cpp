@@ -26,42 +26,6 @@ namespace
     return Select(positive, Splat(1) / Select(positive, k, Splat(1)), Splat(0));
 }
 
-/// SmallRotation per lane: the same series, and std::sin/std::cos in lanes beyond 0.5 rad.
-RotW SmallRotationW(RealW angle)
-{
-    RotW q;
-    ShortRotationSeries(angle, q.s, q.c);
-    const RealW magnitude = MaxW(angle, -angle);
-    const MaskW small = magnitude <= kShortSeriesAngle;
-    if (AllLanes(small))
-    {
-        return q;
-    }
-    RotW full;
-    SmallRotationSeries(angle, full.s, full.c);
-    q = {Select(small, q.s, full.s), Select(small, q.c, full.c)};
-    const MaskW large = magnitude > Real(0.5);
-    if (AnyLane(large))
-    {
-        for (int l = 0; l < kLanes; ++l)
-        {
-            if (large[l] != 0)
-            {
-                const Rot r(angle[l]);
-                q.s[l] = r.s;
-                q.c[l] = r.c;
-            }
-        }
-    }
-    return q;
-}
-
-/// q·r, as Mul(Rot, Rot).
-[[gnu::always_inline]] inline RotW MulRot(RotW q, RotW r)
-{
-    return {q.s * r.c + q.c * r.s, q.c * r.c - q.s * r.s};
-}
-
 /// A row's target per lane (RowTarget): the bias and the softness it is solved with.
 struct TargetW
 {
@@ -183,23 +147,37 @@ void WarmStartGroup(SoftContactGroup& g, Velocity* velocities)
     Scatter(velocities, g.storeB, b);
 }
 
-void SolveGroup(SoftContactGroup& g, const SoftStepContext& context, bool useBias, bool friction)
+/// Each point's C at the bodies' poses now, into g.error.
+void MeasureErrors(SoftContactGroup& g, const SoftStepContext& context)
 {
-    Velocity* velocities = context.bodies->velocities.data();
     const SoftDelta* deltas = context.bodies->deltas.data();
-    BodyStateW a = Gather(velocities, g.indexA);
-    BodyStateW b = Gather(velocities, g.indexB);
     const DeltaW dA = GatherDeltas(deltas, g.indexA);
     const DeltaW dB = GatherDeltas(deltas, g.indexB);
     const RealW slop = Splat(context.step->tolerances.linearSlop);
+    for (int j = 0; j < 2; ++j)
+    {
+        g.error[j] = SeparationOf(g.baseSeparation[j], g.normal, dA.dp, dA.dq, dB.dp, dB.dq,
+                                  g.rA[j], g.rB[j], slop);
+    }
+}
+
+/// One sweep of the group; `measure`: the bodies moved since g.error was measured.
+void SolveGroup(SoftContactGroup& g, const SoftStepContext& context, bool useBias, bool friction,
+                bool measure)
+{
+    Velocity* velocities = context.bodies->velocities.data();
+    BodyStateW a = Gather(velocities, g.indexA);
+    BodyStateW b = Gather(velocities, g.indexB);
+    if (measure)
+    {
+        MeasureErrors(g, context);
+    }
     // Rigid contacts leave the overlap to CorrectPositions; soft ones push it out here.
     const bool pushOut = useBias && context.contactModel == SoftContactModel::Soft;
     TargetW targets[2];
     for (int j = 0; j < 2; ++j)
     {
-        const RealW C = SeparationOf(g.baseSeparation[j], g.normal, dA.dp, dA.dq, dB.dp, dB.dq,
-                                     g.rA[j], g.rB[j], slop);
-        targets[j] = NormalTarget(g, C, pushOut, context.invH, context.maxPushOut);
+        targets[j] = NormalTarget(g, g.error[j], pushOut, context.invH, context.maxPushOut);
     }
     // The block only where both rows are rigid now (always for rigid contacts).
     MaskW block = g.block;
@@ -361,6 +339,7 @@ void SoftContactLanes::Prepare(std::span<const SoftContact> contacts, std::int32
         },
         m_colouring);
     m_groups.clear();
+    m_errorsKnown = false;
     for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
     {
         const std::int32_t end = m_colouring.colourStarts[colour + 1];
@@ -401,8 +380,9 @@ void SoftContactLanes::Solve(const SoftStepContext& context, bool useBias)
     const bool friction = !useBias || context.frictionInSolve;
     for (SoftContactGroup& g : m_groups)
     {
-        SolveGroup(g, context, useBias, friction);
+        SolveGroup(g, context, useBias, friction, !m_errorsKnown);
     }
+    m_errorsKnown = true;
 }
 
 void SoftContactLanes::CorrectPositions(const SoftStepContext& context)

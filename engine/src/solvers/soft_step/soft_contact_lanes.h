@@ -65,8 +65,9 @@ struct SoftContactGroup
     RealW rollingResistance, rollingMass, rollingImpulse, totalRollingImpulse;
     RealW softBias, softMass, softImpulse; ///< the normal rows' Softness while solving
     Vec2W normal;
-    Vec2W rA[2], rB[2];                        ///< lever arms at the step's start (m)
-    RealW baseSeparation[2];                   ///< separation − (rB − rA)·n at the start (m)
+    Vec2W rA[2], rB[2];      ///< lever arms at the step's start (m)
+    RealW baseSeparation[2]; ///< separation − (rB − rA)·n at the start (m)
+    RealW error[2];          ///< each point's C (SeparationOf) at the bodies' last poses (m)
     RealW normalMass[2], tangentMass[2];       ///< 1/k of each row (kg)
     RealW normalImpulse[2], tangentImpulse[2]; ///< accumulated in this sub-step (N·s)
     RealW totalNormalImpulse[2], totalTangentImpulse[2];
@@ -97,6 +98,11 @@ class SoftContactLanes
     void WarmStart(const SoftStepContext& context);
     void Solve(const SoftStepContext& context, bool useBias);
     void CorrectPositions(const SoftStepContext& context);
+    /// Says that bodies moved (positions integrated or corrected): the next sweep measures each
+    /// point's separation again. Until then the sweeps reuse the last one's: a sub-step's relax
+    /// sweep and the next sub-step's biased sweep (or the closing half kick's) see the same
+    /// poses, and measuring costs a fifth of a sweep.
+    void BodiesMoved() { m_errorsKnown = false; }
     void ScaleImpulses(Real factor);
     void SaveImpulses();
     void RestoreImpulses();
@@ -107,6 +113,7 @@ class SoftContactLanes
     ConstraintColouring m_colouring;
     std::vector<SoftContactGroup> m_groups; ///< colour after colour
     std::vector<SoftGroupImpulses> m_saved;
+    bool m_errorsKnown = false; ///< whether every group's `error` is at the bodies' poses
 };
 
 } // namespace meff::detail

@@ -247,6 +247,7 @@ void SoftContactSolver::CorrectPositions(const SoftStepContext& context)
     {
         CorrectContact(m_contacts[k], context);
     }
+    m_lanes.BodiesMoved();
 }
 
 void SoftContactSolver::CorrectContact(const SoftContact& c, const SoftStepContext& context)

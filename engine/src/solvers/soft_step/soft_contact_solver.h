@@ -80,6 +80,8 @@ class SoftContactSolver
     /// Rigid contacts, after the sub-step's move: removes SoftStepContext::contactCorrection of
     /// each point's overlap beyond linearSlop (at most maxPushOut·h) by moving the bodies.
     void CorrectPositions(const SoftStepContext& context);
+    /// Call when the island's positions were integrated (SoftContactLanes::BodiesMoved).
+    void BodiesMoved() { m_lanes.BodiesMoved(); }
     void Restitution(const SoftStepContext& context);
     /// Scales the accumulated impulses (a half kick's are half a sub-step's).
     void ScaleImpulses(Real factor);

@@ -89,4 +89,50 @@ struct DeltaW
 #endif
 }
 
+/// SmallRotationW's lanes beyond kShortSeriesAngle: the longer series, and std::sin/std::cos
+/// in lanes beyond 0.5 rad, lane by lane (SmallRotation's cases). Out of line: most turns
+/// within a sub-step are short.
+[[gnu::noinline]] inline RotW LongRotationW(RealW angle, RotW shortSeries, MaskW small,
+                                            RealW magnitude)
+{
+    RotW full;
+    SmallRotationSeries(angle, full.s, full.c);
+    RotW q{Select(small, shortSeries.s, full.s), Select(small, shortSeries.c, full.c)};
+    const MaskW large = magnitude > Real(0.5);
+    if (AnyLane(large))
+    {
+        for (int l = 0; l < kLanes; ++l)
+        {
+            if (large[l] != 0)
+            {
+                const Rot r(angle[l]);
+                q.s[l] = r.s;
+                q.c[l] = r.c;
+            }
+        }
+    }
+    return q;
+}
+
+/// SmallRotation per lane, bit for bit: the short series inline (one call cost as much as the
+/// series itself in the contacts' position pass), the other cases out of line.
+[[gnu::always_inline]] inline RotW SmallRotationW(RealW angle)
+{
+    RotW q;
+    ShortRotationSeries(angle, q.s, q.c);
+    const RealW magnitude = MaxW(angle, -angle);
+    const MaskW small = magnitude <= kShortSeriesAngle;
+    if (AllLanes(small))
+    {
+        return q;
+    }
+    return LongRotationW(angle, q, small, magnitude);
+}
+
+/// q·r per lane, as Mul(Rot, Rot).
+[[gnu::always_inline]] inline RotW MulRot(RotW q, RotW r)
+{
+    return {q.s * r.c + q.c * r.s, q.c * r.c - q.s * r.s};
+}
+
 } // namespace meff::detail

@@ -96,6 +96,7 @@ void SoftStepSolver::SubStep(bool first, const StepContext& step)
     SolveJoints(true);
     m_contacts.Solve(m_context, true);
     IntegrateSoftPositions(m_bodies, m_context.h, step);
+    m_contacts.BodiesMoved();
     if (m_context.contactModel == SoftContactModel::Rigid)
     {
         m_contacts.CorrectPositions(m_context);
