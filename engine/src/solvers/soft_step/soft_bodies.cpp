@@ -25,6 +25,19 @@ Rot SmallRotation(Real angle)
     return q;
 }
 
+namespace
+{
+
+/// The damping ODE dv/dt = −c·v solved implicitly over a kick of `dt` (stable for any c·dt):
+/// v ← v / (1 + dt·c), linear and angular; exactly 1 where the body has no damping.
+Velocity DampingOver(Real dt, const Body& body)
+{
+    const Real linear = Real(1) / (Real(1) + dt * body.linearDamping);
+    return {{linear, linear}, Real(1) / (Real(1) + dt * body.angularDamping)};
+}
+
+} // namespace
+
 void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodies& bodies)
 {
     const std::size_t count = island.bodies.size();
@@ -32,7 +45,8 @@ void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodi
     bodies.deltas.assign(count + 1, SoftDelta{});
     bodies.start.resize(count);
     bodies.kick.resize(count);
-    bodies.damping.resize(count);
+    bodies.wholeDamping.resize(count);
+    bodies.halfDamping.resize(count);
     for (std::size_t i = 0; i < count; ++i)
     {
         Body& body = world.bodies[island.bodies[i]];
@@ -44,32 +58,32 @@ void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodi
         if (body.type != BodyType::Dynamic)
         {
             bodies.kick[i] = {};
-            bodies.damping[i] = {};
+            bodies.wholeDamping[i] = bodies.halfDamping[i] = {{1, 1}, 1};
             continue;
         }
         bodies.kick[i] = {h * body.invMass *
                               (body.gravityScale * body.mass * world.gravity + body.force),
                           h * body.invI * body.torque};
-        bodies.damping[i] = {{body.linearDamping, body.linearDamping}, body.angularDamping};
+        bodies.wholeDamping[i] = DampingOver(h, body);
+        bodies.halfDamping[i] = DampingOver(Real(0.5) * h, body);
     }
     bodies.velocities[count] = {};
     bodies.h = h;
 }
 
-void IntegrateSoftVelocities(SoftBodies& bodies, Real fraction)
+void IntegrateSoftVelocities(SoftBodies& bodies, bool half)
 {
-    // Semi-implicit Euler, the damping ODE dv/dt = −c·v solved implicitly over the kick
-    // (stable for any c·h): v ← (v + fraction·Δv) / (1 + fraction·h·c). A body's velocity is one
-    // Real4 (v.x, v.y, w, padding), so the three components take one vector operation each
-    // step; where c = 0 the factor is exactly 1 and leaves v's bits as they are.
-    const Real h = fraction * bodies.h;
+    // Semi-implicit Euler: v ← (v + fraction·Δv)·damping (DampingOver). A body's velocity, kick
+    // and damping are each one Real4 (x, y, angular, padding): one vector operation per step.
+    const Real fraction = half ? Real(0.5) : Real(1);
+    const Velocity* damping = half ? bodies.halfDamping.data() : bodies.wholeDamping.data();
     for (std::size_t i = 0; i < bodies.start.size(); ++i)
     {
-        Real4 v, kick, c;
+        Real4 v, kick, factor;
         std::memcpy(&v, &bodies.velocities[i], sizeof(Real4));
         std::memcpy(&kick, &bodies.kick[i], sizeof(Real4));
-        std::memcpy(&c, &bodies.damping[i], sizeof(Real4));
-        v = (v + fraction * kick) * (Real(1) / (Real(1) + h * c));
+        std::memcpy(&factor, &damping[i], sizeof(Real4));
+        v = (v + fraction * kick) * factor;
         std::memcpy(static_cast<void*>(&bodies.velocities[i]), &v, sizeof(Real4));
     }
 }

@@ -30,16 +30,18 @@ struct SoftBodies
     std::vector<Position> start; ///< centre of mass and angle when the step began
     /// Per sub-step, as a Velocity: h·(F/m + gravityScale·g) (m/s) and h·T/I (rad/s).
     std::vector<Velocity> kick;
-    /// The damping rates c (1/s) as a Velocity: linear, linear, angular; 0 where none.
-    std::vector<Velocity> damping;
+    /// The damping of a whole sub-step's kick and of a half kick, as a Velocity: each component's
+    /// factor 1/(1 + kick·c) for the body's linear and angular damping rates c (1/s), exactly 1
+    /// where c = 0. Computed once per step: the kicks are the same in every sub-step.
+    std::vector<Velocity> wholeDamping, halfDamping;
     Real h = 0; ///< the sub-step (s)
 };
 
 /// Copies the island's bodies in (their sweeps' start c0, a0 set to now) for sub-steps of h.
 void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodies& bodies);
 /// v ← damping·(v + fraction·Δv) for every dynamic body (static and kinematic bodies keep
-/// theirs): `fraction` 1 for a whole sub-step, ½ for velocity Verlet's half kicks.
-void IntegrateSoftVelocities(SoftBodies& bodies, Real fraction);
+/// theirs): `fraction` 1 for a whole sub-step, ½ (`half`) for velocity Verlet's half kicks.
+void IntegrateSoftVelocities(SoftBodies& bodies, bool half);
 /// dp ← dp + h·v, dq ← the rotation by h·w after dq, with the speeds clamped so a body moves at
 /// most maxTranslation and maxRotation per step, as the Box2D back end clamps them.
 void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step);

@@ -89,7 +89,7 @@ void SoftStepSolver::SubStep(bool first, const StepContext& step)
     // last sub-step's, and what the kick accumulates is doubled back to a whole sub-step's.
     const Real kick = first ? Real(0.5) : Real(1);
     m_context.halfKick = first;
-    IntegrateSoftVelocities(m_bodies, kick);
+    IntegrateSoftVelocities(m_bodies, first);
     ScaleImpulses(kick);
     WarmStartJoints();
     m_contacts.WarmStart(m_context);
@@ -128,7 +128,7 @@ void SoftStepSolver::CloseStep()
 {
     // Half a sub-step's kick, with half of the sub-step's constraint impulses, then one rigid
     // sweep; the accumulated impulses stay the last whole sub-step's (next step's warm start).
-    IntegrateSoftVelocities(m_bodies, Real(0.5));
+    IntegrateSoftVelocities(m_bodies, true);
     m_context.halfKick = true;
     m_context.closing = true;
     m_contacts.SaveImpulses();
