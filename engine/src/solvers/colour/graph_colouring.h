@@ -13,6 +13,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace meff::detail
@@ -49,6 +50,32 @@ struct ConstraintBodies
     bool movesA = false, movesB = false; ///< whether the solver changes that body's state
 
     bool operator==(const ConstraintBodies&) const = default;
+};
+
+/// What a colouring was computed from, so that it can be kept: ColourConstraints is a function
+/// of the constraints' bodies and the island's body count alone, so when both are the last
+/// colouring's (a grid, a chain or a net whose joints and islands did not change) that colouring
+/// is kept as it is — comparing them costs less than colouring again.
+class ColouringInputs
+{
+  public:
+    /// Whether `bodies` and `bodyCount` differ from what Keep was last given (true before any).
+    bool Changed(std::span<const ConstraintBodies> bodies, std::size_t bodyCount) const
+    {
+        return !m_kept || bodyCount != m_bodyCount ||
+               !std::equal(bodies.begin(), bodies.end(), m_bodies.begin(), m_bodies.end());
+    }
+    void Keep(std::span<const ConstraintBodies> bodies, std::size_t bodyCount)
+    {
+        m_bodies.assign(bodies.begin(), bodies.end());
+        m_bodyCount = bodyCount;
+        m_kept = true;
+    }
+
+  private:
+    std::vector<ConstraintBodies> m_bodies;
+    std::size_t m_bodyCount = 0;
+    bool m_kept = false;
 };
 
 /// Greedy colouring in the given order: constraint i (of `count`, described by

@@ -140,18 +140,14 @@ void RevoluteLanes::PrepareGroup(std::int32_t i, int colour, std::span<RevoluteJ
 void RevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
                             std::span<const ConstraintBodies> bodies, const SolverData& data)
 {
-    // The island's bodies are the solver indices below the discard slot. The colouring is a
-    // function of the joints' bodies and the body count alone, so when they are last step's
-    // (a grid, a chain or a net whose joints and islands did not change) last step's colouring
-    // is reused as it is: comparing them costs less than colouring again.
+    // The island's bodies are the solver indices below the discard slot; last step's colouring
+    // is kept while they and the joints' bodies are last step's (ColouringInputs).
     const auto bodyCount = static_cast<std::size_t>(data.discardIndex);
-    if (m_colouring.colourStarts.empty() || bodyCount != m_colouredBodyCount ||
-        !std::equal(bodies.begin(), bodies.end(), m_colouredBodies.begin(), m_colouredBodies.end()))
+    if (m_colouredFrom.Changed(bodies, bodyCount))
     {
         ColourConstraints(
             joints.size(), bodyCount, [&](std::size_t i) { return bodies[i]; }, m_colouring);
-        m_colouredBodies.assign(bodies.begin(), bodies.end());
-        m_colouredBodyCount = bodyCount;
+        m_colouredFrom.Keep(bodies, bodyCount);
     }
     const std::int32_t groups = GroupStartsOf(m_colouring, m_groupStarts);
     m_groups.resize(static_cast<std::size_t>(groups));

@@ -72,9 +72,7 @@ class RevoluteLanes
                       const SolverData& data);
 
     ConstraintColouring m_colouring;
-    /// What m_colouring was computed from: the joints' bodies and the island's body count.
-    std::vector<ConstraintBodies> m_colouredBodies;
-    std::size_t m_colouredBodyCount = 0;
+    ColouringInputs m_colouredFrom; ///< what m_colouring was computed from
     std::vector<RevoluteJointGroup> m_groups;
     std::vector<RevoluteJoint*> m_sources; ///< each group's joints, kLanes per group (or null)
     /// Colour c's groups are [m_groupStarts[c], m_groupStarts[c + 1]) of m_groups.

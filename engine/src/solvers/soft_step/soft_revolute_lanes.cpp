@@ -90,15 +90,21 @@ void SoftRevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
                                 std::span<const SoftJointFrame> frames,
                                 std::span<const std::int32_t> rows, std::int32_t bodyCount)
 {
-    ColourSoftRows(
-        joints.size(), bodyCount,
-        [&](std::size_t i)
-        {
-            const SoftJointFrame& f = frames[rows[i]];
-            return ConstraintBodies{f.indexA, f.indexB, SolverMoves(f.mA, f.iA),
-                                    SolverMoves(f.mB, f.iB)};
-        },
-        m_colouring);
+    m_bodies.resize(joints.size());
+    for (std::size_t i = 0; i < joints.size(); ++i)
+    {
+        const SoftJointFrame& f = frames[rows[i]];
+        m_bodies[i] = {f.indexA, f.indexB, SolverMoves(f.mA, f.iA), SolverMoves(f.mB, f.iB)};
+    }
+    // Last step's colouring is kept while the joints' bodies and the body count are last
+    // step's (ColouringInputs).
+    const auto bodies = static_cast<std::size_t>(bodyCount);
+    if (m_colouredFrom.Changed(m_bodies, bodies))
+    {
+        ColourSoftRows(
+            joints.size(), bodyCount, [&](std::size_t i) { return m_bodies[i]; }, m_colouring);
+        m_colouredFrom.Keep(m_bodies, bodies);
+    }
     m_groups.clear();
     m_sources.clear();
     for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)

@@ -60,6 +60,8 @@ class SoftRevoluteLanes
 
   private:
     ConstraintColouring m_colouring;
+    std::vector<ConstraintBodies> m_bodies; ///< scratch: the joints' bodies
+    ColouringInputs m_colouredFrom;         ///< what m_colouring was computed from
     std::vector<SoftRevoluteGroup> m_groups;
     std::vector<RevoluteJoint*> m_sources; ///< each group's joints, kLanes per group (or null)
 };

@@ -152,6 +152,7 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
 {
     m_joints.clear();
     m_frames.clear();
+    m_candidates.clear();
     std::size_t laneCandidates = 0;
     for (const std::int32_t index : island.joints)
     {
@@ -163,7 +164,8 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
                          m_bodies.start[bodyA.islandIndex], m_bodies.start[bodyB.islandIndex],
                          warmScale, m_context);
         m_joints.push_back(&joint);
-        laneCandidates += SoftRevoluteLanes::LaneJoint(joint, m_context) != nullptr ? 1 : 0;
+        m_candidates.push_back(SoftRevoluteLanes::LaneJoint(joint, m_context));
+        laneCandidates += m_candidates.back() != nullptr ? 1 : 0;
     }
     SplitLaneJoints(laneCandidates >= kMinSoftLaneRows);
 }
@@ -176,7 +178,7 @@ void SoftStepSolver::SplitLaneJoints(bool useLanes)
     {
         for (std::size_t k = 0; k < m_joints.size(); ++k)
         {
-            if (RevoluteJoint* revolute = SoftRevoluteLanes::LaneJoint(*m_joints[k], m_context))
+            if (RevoluteJoint* revolute = m_candidates[k])
             {
                 m_laneJoints.push_back(revolute);
                 m_laneRows.push_back(static_cast<std::int32_t>(k));
@@ -198,8 +200,7 @@ void SoftStepSolver::SplitLaneJoints(bool useLanes)
     }
     for (std::size_t k = 0; k < m_joints.size(); ++k)
     {
-        m_inLanes[k] =
-            m_inLanes[k] != 0 && SoftRevoluteLanes::LaneJoint(*m_joints[k], m_context) ? 1 : 0;
+        m_inLanes[k] = m_inLanes[k] != 0 && m_candidates[k] != nullptr ? 1 : 0;
     }
     std::size_t kept = 0;
     for (std::size_t k = 0; k < m_joints.size(); ++k)

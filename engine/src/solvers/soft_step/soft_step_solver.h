@@ -63,6 +63,8 @@ class SoftStepSolver final : public Solver
     /// The joints solved one by one, in island order, and their frames.
     std::vector<Joint*> m_joints;
     std::vector<SoftJointFrame> m_frames;
+    /// While the joints are prepared: each one's SoftRevoluteLanes::LaneJoint (or null).
+    std::vector<RevoluteJoint*> m_candidates;
     /// The plain revolute joints, solved by colour in SIMD lanes (soft_revolute_lanes.h);
     /// while they are prepared, their positions in m_joints and whether the lanes took each.
     SoftRevoluteLanes m_revolutes;
