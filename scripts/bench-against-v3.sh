@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Times meff beside Box2D v3 on samples/bench/ scenes, paired and alternating (README,
+# Performance): per scene and round, v3 on 1 worker, meff by colour and by the soft step on 1
+# thread, v3 on 2 workers, meff by colour on 2 threads. Prints ms/step per run, one line per
+# scene and round, with the load average. Box2D v3 is not a dependency: build its `benchmark`
+# program outside the project (erincatto/box2d, -DBOX2D_BENCHMARKS=ON) and pass its path.
+#
+# Usage: scripts/bench-against-v3.sh MEFF V3_BENCHMARK ROUNDS SCENE...   (SCENE: large_pyramid ...)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+meff=$(realpath "$1")
+v3=$(realpath "$2")
+rounds=$3
+shift 3
+bench=$PWD/samples/bench
+work=$(mktemp -d) # v3's benchmark writes files into the working directory
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+for round in $(seq 1 "$rounds"); do
+    for scene in "$@"; do
+        steps=$(python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['world']['frames'])" \
+            "$bench/$scene.json")
+        line="round $round $scene load $(cut -d' ' -f1 /proc/loadavg)"
+        for run in v3:1 colour:1 soft_step:1 v3:2 colour:2; do
+            kind=${run%%:*}
+            threads=${run##*:}
+            if [ "$kind" = v3 ]; then
+                total=$("$v3" -b="$scene" -w="$threads" -t=2 -r=1 -nc 2>/dev/null |
+                    awk '/^run 0/ {print $4}')
+                ms=$(python3 -c "import sys; print('%.3f' % (float(sys.argv[1]) / int(sys.argv[2])))" \
+                    "${total:-nan}" "$steps")
+            else
+                ms=$("$meff" bench "$bench/$scene.json" --solver "$kind" --against none --runs 1 \
+                    --threads "$threads" 2>/dev/null | grep "^ *$scene " | sed 's/.*| *//' |
+                    awk '{print $1}')
+            fi
+            line="$line | $kind t$threads ${ms:-NA}"
+        done
+        echo "$line"
+    done
+done
