@@ -146,20 +146,29 @@ template <typename State>
     Scatter(states, to, in);
 }
 
-/// Fills lane l's bodies from a prepared constraint: the solver indices to read, where to write
-/// (the body, or the discard slot where the lane must not move it), and the inverse masses
-/// (1/kg) and inertias (1/(kg·m²)). Group and constraint name these members alike.
+/// Fills lane l's bodies: the solver indices to read, where to write (the body, or the discard
+/// slot where the lane must not move it), and the inverse masses (1/kg) and inertias
+/// (1/(kg·m²)).
+template <typename Group>
+void PackLaneBodies(Group& g, int l, std::int32_t indexA, std::int32_t indexB, Real invMassA,
+                    Real invIA, Real invMassB, Real invIB, std::int32_t discardIndex)
+{
+    g.indexA[l] = indexA;
+    g.indexB[l] = indexB;
+    g.storeA[l] = SolverMoves(invMassA, invIA) ? indexA : discardIndex;
+    g.storeB[l] = SolverMoves(invMassB, invIB) ? indexB : discardIndex;
+    g.invMassA[l] = invMassA;
+    g.invMassB[l] = invMassB;
+    g.invIA[l] = invIA;
+    g.invIB[l] = invIB;
+}
+
+/// The same from a prepared constraint whose members are named as the group's.
 template <typename Group, typename Constraint>
 void PackLaneBodies(Group& g, int l, const Constraint& c, std::int32_t discardIndex)
 {
-    g.indexA[l] = c.indexA;
-    g.indexB[l] = c.indexB;
-    g.storeA[l] = SolverMoves(c.invMassA, c.invIA) ? c.indexA : discardIndex;
-    g.storeB[l] = SolverMoves(c.invMassB, c.invIB) ? c.indexB : discardIndex;
-    g.invMassA[l] = c.invMassA;
-    g.invMassB[l] = c.invMassB;
-    g.invIA[l] = c.invIA;
-    g.invIB[l] = c.invIB;
+    PackLaneBodies(g, l, c.indexA, c.indexB, c.invMassA, c.invIA, c.invMassB, c.invIB,
+                   discardIndex);
 }
 
 /// The two bodies' inverse masses (1/kg) and inverse inertias (1/(kg·m²)) per lane.

@@ -274,14 +274,7 @@ void PackLane(SoftContactGroup& g, int l, std::int32_t source, const SoftContact
               std::int32_t discardIndex)
 {
     g.source[l] = source;
-    g.indexA[l] = c.indexA;
-    g.indexB[l] = c.indexB;
-    g.storeA[l] = SolverMoves(c.mA, c.iA) ? c.indexA : discardIndex;
-    g.storeB[l] = SolverMoves(c.mB, c.iB) ? c.indexB : discardIndex;
-    g.invMassA[l] = c.mA;
-    g.invIA[l] = c.iA;
-    g.invMassB[l] = c.mB;
-    g.invIB[l] = c.iB;
+    PackLaneBodies(g, l, c.indexA, c.indexB, c.mA, c.iA, c.mB, c.iB, discardIndex);
     g.friction[l] = c.friction;
     g.tangentSpeed[l] = c.tangentSpeed;
     g.rollingResistance[l] = c.rollingResistance;

@@ -120,14 +120,7 @@ void SoftRevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
                 const SoftJointFrame& f = frames[rows[k]];
                 const RevoluteJoint& joint = *joints[k];
                 const int l = filled;
-                g.indexA[l] = f.indexA;
-                g.indexB[l] = f.indexB;
-                g.storeA[l] = SolverMoves(f.mA, f.iA) ? f.indexA : bodyCount;
-                g.storeB[l] = SolverMoves(f.mB, f.iB) ? f.indexB : bodyCount;
-                g.invMassA[l] = f.mA;
-                g.invIA[l] = f.iA;
-                g.invMassB[l] = f.mB;
-                g.invIB[l] = f.iB;
+                PackLaneBodies(g, l, f.indexA, f.indexB, f.mA, f.iA, f.mB, f.iB, bodyCount);
                 g.rA0.x[l] = f.rA0.x;
                 g.rA0.y[l] = f.rA0.y;
                 g.rB0.x[l] = f.rB0.x;
