@@ -852,6 +852,12 @@ void ReadGearFields(ObjectReader& reader, const Scene& scene, std::size_t self, 
                 reader.Fail(key, "must name a revolute or prismatic joint");
                 return false;
             }
+            if (other.bodyIndexB >= scene.bodies.size())
+            {
+                // The joint failed its own checks (body_b missing or naming no body), which
+                // are reported already; its index is not a body's (found by the scene fuzzer).
+                return false;
+            }
             if (scene.bodies[other.bodyIndexB].type != BodyType::Dynamic)
             {
                 reader.Fail(key, "must name a joint whose body_b is dynamic (the gear turns it)");
