@@ -598,7 +598,7 @@ TEST_CASE("Scene: world.soft_step sets the sub-stepped solver's settings, each c
         "soft_step": { "substeps": 8, "relax_iterations": 2, "contacts": "soft",
                        "contact_correction": 0.2, "contact_hertz": 40,
                        "contact_damping_ratio": 5, "joint_hertz": 50, "joint_damping_ratio": 1,
-                       "max_push_out_speed": 2 } }, "bodies": [] })",
+                       "max_push_out_speed": 2, "joint_trees": false } }, "bodies": [] })",
                                    "x.json");
     const SoftStepSettings& soft = scene.world.solver.softStep;
     CHECK(scene.world.solver.kind == SolverKind::SoftStep);
@@ -611,6 +611,9 @@ TEST_CASE("Scene: world.soft_step sets the sub-stepped solver's settings, each c
     CHECK(soft.jointHertz == Approx(50));
     CHECK(soft.jointDampingRatio == Approx(1));
     CHECK(soft.maxPushOutSpeed == Approx(2));
+    CHECK_FALSE(soft.jointTrees);
+    CHECK(ParseScene(R"({ "meff_scene": 1, "bodies": [] })", "x.json")
+              .world.solver.softStep.jointTrees); // on by default
 
     const auto errorsOf = [](const std::string& soft)
     {
@@ -629,5 +632,5 @@ TEST_CASE("Scene: world.soft_step sets the sub-stepped solver's settings, each c
           Messages{"x.json: world.soft_step.substep: unknown field (known fields here: substeps, "
                    "relax_iterations, contacts, contact_correction, contact_hertz, "
                    "contact_damping_ratio, joint_hertz, joint_damping_ratio, "
-                   "max_push_out_speed)"});
+                   "max_push_out_speed, joint_trees)"});
 }

@@ -130,6 +130,27 @@ TEST_CASE("a warmed-up world stepping by colour on a thread pool does not alloca
     }
 }
 
+TEST_CASE("a warmed-up soft step solving a joint tree does not allocate", "[world][joint_tree]")
+{
+    // chain_heavy_weight's 21 hinges are one tree (soft_joint_tree.h): its selection, order and
+    // factors are rebuilt every step in buffers kept from the first.
+    Scene scene =
+        LoadScene(std::string(MEFF_SOURCE_DIR) + "/samples/extreme/chain_heavy_weight.json");
+    scene.world.solver.kind = SolverKind::SoftStep;
+    BuiltScene built = BuildWorld(scene);
+    const Real dt = static_cast<Real>(scene.world.dt);
+    for (int i = 0; i < 10; ++i)
+    {
+        built.world.Step(dt);
+    }
+    const long before = g_allocations.load();
+    for (int i = 0; i < 60; ++i)
+    {
+        built.world.Step(dt);
+    }
+    CHECK(g_allocations.load() - before == 0);
+}
+
 TEST_CASE("contact begin and end events bracket a bounce", "[world]")
 {
     World world;

@@ -156,6 +156,10 @@ class Exporter
         {
             out["contacts"] = soft.contacts == SoftContactModel::Rigid ? "rigid" : "soft";
         }
+        if (soft.jointTrees != defaults.jointTrees)
+        {
+            out["joint_trees"] = soft.jointTrees;
+        }
         const std::tuple<const char*, Real, Real> numbers[] = {
             {"contact_correction", soft.contactCorrection, defaults.contactCorrection},
             {"contact_hertz", soft.contactHertz, defaults.contactHertz},

@@ -154,6 +154,7 @@ void ReadSoftStep(ObjectReader& reader, SoftStepSettings& soft)
            ReadNonNegative(reader, "joint_damping_ratio", defaults.jointDampingRatio));
     Assign(soft.maxPushOutSpeed,
            ReadPositive(reader, "max_push_out_speed", defaults.maxPushOutSpeed));
+    Assign(soft.jointTrees, reader.Boolean("joint_trees", defaults.jointTrees));
     reader.Finish();
 }
 

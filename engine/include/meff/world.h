@@ -125,6 +125,11 @@ struct SoftStepSettings
     /// limits) while solving, capped at 0.3 of the sub-step rate (72 Hz at 60 Hz × 4).
     Real jointHertz = 72;
     Real jointDampingRatio = 0;
+    /// Solve the point rows of revolute joints that join bodies as a tree (a chain, a ragdoll,
+    /// hanging from at most one fixed pivot) together, exactly, rather than joint by joint: a
+    /// load then passes through the whole tree at once, so light links holding a heavy body do
+    /// not stretch (docs/soft-step.md, "Joint trees").
+    bool jointTrees = true;
 
     friend bool operator==(const SoftStepSettings&, const SoftStepSettings&) = default;
 };

@@ -32,6 +32,9 @@ struct SoftJointFrame
     Vec2 ropeA0, ropeB0;                 ///< pulley: each anchor from its ground anchor (m)
     Softness spring;     ///< the joint's own spring over a sub-step, where it has one
     Softness halfSpring; ///< the same over half a sub-step (velocity Verlet's half kicks)
+    /// A revolute joint's point rows are solved with the others of its tree (SoftJointTree),
+    /// not by its own update.
+    bool pointInTree = false;
 };
 
 /// Sets the frame's spring (SpringSoftness) of stiffness and damping on a row of inverse

@@ -75,8 +75,11 @@ void SolveSoft(RevoluteJoint& joint, const SoftJointState& state, bool useBias, 
                  OneSidedTarget(joint.upperAngle - angle, useBias, context.joint, context.invH),
                  joint.upperImpulse, b, 0, kMaxReal);
     }
-    SolvePoint(state.at.rA, state.at.rB, state.at.d, useBias, context.joint, joint.impulse, b,
-               context.step->solver.blockJoints);
+    if (!state.frame.pointInTree)
+    {
+        SolvePoint(state.at.rA, state.at.rB, state.at.d, useBias, context.joint, joint.impulse, b,
+                   context.step->solver.blockJoints);
+    }
 }
 
 void ScaleImpulses(RevoluteJoint& joint, Real factor)

@@ -95,6 +95,7 @@ void SoftStepSolver::SubStep(bool first, const StepContext& step)
     m_contacts.WarmStart(m_context);
     SolveJoints(true);
     m_contacts.Solve(m_context, true);
+    m_tree.Solve(m_context, true, true);
     IntegrateSoftPositions(m_bodies, m_context.h, step);
     m_contacts.BodiesMoved();
     if (m_context.contactModel == SoftContactModel::Rigid)
@@ -105,6 +106,7 @@ void SoftStepSolver::SubStep(bool first, const StepContext& step)
     {
         SolveJoints(false);
         m_contacts.Solve(m_context, false);
+        m_tree.Solve(m_context, false, true);
     }
     ScaleImpulses(Real(1) / kick);
     m_context.halfKick = false;
@@ -143,6 +145,7 @@ void SoftStepSolver::CloseStep()
         SolveSoftJoint(scratch, m_frames[k], m_context, false);
     }
     m_contacts.Solve(m_context, false);
+    m_tree.Solve(m_context, false, false);
     m_contacts.RestoreImpulses();
     m_context.halfKick = false;
     m_context.closing = false;
@@ -165,9 +168,20 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
                          warmScale, m_context);
         m_joints.push_back(&joint);
         m_candidates.push_back(SoftRevoluteLanes::LaneJoint(joint, m_context));
-        laneCandidates += m_candidates.back() != nullptr ? 1 : 0;
+    }
+    const std::size_t bodyCount = m_bodies.velocities.size();
+    if (m_context.step->solver.softStep.jointTrees)
+    {
+        m_tree.Select(m_joints, m_frames, bodyCount);
+    }
+    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    {
+        // A tree's joints are solved with their tree, not in lanes.
+        m_candidates[k] = m_frames[k].pointInTree ? nullptr : m_candidates[k];
+        laneCandidates += m_candidates[k] != nullptr ? 1 : 0;
     }
     SplitLaneJoints(laneCandidates >= kMinSoftLaneRows);
+    m_tree.Build(m_joints, m_frames, bodyCount);
 }
 
 void SoftStepSolver::SplitLaneJoints(bool useLanes)

@@ -5,8 +5,9 @@
 //   prepare contacts and joints at the step's start →
 //   for each sub-step: integrate velocities (the first by h/2, with half the warm start),
 //     warm start (joints, contacts),
-//     solve with the soft position bias (joints, contacts), integrate positions, correct
-//     contact positions (rigid contacts), relax without bias (joints, contacts) →
+//     solve with the soft position bias (joints, contacts, joint trees), integrate positions,
+//     correct contact positions (rigid contacts), relax without bias (joints, contacts, joint
+//     trees) →
 //   the closing half kick: integrate velocities by h/2, half the warm start, relax (its
 //     impulses reported, not kept for the warm start) → restitution → store impulses → finish
 //     bodies → report solved contacts → sleep
@@ -22,6 +23,7 @@
 #include "solvers/soft_step/soft_bodies.h"
 #include "solvers/soft_step/soft_contact_solver.h"
 #include "solvers/soft_step/soft_joint.h"
+#include "solvers/soft_step/soft_joint_tree.h"
 #include "solvers/soft_step/soft_revolute_lanes.h"
 #include "solvers/solver.h"
 
@@ -68,6 +70,8 @@ class SoftStepSolver final : public Solver
     /// The plain revolute joints, solved by colour in SIMD lanes (soft_revolute_lanes.h);
     /// while they are prepared, their positions in m_joints and whether the lanes took each.
     SoftRevoluteLanes m_revolutes;
+    /// The revolute joints whose point rows are solved together, as trees (soft_joint_tree.h).
+    SoftJointTree m_tree;
     std::vector<RevoluteJoint*> m_laneJoints;
     std::vector<std::int32_t> m_laneRows;
     std::vector<std::uint8_t> m_inLanes;
