@@ -48,6 +48,14 @@ namespace meff::detail
 class SoftJointTree
 {
   public:
+    /// What Select reads of one joint: solver indices of its bodies, and flags (revolute, A
+    /// moves, B moves, A or B of fixed rotation).
+    struct SelectionKey
+    {
+        std::int32_t indexA = 0, indexB = 0, flags = 0;
+        friend bool operator==(const SelectionKey&, const SelectionKey&) = default;
+    };
+
     /// Marks SoftJointFrame::pointInTree on the revolute joints among `joints` (frames[k] is
     /// joints[k]'s) that the tree solves; `bodyCount` is the island's solver index count.
     /// Returns how many were marked.
@@ -105,6 +113,9 @@ class SoftJointTree
     std::vector<Block> m_diagonal; ///< D_i while factoring
     std::vector<std::array<double, 3>> m_x;
     std::vector<Velocity> m_moved; ///< per body: the velocity the tree joints' λ gave it
+    /// Last Select's inputs and choices (joints[k]'s key and mark).
+    std::vector<SelectionKey> m_keys;
+    std::vector<std::uint8_t> m_marks;
     // Scratch of Select and Build.
     std::vector<std::int32_t> m_union, m_jointRoot;
     std::vector<std::uint8_t> m_bad, m_cycle;
