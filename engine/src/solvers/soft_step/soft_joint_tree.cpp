@@ -518,30 +518,26 @@ void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBia
 
 void SoftJointTree::SolveFactored()
 {
+    // Forward substitution and the diagonal in one pass: a node's x is final once its
+    // children (all before it) have passed theirs on.
     const std::size_t n = m_nodes.size();
     for (std::size_t i = 0; i < n; ++i)
     {
         const Node& node = m_nodes[i];
-        if (node.parent >= 0)
+        if (node.body >= 0)
         {
-            if (node.body >= 0)
+            if (node.parent >= 0)
             {
                 Forward<3, 2>(m_lower[i], m_x[i], m_x[node.parent]);
             }
-            else
-            {
-                Forward<2, 3>(m_lower[i], m_x[i], m_x[node.parent]);
-            }
-        }
-    }
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        if (m_nodes[i].body >= 0)
-        {
             Scale<3>(m_inverse[i], m_x[i]);
         }
         else
         {
+            if (node.parent >= 0)
+            {
+                Forward<2, 3>(m_lower[i], m_x[i], m_x[node.parent]);
+            }
             Scale<2>(m_inverse[i], m_x[i]);
         }
     }
