@@ -151,6 +151,34 @@ TEST_CASE("a warmed-up soft step solving a joint tree does not allocate", "[worl
     CHECK(g_allocations.load() - before == 0);
 }
 
+TEST_CASE("a warmed-up world finding pairs in batches on a thread pool does not allocate",
+          "[world][threads]")
+{
+    // The pinwheels (world_fixtures.h): a hundred bars turning among static dots leave their
+    // fat boxes together every few steps, so the pair finding runs in several batches on the
+    // pool's threads (tests/test_threads.cpp checks that it does) and contacts are made and
+    // destroyed as each bar passes a dot, in a cycle of a quarter turn (0.52 s at 3 rad/s). Warmed
+    // up for over a turn, every batch's list, the contact pool and the pair set have reached their
+    // size.
+    for (const SolverKind kind : {SolverKind::Colour, SolverKind::SoftStep})
+    {
+        INFO("solver kind " << static_cast<int>(kind));
+        World world = meff::test::MakePinwheels(kind, true);
+        const std::unique_ptr<TaskSystem> pool = MakeThreadPool(2);
+        world.SetTaskSystem(pool.get());
+        for (int i = 0; i < 180; ++i)
+        {
+            world.Step(Real(1) / 60);
+        }
+        const long before = g_allocations.load();
+        for (int i = 0; i < 120; ++i)
+        {
+            world.Step(Real(1) / 60);
+        }
+        CHECK(g_allocations.load() - before == 0);
+    }
+}
+
 TEST_CASE("contact begin and end events bracket a bounce", "[world]")
 {
     World world;

@@ -39,6 +39,18 @@ bool BroadPhase::TestOverlap(std::int32_t proxyIdA, std::int32_t proxyIdB) const
     return meff::TestOverlap(m_tree.GetFatAABB(proxyIdA), m_tree.GetFatAABB(proxyIdB));
 }
 
+void BroadPhase::ClearMoveBuffer()
+{
+    for (const std::int32_t proxyId : m_moveBuffer)
+    {
+        if (proxyId != kNullProxy)
+        {
+            m_tree.ClearMoved(proxyId);
+        }
+    }
+    m_moveBuffer.clear();
+}
+
 // A proxy may be buffered more than once (moved then touched): its queries then run twice and
 // report the same pairs twice, as in Box2D. The contact manager filters existing contacts.
 void BroadPhase::BufferMove(std::int32_t proxyId)

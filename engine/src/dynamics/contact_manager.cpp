@@ -7,6 +7,7 @@
 #include "dynamics/world_state.h"
 #include "tasks/parallel_ranges.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace meff::detail
@@ -109,7 +110,13 @@ void UnlinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int si
     }
 }
 
-void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
+/// AddPair's refusals that only read the world: the same body, the filter's bits, the bodies
+/// (no dynamic one, or a joint that forbids collision) and an existing contact. As none of them
+/// writes anything, their order is free (Box2D 2.4.1 walks the contact list, then the joint
+/// list, then the filter), and the batched pair finding asks them on the threads.
+[[gnu::always_inline]] inline bool BuiltInRulesRefuse(const WorldState& world,
+                                                      std::int32_t shapeIndexA,
+                                                      std::int32_t shapeIndexB)
 {
     const Shape& first = world.shapes[shapeIndexA];
     const Shape& second = world.shapes[shapeIndexB];
@@ -117,31 +124,34 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     const std::int32_t bodyB = second.body;
     if (bodyA == bodyB)
     {
-        return;
+        return true;
     }
-    // Three refusals with no side effects, so their order is free (Box2D 2.4.1 walks the
-    // contact list, then the joint list, then the filter): the filter, already in hand, goes
-    // first, since pairs of shapes that never collide (a net's or a ragdoll's) are found again
-    // every step their boxes move, and the lists' walks miss the cache.
+    // The filter, already in hand, goes first, since pairs of shapes that never collide (a
+    // net's or a ragdoll's) are found again every step their boxes move, and the lists' walks
+    // miss the cache.
     if (!FiltersAllow(first.def.filter, second.def.filter) ||
         !BodiesShouldCollide(world, bodyB, bodyA))
     {
-        return;
+        return true;
     }
     // Does a contact between these two shapes exist already? Box2D 2.4.1 walks body B's
     // contact list, a cache miss per edge and a thousand edges for a container full of boxes;
     // the set answers the same question in one look-up.
-    if (world.contactPairs.Contains(ShapePairKey(shapeIndexA, shapeIndexB)))
-    {
-        return;
-    }
-    // The user's filter, which may count or log its calls, so asked exactly when Box2D asks
-    // its b2ContactFilter: after the three refusals above, before the shape types are looked
-    // at (Box2D asks about two segments too, then makes no contact).
+    return world.contactPairs.Contains(ShapePairKey(shapeIndexA, shapeIndexB));
+}
+
+/// The rest of AddPair, for a pair the built-in rules let through: the user's filter, which may
+/// count or log its calls, so asked exactly when Box2D asks its b2ContactFilter (after the
+/// built-in rules, before the shape types are looked at: Box2D asks about two segments too,
+/// then makes no contact), then the contact.
+void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
+{
     if (!CustomFilterAllows(world, shapeIndexA, shapeIndexB))
     {
         return;
     }
+    const Shape& first = world.shapes[shapeIndexA];
+    const Shape& second = world.shapes[shapeIndexB];
     bool swap = false;
     if (!ContactOrder(first.type, second.type, swap))
     {
@@ -208,12 +218,89 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
     ++world.contactCount;
 }
 
+/// Box2D 2.4.1's b2ContactManager::AddPair.
+void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
+{
+    if (!BuiltInRulesRefuse(world, shapeIndexA, shapeIndexB))
+    {
+        CreateContact(world, shapeIndexA, shapeIndexB);
+    }
+}
+
+/// Move-buffer entries to a batch of the batched pair finding: a moved proxy's query and its
+/// pairs' rules cost one to a few thousand instructions (spinner, smash), so a batch of 32 is
+/// tens of thousands, more than handing it to another thread costs.
+constexpr int kMovesPerBatch = 32;
+
+/// The colour and soft-step back ends' pair finding: the move buffer cut into batches of
+/// kMovesPerBatch entries, each batch's queries run on the threads, keeping in the batch's own
+/// list the pairs the built-in rules let through. The batches' lists, put end to end in batch
+/// order, are UpdatePairs' pairs in UpdatePairs' order less those AddPair would refuse before
+/// the user's filter: nothing changes the tree, the shapes, the bodies or the joints while the
+/// pairs are added, and the only contacts added are this step's. The batches are fixed by the
+/// move buffer alone, whatever the threads. Returns how many batches there are.
+int FindPairsInBatches(WorldState& world, const BroadPhase& broadPhase)
+{
+    const int moves = broadPhase.GetMoveCount();
+    const int batches = (moves + kMovesPerBatch - 1) / kMovesPerBatch;
+    std::vector<std::vector<ShapePair>>& lists = world.scratch.pairBatches;
+    if (lists.size() < static_cast<std::size_t>(batches))
+    {
+        lists.resize(static_cast<std::size_t>(batches)); // never shrunk: the lists keep capacity
+    }
+    const WorldState& read = world;
+    ForRanges(world.tasks, batches, 1,
+              [&read, &broadPhase, &lists, moves](int begin, int end, int)
+              {
+                  for (int b = begin; b < end; ++b)
+                  {
+                      std::vector<ShapePair>& list = lists[static_cast<std::size_t>(b)];
+                      list.clear();
+                      broadPhase.FindPairs(b * kMovesPerBatch,
+                                           std::min(moves, (b + 1) * kMovesPerBatch),
+                                           [&read, &list](std::int32_t a, std::int32_t c)
+                                           {
+                                               if (!BuiltInRulesRefuse(read, a, c))
+                                               {
+                                                   list.push_back({a, c});
+                                               }
+                                           });
+                  }
+              });
+    return batches;
+}
+
+/// Adds the batches' pairs in order, on this thread. A proxy buffered twice (moved, then
+/// touched) finds its pairs twice, so the contact may have been made by the first of them.
+void AddBatchedPairs(WorldState& world, int batches)
+{
+    for (int b = 0; b < batches; ++b)
+    {
+        for (const ShapePair& pair : world.scratch.pairBatches[static_cast<std::size_t>(b)])
+        {
+            if (!world.contactPairs.Contains(ShapePairKey(pair.shapeA, pair.shapeB)))
+            {
+                CreateContact(world, pair.shapeA, pair.shapeB);
+            }
+        }
+    }
+}
+
 } // namespace
 
 void FindNewContacts(WorldState& world)
 {
-    world.broadPhase.UpdatePairs([&world](std::int32_t shapeA, std::int32_t shapeB)
-                                 { AddPair(world, shapeA, shapeB); });
+    if (world.solver.kind == SolverKind::Box2D)
+    {
+        // Box2D's back end stays on one thread, its pairs added as b2BroadPhase adds them.
+        world.broadPhase.UpdatePairs([&world](std::int32_t shapeA, std::int32_t shapeB)
+                                     { AddPair(world, shapeA, shapeB); });
+    }
+    else
+    {
+        AddBatchedPairs(world, FindPairsInBatches(world, world.broadPhase));
+        world.broadPhase.ClearMoveBuffer();
+    }
     world.newShapes = false;
 }
 

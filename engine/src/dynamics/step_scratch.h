@@ -1,7 +1,7 @@
-// Working memory of the step's threaded collision stages (Collide, SynchronizeShapes), kept in
-// the world from step to step so that a warmed-up world does not allocate for them. None of it
-// is state: it is rewritten before it is read, every step, and is outside snapshots and the
-// state hash.
+// Working memory of the step's threaded collision stages (Collide, SynchronizeShapes,
+// FindNewContacts), kept in the world from step to step so that a warmed-up world does not
+// allocate for them. None of it is state: it is rewritten before it is read, every step, and is
+// outside snapshots and the state hash.
 #pragma once
 
 #include "meff/math.h"
@@ -30,6 +30,13 @@ struct CollideEntry
     bool touching;        ///< Update: the fresh manifold's touching state, written by the threads
 };
 
+/// A pair of shapes found by the batched pair finding (FindNewContacts), in AddPair's order.
+struct ShapePair
+{
+    std::int32_t shapeA;
+    std::int32_t shapeB;
+};
+
 struct StepScratch
 {
     /// The threaded Collide's contacts, in contact-list order.
@@ -38,6 +45,9 @@ struct StepScratch
     std::vector<std::int32_t> movedBodies;
     /// Per shape index: the centre of its box's motion over the step (MoveProxy's displacement).
     std::vector<Vec2> displacements;
+    /// The batched pair finding's pairs, one list per batch of move-buffer entries (only the
+    /// first batches in use; never shrunk, so that the lists keep their capacity).
+    std::vector<std::vector<ShapePair>> pairBatches;
 };
 
 } // namespace meff::detail
