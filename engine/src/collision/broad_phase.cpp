@@ -2,6 +2,8 @@
 // looked for at the next UpdatePairs (Box2D 2.4.1's b2BroadPhase).
 #include "collision/broad_phase.h"
 
+#include <algorithm>
+
 namespace meff::detail
 {
 
@@ -37,6 +39,44 @@ void BroadPhase::TouchProxy(std::int32_t proxyId)
 bool BroadPhase::TestOverlap(std::int32_t proxyIdA, std::int32_t proxyIdB) const
 {
     return meff::TestOverlap(m_tree.GetFatAABB(proxyIdA), m_tree.GetFatAABB(proxyIdB));
+}
+
+void BroadPhase::FindPairs(int begin, int end, std::vector<Pair>& pairs) const
+{
+    // UpdatePairs' queries (see there), word for word but for the buffer, which is the
+    // caller's.
+    for (int i = begin; i < end; ++i)
+    {
+        const std::int32_t queryId = m_moveBuffer[static_cast<std::size_t>(i)];
+        if (queryId == kNullProxy)
+        {
+            continue;
+        }
+
+        const AABB fatBox = m_tree.GetFatAABB(queryId);
+        const auto record = [this, queryId, &pairs](std::int32_t proxyId)
+        {
+            if (proxyId == queryId)
+            {
+                return true;
+            }
+            if (proxyId > queryId && m_tree.WasMoved(proxyId))
+            {
+                return true;
+            }
+            pairs.push_back({std::min(proxyId, queryId), std::max(proxyId, queryId)});
+            return true;
+        };
+        const ProxyLayers layers = m_tree.GetLayers(queryId);
+        if (layers.bitsDecide)
+        {
+            m_tree.Query(fatBox, layers, record);
+        }
+        else
+        {
+            m_tree.Query(fatBox, record);
+        }
+    }
 }
 
 void BroadPhase::ClearMoveBuffer()

@@ -205,14 +205,19 @@ class BroadPhase
     template <typename AddPair>
     void UpdatePairs(AddPair&& addPair);
 
+    /// A pair of proxies found by a moved proxy's query, A the smaller id.
+    struct Pair
+    {
+        std::int32_t proxyIdA;
+        std::int32_t proxyIdB;
+    };
     /// UpdatePairs in batches: how many move-buffer entries there are to query.
     int GetMoveCount() const { return static_cast<int>(m_moveBuffer.size()); }
-    /// Calls found(userDataA, userDataB) for each pair that the queries of move-buffer entries
-    /// [begin, end) find, in UpdatePairs' order, so that the ranges' pairs, put end to end in
-    /// entry order, are UpdatePairs' pairs. Reads only: ranges may be queried on several
-    /// threads at once, as long as nothing changes the tree meanwhile.
-    template <typename Found>
-    void FindPairs(int begin, int end, Found&& found) const;
+    /// Appends to `pairs` the pairs that the queries of move-buffer entries [begin, end) find,
+    /// in UpdatePairs' order, so that the ranges' pairs, put end to end in entry order, are
+    /// UpdatePairs' pairs. Reads only the tree: ranges may be queried on several threads at
+    /// once, as long as nothing changes it meanwhile.
+    void FindPairs(int begin, int end, std::vector<Pair>& pairs) const;
     /// What UpdatePairs does after the pairs are added: the moved proxies are not moved any
     /// more and the move buffer is emptied.
     void ClearMoveBuffer();
@@ -239,19 +244,8 @@ class BroadPhase
     }
 
   private:
-    /// The query of one move-buffer entry: found(proxyIdA, proxyIdB), A the smaller id, for
-    /// each pair it records (see UpdatePairs).
-    template <typename Found>
-    [[gnu::always_inline]] inline void QueryMoved(std::int32_t queryId, Found&& found) const;
-
     void BufferMove(std::int32_t proxyId);
     void UnBufferMove(std::int32_t proxyId);
-
-    struct Pair
-    {
-        std::int32_t proxyIdA;
-        std::int32_t proxyIdB;
-    };
 
     DynamicTree m_tree;
     int m_proxyCount = 0;

@@ -126,54 +126,49 @@ void DynamicTree::BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&
     }
 }
 
-template <typename Found>
-void BroadPhase::QueryMoved(std::int32_t queryId, Found&& found) const
-{
-    // Query the tree with the fat box of a proxy that moved, so that pairs that may touch soon
-    // are not missed. When both proxies of a pair moved, only the query of the one with the
-    // larger id records it; the pair is (smaller id, larger id), in discovery order.
-    const AABB fatBox = m_tree.GetFatAABB(queryId);
-    const auto record = [this, queryId, &found](std::int32_t proxyId)
-    {
-        if (proxyId == queryId)
-        {
-            return true;
-        }
-        if (proxyId > queryId && m_tree.WasMoved(proxyId))
-        {
-            return true;
-        }
-        found(std::min(proxyId, queryId), std::max(proxyId, queryId));
-        return true;
-    };
-    // Leaving out pairs whose layers do not meet drops only pairs the filter refuses, so the
-    // rest keep their order (a net whose links do not collide with each other then costs no
-    // walk through its own part of the tree).
-    const ProxyLayers layers = m_tree.GetLayers(queryId);
-    if (layers.bitsDecide)
-    {
-        m_tree.Query(fatBox, layers, record);
-    }
-    else
-    {
-        m_tree.Query(fatBox, record);
-    }
-}
-
 template <typename AddPair>
 void BroadPhase::UpdatePairs(AddPair&& addPair)
 {
-    // Box2D 2.4.1's order: every moved proxy queried, the pairs buffered (neither sorted nor
-    // deduplicated), then added in that order.
     m_pairBuffer.clear();
-    for (const std::int32_t queryId : m_moveBuffer)
+
+    // Query the tree with the fat box of every proxy that moved, so that pairs that may touch
+    // soon are not missed (FindPairs: the same queries). When both proxies of a pair moved,
+    // only the query of the one with the larger id records it; the pair is stored as (smaller
+    // id, larger id), in discovery order (Box2D 2.4.1 neither sorts nor deduplicates this
+    // buffer).
+    for (std::size_t i = 0; i < m_moveBuffer.size(); ++i)
     {
-        if (queryId != kNullProxy)
+        const std::int32_t queryId = m_moveBuffer[i];
+        if (queryId == kNullProxy)
         {
-            QueryMoved(queryId,
-                       [this](std::int32_t proxyIdA, std::int32_t proxyIdB) {
-                           m_pairBuffer.push_back({proxyIdA, proxyIdB});
-                       });
+            continue;
+        }
+
+        const AABB fatBox = m_tree.GetFatAABB(queryId);
+        const auto record = [this, queryId](std::int32_t proxyId)
+        {
+            if (proxyId == queryId)
+            {
+                return true;
+            }
+            if (proxyId > queryId && m_tree.WasMoved(proxyId))
+            {
+                return true;
+            }
+            m_pairBuffer.push_back({std::min(proxyId, queryId), std::max(proxyId, queryId)});
+            return true;
+        };
+        // Leaving out pairs whose layers do not meet drops only pairs the filter refuses, so
+        // the rest keep their order (a net whose links do not collide with each other then
+        // costs no walk through its own part of the tree).
+        const ProxyLayers layers = m_tree.GetLayers(queryId);
+        if (layers.bitsDecide)
+        {
+            m_tree.Query(fatBox, layers, record);
+        }
+        else
+        {
+            m_tree.Query(fatBox, record);
         }
     }
 
@@ -183,20 +178,6 @@ void BroadPhase::UpdatePairs(AddPair&& addPair)
         addPair(m_tree.GetUserData(pair.proxyIdA), m_tree.GetUserData(pair.proxyIdB));
     }
     ClearMoveBuffer();
-}
-
-template <typename Found>
-void BroadPhase::FindPairs(int begin, int end, Found&& found) const
-{
-    for (int i = begin; i < end; ++i)
-    {
-        const std::int32_t queryId = m_moveBuffer[static_cast<std::size_t>(i)];
-        if (queryId != kNullProxy)
-        {
-            QueryMoved(queryId, [this, &found](std::int32_t proxyIdA, std::int32_t proxyIdB)
-                       { found(m_tree.GetUserData(proxyIdA), m_tree.GetUserData(proxyIdB)); });
-        }
-    }
 }
 
 } // namespace meff::detail

@@ -4,10 +4,10 @@
 #include "dynamics/step_stages.h"
 
 #include "dynamics/events.h"
+#include "dynamics/pair_rules.h"
 #include "dynamics/world_state.h"
 #include "tasks/parallel_ranges.h"
 
-#include <algorithm>
 #include <vector>
 
 namespace meff::detail
@@ -15,45 +15,6 @@ namespace meff::detail
 
 namespace
 {
-
-bool FiltersAllow(const Filter& a, const Filter& b)
-{
-    if (a.groupIndex == b.groupIndex && a.groupIndex != 0)
-    {
-        return a.groupIndex > 0;
-    }
-    return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
-}
-
-/// The same key for (a, b) and (b, a); never 0 (PairSet's empty mark), since a ≠ b.
-std::uint64_t ShapePairKey(std::int32_t a, std::int32_t b)
-{
-    const auto low = static_cast<std::uint32_t>(std::min(a, b));
-    const auto high = static_cast<std::uint32_t>(std::max(a, b));
-    return (std::uint64_t{high} << 32) | low;
-}
-
-/// At least one body dynamic, and no joint between them that forbids collision.
-bool BodiesShouldCollide(const WorldState& world, std::int32_t a, std::int32_t b)
-{
-    const Body& bodyA = world.bodies[a];
-    const Body& bodyB = world.bodies[b];
-    if (bodyA.type != BodyType::Dynamic && bodyB.type != BodyType::Dynamic)
-    {
-        return false;
-    }
-    for (std::int32_t key = bodyB.jointList; key != kNullIndex;)
-    {
-        const JointSlot& joint = world.joints[EdgeOwner(key)];
-        const Edge& edge = joint.edges[EdgeSide(key)];
-        if (edge.other == a && !joint.joint.collideConnected)
-        {
-            return false;
-        }
-        key = edge.next;
-    }
-    return true;
-}
 
 /// The user's filter (World::SetCustomFilterCallback), asked after the built-in rules.
 bool CustomFilterAllows(const WorldState& world, std::int32_t a, std::int32_t b)
@@ -110,40 +71,8 @@ void UnlinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int si
     }
 }
 
-/// AddPair's refusals that only read the world: the same body, the filter's bits, the bodies
-/// (no dynamic one, or a joint that forbids collision) and an existing contact. As none of them
-/// writes anything, their order is free (Box2D 2.4.1 walks the contact list, then the joint
-/// list, then the filter), and the batched pair finding asks them on the threads.
-[[gnu::always_inline]] inline bool BuiltInRulesRefuse(const WorldState& world,
-                                                      std::int32_t shapeIndexA,
-                                                      std::int32_t shapeIndexB)
-{
-    const Shape& first = world.shapes[shapeIndexA];
-    const Shape& second = world.shapes[shapeIndexB];
-    const std::int32_t bodyA = first.body;
-    const std::int32_t bodyB = second.body;
-    if (bodyA == bodyB)
-    {
-        return true;
-    }
-    // The filter, already in hand, goes first, since pairs of shapes that never collide (a
-    // net's or a ragdoll's) are found again every step their boxes move, and the lists' walks
-    // miss the cache.
-    if (!FiltersAllow(first.def.filter, second.def.filter) ||
-        !BodiesShouldCollide(world, bodyB, bodyA))
-    {
-        return true;
-    }
-    // Does a contact between these two shapes exist already? Box2D 2.4.1 walks body B's
-    // contact list, a cache miss per edge and a thousand edges for a container full of boxes;
-    // the set answers the same question in one look-up.
-    return world.contactPairs.Contains(ShapePairKey(shapeIndexA, shapeIndexB));
-}
+} // namespace
 
-/// The rest of AddPair, for a pair the built-in rules let through: the user's filter, which may
-/// count or log its calls, so asked exactly when Box2D asks its b2ContactFilter (after the
-/// built-in rules, before the shape types are looked at: Box2D asks about two segments too,
-/// then makes no contact), then the contact.
 void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
 {
     if (!CustomFilterAllows(world, shapeIndexA, shapeIndexB))
@@ -218,71 +147,15 @@ void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t sha
     ++world.contactCount;
 }
 
+namespace
+{
+
 /// Box2D 2.4.1's b2ContactManager::AddPair.
 void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
 {
     if (!BuiltInRulesRefuse(world, shapeIndexA, shapeIndexB))
     {
         CreateContact(world, shapeIndexA, shapeIndexB);
-    }
-}
-
-/// Move-buffer entries to a batch of the batched pair finding: a moved proxy's query and its
-/// pairs' rules cost one to a few thousand instructions (spinner, smash), so a batch of 32 is
-/// tens of thousands, more than handing it to another thread costs.
-constexpr int kMovesPerBatch = 32;
-
-/// The colour and soft-step back ends' pair finding: the move buffer cut into batches of
-/// kMovesPerBatch entries, each batch's queries run on the threads, keeping in the batch's own
-/// list the pairs the built-in rules let through. The batches' lists, put end to end in batch
-/// order, are UpdatePairs' pairs in UpdatePairs' order less those AddPair would refuse before
-/// the user's filter: nothing changes the tree, the shapes, the bodies or the joints while the
-/// pairs are added, and the only contacts added are this step's. The batches are fixed by the
-/// move buffer alone, whatever the threads. Returns how many batches there are.
-int FindPairsInBatches(WorldState& world, const BroadPhase& broadPhase)
-{
-    const int moves = broadPhase.GetMoveCount();
-    const int batches = (moves + kMovesPerBatch - 1) / kMovesPerBatch;
-    std::vector<std::vector<ShapePair>>& lists = world.scratch.pairBatches;
-    if (lists.size() < static_cast<std::size_t>(batches))
-    {
-        lists.resize(static_cast<std::size_t>(batches)); // never shrunk: the lists keep capacity
-    }
-    const WorldState& read = world;
-    ForRanges(world.tasks, batches, 1,
-              [&read, &broadPhase, &lists, moves](int begin, int end, int)
-              {
-                  for (int b = begin; b < end; ++b)
-                  {
-                      std::vector<ShapePair>& list = lists[static_cast<std::size_t>(b)];
-                      list.clear();
-                      broadPhase.FindPairs(b * kMovesPerBatch,
-                                           std::min(moves, (b + 1) * kMovesPerBatch),
-                                           [&read, &list](std::int32_t a, std::int32_t c)
-                                           {
-                                               if (!BuiltInRulesRefuse(read, a, c))
-                                               {
-                                                   list.push_back({a, c});
-                                               }
-                                           });
-                  }
-              });
-    return batches;
-}
-
-/// Adds the batches' pairs in order, on this thread. A proxy buffered twice (moved, then
-/// touched) finds its pairs twice, so the contact may have been made by the first of them.
-void AddBatchedPairs(WorldState& world, int batches)
-{
-    for (int b = 0; b < batches; ++b)
-    {
-        for (const ShapePair& pair : world.scratch.pairBatches[static_cast<std::size_t>(b)])
-        {
-            if (!world.contactPairs.Contains(ShapePairKey(pair.shapeA, pair.shapeB)))
-            {
-                CreateContact(world, pair.shapeA, pair.shapeB);
-            }
-        }
     }
 }
 
@@ -298,8 +171,7 @@ void FindNewContacts(WorldState& world)
     }
     else
     {
-        AddBatchedPairs(world, FindPairsInBatches(world, world.broadPhase));
-        world.broadPhase.ClearMoveBuffer();
+        FindNewContactsInBatches(world);
     }
     world.newShapes = false;
 }

@@ -4,6 +4,7 @@
 // outside snapshots and the state hash.
 #pragma once
 
+#include "collision/broad_phase.h"
 #include "meff/math.h"
 
 #include <cstdint>
@@ -37,6 +38,13 @@ struct ShapePair
     std::int32_t shapeB;
 };
 
+/// One batch of the batched pair finding (pair_batches.cpp).
+struct PairBatch
+{
+    std::vector<BroadPhase::Pair> found; ///< its queries' pairs of proxies, in order
+    std::vector<ShapePair> kept;         ///< those the built-in rules let through, as shapes
+};
+
 struct StepScratch
 {
     /// The threaded Collide's contacts, in contact-list order.
@@ -45,9 +53,9 @@ struct StepScratch
     std::vector<std::int32_t> movedBodies;
     /// Per shape index: the centre of its box's motion over the step (MoveProxy's displacement).
     std::vector<Vec2> displacements;
-    /// The batched pair finding's pairs, one list per batch of move-buffer entries (only the
-    /// first batches in use; never shrunk, so that the lists keep their capacity).
-    std::vector<std::vector<ShapePair>> pairBatches;
+    /// The batched pair finding's batches of move-buffer entries (only the first ones in use;
+    /// never shrunk, so that the lists keep their capacity).
+    std::vector<PairBatch> pairBatches;
 };
 
 } // namespace meff::detail
