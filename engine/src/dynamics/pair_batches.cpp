@@ -39,20 +39,40 @@ void FindBatchPairs(const WorldState& world, int batch, int moves, PairBatch& li
     }
 }
 
-/// Gives every batch's lists the capacity of the largest: a list that grows is one allocation,
-/// and each batch would otherwise reach its own largest size at its own time, long after the
-/// world has warmed up (without this, large_pyramid on a pool allocated 5 times in its 31st to
-/// 50th steps: tests/test_world_lifecycle.cpp). On the stepping
-/// thread, after the batches; allocates only when some list grew past all the others.
-void EqualizeCapacity(std::vector<PairBatch>& lists)
+/// Keeps every batch's lists at least as long as the longest list so far: a list that grows is
+/// one allocation, and each batch would otherwise reach its own largest size at its own time,
+/// long after the world has warmed up (without this, large_pyramid on a pool allocated 5 times
+/// in its 31st to 50th steps: tests/test_world_lifecycle.cpp). New batches get that capacity
+/// before the threads run; after them, a list that grew past it raises it for all. On the
+/// stepping thread; allocates only when a batch is new or some list grew past all the others.
+void ReserveBatches(std::vector<PairBatch>& lists, int batches, const PairBatchCapacity& capacity)
 {
-    std::size_t found = 0;
-    std::size_t kept = 0;
-    for (const PairBatch& batch : lists)
+    if (lists.size() < static_cast<std::size_t>(batches))
     {
-        found = std::max(found, batch.found.capacity());
-        kept = std::max(kept, batch.kept.capacity());
+        lists.resize(static_cast<std::size_t>(batches)); // never shrunk: the lists keep capacity
+        for (PairBatch& batch : lists)
+        {
+            batch.found.reserve(capacity.found);
+            batch.kept.reserve(capacity.kept);
+        }
     }
+}
+
+/// After the threads: the used batches' longest lists raise every batch's (see ReserveBatches).
+void EqualizeCapacity(std::vector<PairBatch>& lists, int batches, PairBatchCapacity& capacity)
+{
+    std::size_t found = capacity.found;
+    std::size_t kept = capacity.kept;
+    for (int b = 0; b < batches; ++b)
+    {
+        found = std::max(found, lists[static_cast<std::size_t>(b)].found.capacity());
+        kept = std::max(kept, lists[static_cast<std::size_t>(b)].kept.capacity());
+    }
+    if (found == capacity.found && kept == capacity.kept)
+    {
+        return;
+    }
+    capacity = {found, kept};
     for (PairBatch& batch : lists)
     {
         batch.found.reserve(found);
@@ -73,10 +93,7 @@ void FindNewContactsInBatches(WorldState& world)
     const int moves = world.broadPhase.GetMoveCount();
     const int batches = (moves + kMovesPerBatch - 1) / kMovesPerBatch;
     std::vector<PairBatch>& lists = world.scratch.pairBatches;
-    if (lists.size() < static_cast<std::size_t>(batches))
-    {
-        lists.resize(static_cast<std::size_t>(batches)); // never shrunk: the lists keep capacity
-    }
+    ReserveBatches(lists, batches, world.scratch.pairBatchCapacity);
     const WorldState& read = world;
     ForRanges(world.tasks, batches, 1,
               [&read, &lists, moves](int begin, int end, int)
@@ -86,7 +103,7 @@ void FindNewContactsInBatches(WorldState& world)
                       FindBatchPairs(read, b, moves, lists[static_cast<std::size_t>(b)]);
                   }
               });
-    EqualizeCapacity(lists);
+    EqualizeCapacity(lists, batches, world.scratch.pairBatchCapacity);
     for (int b = 0; b < batches; ++b)
     {
         for (const ShapePair& pair : lists[static_cast<std::size_t>(b)].kept)

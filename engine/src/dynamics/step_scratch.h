@@ -7,6 +7,7 @@
 #include "collision/broad_phase.h"
 #include "meff/math.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +46,13 @@ struct PairBatch
     std::vector<ShapePair> kept;         ///< those the built-in rules let through, as shapes
 };
 
+/// The capacity of the longest lists of the batches so far.
+struct PairBatchCapacity
+{
+    std::size_t found = 0;
+    std::size_t kept = 0;
+};
+
 struct StepScratch
 {
     /// The threaded Collide's contacts, in contact-list order.
@@ -56,6 +64,8 @@ struct StepScratch
     /// The batched pair finding's batches of move-buffer entries (only the first ones in use;
     /// never shrunk, so that the lists keep their capacity).
     std::vector<PairBatch> pairBatches;
+    /// The capacity every batch's lists have (pair_batches.cpp: EqualizeCapacity).
+    PairBatchCapacity pairBatchCapacity;
 };
 
 } // namespace meff::detail
