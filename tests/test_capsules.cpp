@@ -528,3 +528,391 @@ TEST_CASE("Scene files: capsules and rounded polygons, their errors, and what Bo
                                    "polygon skin (0.01 m; every sharp polygon is rounded that "
                                    "much), or left out, got 0.01"});
 }
+
+TEST_CASE("Rounded polygon manifolds against every other shape, hand-worked", "[capsule][manifold]")
+{
+    // A 1 m square core rounded by 0.1 m: its top face (core) at y = 0.5, its surface at 0.6.
+    Polygon rounded = MakeBox(0.5f, 0.5f);
+    rounded.radius = 0.1f;
+    const Real r = rounded.radius;
+    Manifold m;
+    SECTION("a circle over the face: normal up, depth the overlap")
+    {
+        const Real overlap = 0.02f;
+        const Transform xfC = At(0.1f, 0.5f + r + 0.2f - overlap);
+        CollidePolygonAndCircle(m, rounded, At(0, 0), Circle{{0, 0}, 0.2f}, xfC);
+        REQUIRE(m.pointCount == 1);
+        const WorldManifold wm = Evaluate(m, At(0, 0), r, xfC, 0.2f);
+        CHECK(wm.normal.x == Approx(0).margin(1e-6));
+        CHECK(wm.normal.y == Approx(1).margin(1e-6));
+        CHECK(wm.separations[0] == Approx(-overlap).margin(1e-6));
+    }
+    SECTION("a circle beyond a rounded corner: along the line from the corner, (3, 4)/5")
+    {
+        // Corner core at (0.5, 0.5); the circle's centre 0.1 + 0.2 − 0.03 from it.
+        const Real d = 0.27f;
+        const Transform xfC = At(0.5f + 0.6f * d, 0.5f + 0.8f * d);
+        CollidePolygonAndCircle(m, rounded, At(0, 0), Circle{{0, 0}, 0.2f}, xfC);
+        REQUIRE(m.pointCount == 1);
+        const WorldManifold wm = Evaluate(m, At(0, 0), r, xfC, 0.2f);
+        CHECK(wm.normal.x == Approx(0.6).margin(1e-5));
+        CHECK(wm.normal.y == Approx(0.8).margin(1e-5));
+        CHECK(wm.separations[0] == Approx(-0.03).margin(1e-5));
+    }
+    SECTION("on a sharp box: two points under the core's corners, depth the overlap")
+    {
+        const Polygon box = MakeBox(2, 0.5f); // radius 0: top face at y = 0.5
+        const Real overlap = 0.015f;
+        const Transform xfR = At(0.25f, 0.5f + 0.5f + r - overlap);
+        CollideRoundedPolygons(m, box, At(0, 0), rounded, xfR);
+        REQUIRE(m.pointCount == 2);
+        const WorldManifold wm = Evaluate(m, At(0, 0), 0, xfR, r);
+        CHECK(wm.normal.y == Approx(1).margin(1e-6));
+        CHECK(wm.separations[0] == Approx(-overlap).margin(1e-6));
+        CHECK(wm.separations[1] == Approx(-overlap).margin(1e-6));
+        CHECK(std::min(wm.points[0].x, wm.points[1].x) == Approx(-0.25).margin(1e-6));
+        CHECK(std::max(wm.points[0].x, wm.points[1].x) == Approx(0.75).margin(1e-6));
+    }
+    SECTION("a capsule lying across its top: two points under the caps, depth the overlap")
+    {
+        const Real rc = 0.25f, overlap = 0.01f;
+        const Polygon capsule = MakeCapsulePolygon({{-0.3f, 0}, {0.3f, 0}, rc});
+        const Transform xfCap = At(0, 0.5f + r + rc - overlap);
+        CollideRoundedPolygons(m, rounded, At(0, 0), capsule, xfCap);
+        REQUIRE(m.pointCount == 2);
+        const WorldManifold wm = Evaluate(m, At(0, 0), r, xfCap, rc);
+        CHECK(wm.normal.y == Approx(1).margin(1e-6));
+        CHECK(wm.separations[0] == Approx(-overlap).margin(1e-6));
+        CHECK(wm.separations[1] == Approx(-overlap).margin(1e-6));
+    }
+    SECTION("on a two-sided segment, and on a one-sided one from the front but not behind")
+    {
+        // The world collides a two-sided segment as a two-vertex polygon with its skin as its
+        // radius (contact.cpp), a chain's segment through CollideChainSegmentAndRounded.
+        const Real skin = 0.01f, overlap = 0.01f;
+        const Transform xfR = At(0, 0.5f + r + skin - overlap);
+        CollideRoundedPolygons(m, MakeCapsulePolygon({{-3, 0}, {3, 0}, skin}), At(0, 0), rounded,
+                               xfR);
+        REQUIRE(m.pointCount == 2);
+        WorldManifold wm = Evaluate(m, At(0, 0), skin, xfR, r);
+        CHECK(wm.normal.y == Approx(1).margin(1e-6));
+        CHECK(wm.separations[0] == Approx(-overlap).margin(1e-6));
+        // Listed right to left the solid side is up.
+        const ChainSegment oneSided{{4, 0}, {{3, 0}, {-3, 0}, skin}, {-4, 0}};
+        CollideChainSegmentAndRounded(m, oneSided, At(0, 0), rounded, xfR);
+        REQUIRE(m.pointCount == 2);
+        wm = Evaluate(m, At(0, 0), skin, xfR, r);
+        CHECK(wm.normal.y == Approx(1).margin(1e-6));
+        CHECK(wm.separations[0] == Approx(-overlap).margin(1e-6));
+        CHECK(wm.separations[1] == Approx(-overlap).margin(1e-6));
+        // Its centre just below the segment, overlapping it from behind: no contact.
+        CollideChainSegmentAndRounded(m, oneSided, At(0, 0), rounded, At(0, -0.3f));
+        CHECK(m.pointCount == 0);
+    }
+}
+
+namespace
+{
+
+/// A static ground of `kind` whose surface (a sharp polygon's, a segment's and a chain's being
+/// their skin above their core) is at y = 0 under x = ±1.5, flat there (the circles: one of
+/// radius 20 under each of x = ±1.5, whose tops are there).
+void AddGround(World& world, const std::string& kind)
+{
+    const Real skin = world.GetTolerances().polygonSkin;
+    if (kind == "box")
+    {
+        const BodyId body = world.CreateBody({.position = {0, -1 - skin}});
+        world.CreateShape(body, {}, MakeBox(20, 1));
+    }
+    else if (kind == "circle")
+    {
+        for (const Real x : {-1.5f, 1.5f})
+        {
+            const BodyId body = world.CreateBody({.position = {x, -20}});
+            world.CreateShape(body, {}, Circle{{0, 0}, 20});
+        }
+    }
+    else if (kind == "capsule")
+    {
+        const BodyId body = world.CreateBody({.position = {0, -0.5f}});
+        world.CreateShape(body, {}, Capsule{{-10, 0}, {10, 0}, 0.5f});
+    }
+    else if (kind == "rounded box")
+    {
+        Polygon box = MakeBox(10, 0.4f);
+        box.radius = 0.1f;
+        const BodyId body = world.CreateBody({.position = {0, -0.5f}});
+        world.CreateShape(body, {}, box);
+    }
+    else if (kind == "segment")
+    {
+        const BodyId body = world.CreateBody({.position = {0, -skin}});
+        world.CreateShape(body, {}, Segment{{-10, 0}, {10, 0}});
+    }
+    else // chain, listed right to left: the solid side up, and a joint under each body
+    {
+        const BodyId body = world.CreateBody({.position = {0, -skin}});
+        std::vector<Vec2> points;
+        for (int x = 10; x >= -10; --x)
+        {
+            points.push_back({Real(x) + 0.5f, 0});
+        }
+        world.CreateChain(body, {}, Chain{.points = points});
+    }
+}
+
+} // namespace
+
+TEST_CASE("Capsules and rounded boxes rest at their radius on every kind of shape, under every "
+          "back end",
+          "[capsule][solver]")
+{
+    // The world's dispatch for each pair (contact.cpp), solved: each ground's surface is at
+    // y = 0 under the bodies, so a capsule's axis rests at its radius (0.3) and a rounded box's
+    // centre at its half height plus its rounding (0.25 + 0.15).
+    const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
+    const std::string ground =
+        GENERATE("box", "circle", "capsule", "rounded box", "segment", "chain");
+    CAPTURE(SolverKindName(kind), ground);
+    WorldDef def;
+    def.solver.kind = kind;
+    World world(def);
+    AddGround(world, ground);
+    const Real slop = world.GetTolerances().linearSlop;
+    const BodyId capsule = world.CreateBody({.type = BodyType::Dynamic, .position = {-1.5f, 0.5f}});
+    world.CreateShape(capsule, {}, Capsule{{-0.5f, 0}, {0.5f, 0}, 0.3f});
+    Polygon rounded = MakeBox(0.4f, 0.25f);
+    rounded.radius = 0.15f;
+    const BodyId box = world.CreateBody({.type = BodyType::Dynamic, .position = {1.5f, 0.6f}});
+    world.CreateShape(box, {}, rounded);
+    StepSeconds(world, 3);
+    // At rest the surfaces overlap by up to the linear slop (Box2D's allowed penetration; the
+    // soft step corrects to it too).
+    CHECK(world.GetPosition(capsule).y == Approx(0.3).margin(slop + 1e-3));
+    CHECK(world.GetPosition(box).y == Approx(0.25 + 0.15).margin(slop + 1e-3));
+    // Level, but for the same allowance at either end of the contact: the capsule's points are
+    // 1 m apart (under its caps' centres), the rounded box's 0.8 m (under its core's corners),
+    // so either may tilt by up to slop/span (on a chain, whose segments each hold their own
+    // points, 0.002 rad is measured).
+    CHECK(std::abs(world.GetAngle(capsule)) < slop / 1.0f);
+    CHECK(std::abs(world.GetAngle(box)) < slop / 0.8f);
+    CHECK(world.GetLinearVelocity(capsule).Length() < 1e-2);
+    CHECK(world.GetLinearVelocity(box).Length() < 1e-2);
+}
+
+namespace
+{
+
+Sweep Straight(Vec2 from, Vec2 to)
+{
+    Sweep sweep;
+    sweep.c0 = from;
+    sweep.c = to;
+    return sweep;
+}
+
+} // namespace
+
+TEST_CASE("Time of impact: a capsule and a rounded box swept at a thin wall stop where "
+          "TimeOfImpact's target says",
+          "[capsule][toi]")
+{
+    // TimeOfImpact stops when the cores are target = rA + rB − 3·slop apart, within slop/4
+    // (its documented tolerance). The wall: a 0.2 m thick box, skin 0.01, faces at x = ±0.1.
+    Polygon wall = MakeBox(0.1f, 2);
+    wall.radius = 0.01f;
+    TOIInput input;
+    input.proxyA = MakeProxy(wall);
+    input.sweepA = Straight({0, 0}, {0, 0});
+    input.linearSlop = 0.005f;
+    SECTION("a capsule lying along the sweep: its front cap's centre stops target from the face")
+    {
+        input.proxyB = MakeProxy(Capsule{{-0.5f, 0}, {0.5f, 0}, 0.25f});
+        input.sweepB = Straight({-5, 0}, {5, 0});
+        const TOIOutput out = TimeOfImpact(input);
+        REQUIRE(out.state == TOIOutput::State::Touching);
+        const double target = 0.01 + 0.25 - 3 * 0.005;
+        const double x = -5 + 10 * double(out.t);
+        CHECK(x + 0.5 == Approx(-0.1 - target).margin(0.25 * 0.005 + 1e-5));
+    }
+    SECTION("a capsule standing across the sweep and turning a quarter turn on the way")
+    {
+        // Upright at the start, lying flat at the end: near the wall it lies almost along the
+        // sweep, so its front cap leads; the impact is no later than the upright capsule's.
+        input.proxyB = MakeProxy(Capsule{{0, -0.5f}, {0, 0.5f}, 0.25f});
+        input.sweepB = Straight({-5, 0}, {5, 0});
+        const TOIOutput upright = TimeOfImpact(input);
+        REQUIRE(upright.state == TOIOutput::State::Touching);
+        CHECK(-5 + 10 * double(upright.t) == Approx(-0.1 - 0.245).margin(0.25 * 0.005 + 1e-5));
+        input.sweepB.a = Real(Pi() / 2);
+        const TOIOutput turning = TimeOfImpact(input);
+        REQUIRE(turning.state == TOIOutput::State::Touching);
+        CHECK(turning.t < upright.t);
+        // At the reported time the cores are within the target ± slop/4.
+        const Transform xfB = input.sweepB.GetTransform(turning.t);
+        DistanceInput d;
+        d.proxyA = input.proxyA;
+        d.proxyB = input.proxyB;
+        d.transformA = At(0, 0);
+        d.transformB = xfB;
+        SimplexCache cache;
+        const DistanceOutput apart = ShapeDistance(d, cache);
+        CHECK(double(apart.distance) == Approx(0.245).margin(0.25 * 0.005 + 1e-5));
+    }
+    SECTION("a rounded box: its core's face stops target from the wall's")
+    {
+        Polygon box = MakeBox(0.3f, 0.3f);
+        box.radius = 0.1f;
+        input.proxyB = MakeProxy(box);
+        input.sweepB = Straight({-5, 0.5f}, {5, 0.5f});
+        const TOIOutput out = TimeOfImpact(input);
+        REQUIRE(out.state == TOIOutput::State::Touching);
+        const double target = 0.01 + 0.1 - 3 * 0.005;
+        const double x = -5 + 10 * double(out.t);
+        CHECK(x + 0.3 == Approx(-0.1 - target).margin(0.25 * 0.005 + 1e-5));
+    }
+}
+
+TEST_CASE("Continuous collision: a fast capsule or rounded box does not pass a thin wall, under "
+          "every back end",
+          "[capsule][toi][solver]")
+{
+    // 120 m/s at 60 Hz is 2 m a step (the most a body may move in one step, Box2D's
+    // b2_maxTranslation) against a 0.1 m wall: without continuous collision the bodies pass
+    // straight through (checked), with it they stop at the wall's face.
+    const SolverKind kind = GENERATE(SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep);
+    const bool capsuleBody = GENERATE(true, false);
+    CAPTURE(SolverKindName(kind), capsuleBody);
+    for (const bool continuous : {true, false})
+    {
+        WorldDef def;
+        def.solver.kind = kind;
+        def.gravity = {0, 0};
+        def.continuous = continuous;
+        World world(def);
+        const BodyId wall = world.CreateBody({});
+        world.CreateShape(wall, {}, MakeBox(0.05f, 3)); // faces at x = ±0.05 (surface ±0.06)
+        // Started so that no step ends touching the wall: 2 m steps from x = −5.3 end at
+        // −1.3 and 0.7, where neither body reaches the wall's surface (x = ±0.06).
+        const BodyId body = world.CreateBody(
+            {.type = BodyType::Dynamic, .position = {-5.3f, 0}, .linearVelocity = {120, 0}});
+        Real front = 0; // the body's surface ahead of its centre
+        if (capsuleBody)
+        {
+            world.CreateShape(body, {}, Capsule{{-0.3f, 0}, {0.3f, 0}, 0.2f});
+            front = 0.5f;
+        }
+        else
+        {
+            Polygon box = MakeBox(0.2f, 0.2f);
+            box.radius = 0.1f;
+            world.CreateShape(body, {}, box);
+            front = 0.3f;
+        }
+        Real furthest = -kMaxReal;
+        for (int i = 0; i < 30; ++i)
+        {
+            world.Step(Real(1) / Real(60));
+            furthest = Max(furthest, world.GetPosition(body).x + front);
+        }
+        CAPTURE(continuous, furthest);
+        if (continuous)
+        {
+            // Its surface never beyond the wall's by more than the time of impact's target
+            // (3 slops) and a slop of solver overlap: 0.02 m past −0.06.
+            CHECK(furthest < Real(-0.06 + 0.02));
+            CHECK(world.GetPosition(body).x < 0);
+        }
+        else
+        {
+            CHECK(world.GetPosition(body).x > 10);
+        }
+    }
+}
+
+TEST_CASE("Ray casts hit a rounded box's faces and corner arcs where the geometry says",
+          "[capsule][query]")
+{
+    // A 1 m square core at (2, 0) rounded by 0.1: faces at x = 2 ± 0.6, corner arcs of radius
+    // 0.1 about the core's corners (2 ± 0.5, ±0.5).
+    World world;
+    Polygon box = MakeBox(0.5f, 0.5f);
+    box.radius = 0.1f;
+    const BodyId body = world.CreateBody({.position = {2, 0}});
+    const ShapeId shape = world.CreateShape(body, {}, box);
+    SECTION("the face: a ray from the right at y = 0.3 meets x = 2.6, normal +x")
+    {
+        const RayResult hit = world.CastRayClosest({5, 0.3f}, {-5, 0});
+        REQUIRE(hit.hit);
+        CHECK(hit.shape == shape);
+        CHECK(hit.point.x == Approx(2.6).margin(1e-5));
+        CHECK(hit.normal.x == Approx(1).margin(1e-5));
+    }
+    SECTION("a corner arc: at y = 0.55 the ray meets the arc at x = 2.5 + sqrt(0.01 - 0.0025)")
+    {
+        const RayResult hit = world.CastRayClosest({5, 0.55f}, {-5, 0});
+        REQUIRE(hit.hit);
+        const double dx = std::sqrt(0.01 - 0.0025);
+        CHECK(hit.point.x == Approx(2.5 + dx).margin(1e-5));
+        CHECK(hit.normal.x == Approx(dx / 0.1).margin(1e-4));
+        CHECK(hit.normal.y == Approx(0.5).margin(1e-4));
+    }
+    SECTION("beyond the arc (y = 0.61) the ray misses, though it crosses the core's box")
+    {
+        CHECK_FALSE(world.CastRayClosest({5, 0.61f}, {-5, 0}).hit);
+        // A point in the sharp box's corner but outside the arc is outside the shape.
+        int found = 0;
+        world.OverlapPoint({2.59f, 0.59f}, {}, [&](ShapeId) { return ++found, true; });
+        CHECK(found == 0);
+        world.OverlapPoint({2.55f, 0.55f}, {}, [&](ShapeId) { return ++found, true; });
+        CHECK(found == 1);
+    }
+}
+
+TEST_CASE("Shape casts with and onto rounded shapes stop where the surfaces meet, less the skin",
+          "[capsule][query]")
+{
+    // ShapeCast (b2ShapeCast's rule): it stops once the cores are within
+    // rA + rB − polygonSkin plus at most linearSlop/2, each radius at least the skin.
+    World world;
+    const Real skin = world.GetTolerances().polygonSkin;
+    const double halfSlop = 0.5 * double(world.GetTolerances().linearSlop);
+    SECTION("a circle dropped onto a lying capsule")
+    {
+        const BodyId ground = world.CreateBody({});
+        world.CreateShape(ground, {}, Capsule{{-2, 0}, {2, 0}, 0.25f});
+        const RayResult hit = world.CastShapeClosest(Circle{{0, 0}, 0.2f}, At(0.7f, 3), {0, -3});
+        REQUIRE(hit.hit);
+        const double y = 3 - 3 * double(hit.fraction);
+        CHECK(y >= 0.45 - double(skin) - 1e-5);
+        CHECK(y <= 0.45 - double(skin) + halfSlop + 1e-5);
+        CHECK(hit.normal.y == Approx(1).margin(1e-5));
+    }
+    SECTION("a rounded box dropped onto a sharp box")
+    {
+        const BodyId ground = world.CreateBody({});
+        world.CreateShape(ground, {}, MakeBox(5, 0.5f)); // core top 0.5, radius the skin
+        Polygon rounded = MakeBox(0.4f, 0.2f);
+        rounded.radius = 0.1f;
+        const RayResult hit = world.CastShapeClosest(rounded, At(0, 3), {0, -3});
+        REQUIRE(hit.hit);
+        // Cores within 0.01 + 0.1 − 0.01 = 0.1: the centre at 0.5 + 0.2 + 0.1.
+        const double y = 3 - 3 * double(hit.fraction);
+        CHECK(y >= 0.8 - 1e-5);
+        CHECK(y <= 0.8 + halfSlop + 1e-5);
+    }
+    SECTION("a capsule cast sideways onto a standing capsule meets it cap to side")
+    {
+        const BodyId post = world.CreateBody({});
+        world.CreateShape(post, {}, Capsule{{0, -1}, {0, 1}, 0.2f});
+        const RayResult hit =
+            world.CastShapeClosest(Capsule{{-0.5f, 0}, {0.5f, 0}, 0.3f}, At(-4, 0.2f), {4, 0});
+        REQUIRE(hit.hit);
+        // The front cap's centre at x + 0.5 stops 0.2 + 0.3 − skin (+ up to slop/2) from x = 0.
+        const double front = -4 + 4 * double(hit.fraction) + 0.5;
+        CHECK(front <= -(0.5 - double(skin)) + 1e-5);
+        CHECK(front >= -(0.5 - double(skin)) - halfSlop - 1e-5);
+        CHECK(hit.normal.x == Approx(-1).margin(1e-5));
+    }
+}

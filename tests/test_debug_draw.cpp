@@ -199,3 +199,53 @@ TEST_CASE("World::Draw draws a chain's segments with a tick on their solid side"
         CHECK(double(tip.y) == Approx(0.25));
     }
 }
+
+TEST_CASE("World::Draw draws gear and friction joints as b2Joint::Draw: centres, anchors, the line "
+          "between",
+          "[debug_draw]")
+{
+    // Two wheels on hinges to the ground, 3 m apart, coupled by a gear; a box held by a
+    // friction joint at (6, 1). Shapes off: only joints are drawn, in creation order.
+    World world{WorldDef{.gravity = {0, 0}}};
+    const BodyId ground = world.CreateBody(BodyDef{});
+    const auto wheel = [&](Vec2 at)
+    {
+        const BodyId body = world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = at});
+        world.CreateShape(body, ShapeDef{}, Circle{{0, 0}, Real(0.5)});
+        return body;
+    };
+    const BodyId left = wheel({0, 2});
+    const BodyId right = wheel({3, 2});
+    const JointId hingeL = world.CreateJoint(world.MakeRevoluteJointDef(ground, left, {0, 2}));
+    const JointId hingeR = world.CreateJoint(world.MakeRevoluteJointDef(ground, right, {3, 2}));
+    world.CreateJoint(GearJointDef{hingeL, hingeR, 2, false});
+    const BodyId box = world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = {6, 0}});
+    world.CreateShape(box, ShapeDef{}, MakeBox(Real(0.5), Real(0.5)));
+    world.CreateJoint(world.MakeFrictionJointDef(ground, box, {6, 1}));
+
+    RecordingDraw draw;
+    DrawFlags flags;
+    flags.shapes = false;
+    world.Draw(draw, flags);
+    using Segment = std::pair<Vec2, Vec2>;
+    const auto drawn = [&](Vec2 a, Vec2 b)
+    {
+        for (const Segment& s : draw.segments)
+        {
+            if ((s.first == a && s.second == b) || (s.first == b && s.second == a))
+            {
+                return true;
+            }
+        }
+        return false;
+    };
+    // The gear's bodies are the hinges' wheels, its anchors their hubs: the line between the
+    // two wheel centres is the gear.
+    CHECK(drawn({0, 2}, {3, 2}));
+    // The friction joint: the box's centre to its anchor, and the (coincident) anchors; the
+    // static ground's origin is left out.
+    CHECK(drawn({6, 0}, {6, 1}));
+    CHECK_FALSE(drawn({0, 0}, {6, 1}));
+    // Two anchor points per joint: two hinges, the gear, the friction joint.
+    CHECK(draw.Count("point") == 2 * 4);
+}

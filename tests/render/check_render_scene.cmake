@@ -1,11 +1,16 @@
 # cmake -DMEFF=... -DSCENE=... -DOUTPUT_DIR=... -P check_render_scene.cmake
 # Passes when `meff render SCENE` (4 steps, every 2nd frame, small, every overlay on) exits with
 # status 0 and writes exactly frame_00000.png to frame_00002.png and nothing else, and when the
-# same command run again writes byte-identical files.
+# same command run again writes byte-identical files. -DNO_OVERLAY=ON leaves out --overlay-box2d
+# (Box2D 2.4.1 cannot run the scenes of samples/v3 beside meff).
+set(overlay --overlay-box2d)
+if(NO_OVERLAY)
+    set(overlay)
+endif()
 foreach(run IN ITEMS a b)
     file(REMOVE_RECURSE ${OUTPUT_DIR}/${run})
     execute_process(COMMAND ${MEFF} render ${SCENE} --out ${OUTPUT_DIR}/${run} --frames 4 --every 2
-            --size 160x120 --contacts --impulses --joints --overlay-box2d
+            --size 160x120 --contacts --impulses --joints ${overlay}
         RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
     if(NOT status STREQUAL "0")
         message(FATAL_ERROR "exit status ${status}\n${out}${err}")

@@ -122,6 +122,41 @@ TEST_CASE("A red circle is drawn where the camera puts it", "[render]")
     CHECK(FillCentroidX(image, fill) == Approx(140).margin(1.0));
 }
 
+TEST_CASE("A capsule and a rounded box are drawn with round ends and corners", "[render]")
+{
+    // The camera of RedOptions: world (x, y) on pixel (100 + 20x, 100 − 20y).
+    World world{WorldDef{.gravity = {0, 0}}};
+    // A capsule from (−3, 1) to (−1, 1), radius 0.5: core from pixel (40, 80) to (80, 80),
+    // radius 10 pixels.
+    const BodyId capsule =
+        world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = {-2, 1}});
+    world.CreateShape(capsule, ShapeDef{}, Capsule{{-1, 0}, {1, 0}, Real(0.5)});
+    // A 1 m square core rounded by 0.25 m at (2, −1): core corners 10 pixels from the centre
+    // pixel (140, 120), rounding 5 pixels.
+    Polygon rounded = MakeBox(Real(0.5), Real(0.5));
+    rounded.radius = Real(0.25);
+    const BodyId box = world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = {2, -1}});
+    world.CreateShape(box, ShapeDef{}, rounded);
+    OffscreenRenderer renderer(200, 200);
+    const Image image = RenderFrame(renderer, world, RedOptions());
+    const Rgb fill = FillColor(kRed);
+    // The capsule: fill beside its axis line and inside a cap; outside the cap, though inside
+    // its bounding box (12.7 pixels from the cap's centre), background.
+    CHECK(image.At(60, 80 + 5) == fill);
+    CHECK(image.At(60, 80 - 5) == fill);
+    CHECK(image.At(34, 80 + 2) == fill);
+    CHECK(image.At(31, 71) == kBackground);
+    CHECK(image.At(89, 89) == kBackground);
+    CHECK(image.At(60, 80 + 13) == kBackground);
+    // The rounded box: fill in the band beyond each face; the corners of its bounding square
+    // background (pixel (x, y) covers [x, x + 1) × [y, y + 1): the centres of pixels (154, 134)
+    // and (125, 105) are 6.4 pixels from the core's corners, beyond the 5-pixel rounding).
+    CHECK(image.At(140 + 13, 120 + 3) == fill);
+    CHECK(image.At(140 - 3, 120 - 13) == fill);
+    CHECK(image.At(140 + 14, 120 + 14) == kBackground);
+    CHECK(image.At(140 - 15, 120 - 15) == kBackground);
+}
+
 TEST_CASE("A body that moves right moves right in the image", "[render]")
 {
     World world = OneCircle({-2, 0}, {3, 0});
