@@ -193,6 +193,49 @@ TEST_CASE("A capsule character walks up a 20° ramp on its surface", "[mover][wo
     CHECK(height == Approx(kRadius + skin).margin(3e-3));
 }
 
+TEST_CASE("A capsule character walks up a step lower than its radius; a higher one stops it",
+          "[mover][world]")
+{
+    // A floor (top y = 0) and, from x = 2 on, a step of height h. Below the radius the cap
+    // meets the step's corner on its rounded lower side, whose plane leans back towards the
+    // character: the push out of it lifts the character, and walking on carries it onto the
+    // step. Above the radius the cap's side meets the step's face: a wall.
+    const Real h = GENERATE(Real(0.1), Real(0.2), Real(0.5));
+    CAPTURE(h);
+    World world(WorldDef{});
+    const BodyId floor = world.CreateBody({.position = {0, -1}});
+    world.CreateShape(floor, {}, MakeBox(10, 1));
+    const BodyId step = world.CreateBody({.position = {6, h - 1}});
+    world.CreateShape(step, {}, MakeBox(4, 1)); // face x = 2, top y = h
+    const Real skin = world.GetTolerances().polygonSkin;
+
+    Vec2 position{0, kRadius + skin};
+    Vec2 velocity{0, 0};
+    Real lowest = kMaxReal;
+    for (int i = 0; i < 120; ++i)
+    {
+        velocity.x = 2;
+        velocity.y -= Real(10) * kDt;
+        Move(world, position, velocity);
+        lowest = Min(lowest, Clearance(world, position));
+    }
+    // Never into the floor or the step by more than the planes' linear model over one move.
+    CHECK(lowest > Real(-1e-3));
+    if (h < kRadius)
+    {
+        // On the step, 2 m/s for 2 s from x = 0 less what the climb cost: past its edge, and
+        // resting on it as on the floor (radius plus skin above the top, within the plane
+        // solver's tolerance and a step's gravity, as above).
+        CHECK(position.x > Real(3));
+        CHECK(position.y == Approx(h + kRadius + skin).margin(1e-3));
+    }
+    else
+    {
+        CHECK(position.x == Approx(2 - kRadius - skin).margin(1e-3));
+        CHECK(position.y == Approx(kRadius + skin).margin(1e-3));
+    }
+}
+
 TEST_CASE("MoveCharacter is the move meff/mover.h lays out, bit for bit", "[mover][world]")
 {
     // A corner: a floor and a wall, the character pressed into both and walking into them.
