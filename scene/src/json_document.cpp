@@ -537,11 +537,15 @@ void ObjectReader::Finish()
 
 bool CheckPositive(ObjectReader& reader, std::string_view key, double value)
 {
-    if (value > 0)
+    // The engine computes in its scalar (float by default): a positive double below its
+    // smallest denormal becomes 0 there, which the engine refuses (MakeBox throws on a zero
+    // half extent), so the loader must refuse it too, at its field.
+    if (value > 0 && Real(value) > 0)
     {
         return true;
     }
-    reader.Fail(key, "must be > 0");
+    reader.Fail(key, value > 0 ? "must be > 0 in the engine's scalar (this rounds to 0)"
+                               : "must be > 0");
     return false;
 }
 
