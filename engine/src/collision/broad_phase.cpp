@@ -43,8 +43,8 @@ bool BroadPhase::TestOverlap(std::int32_t proxyIdA, std::int32_t proxyIdB) const
 
 void BroadPhase::FindPairs(int begin, int end, std::vector<Pair>& pairs) const
 {
-    // UpdatePairs' queries (see there), word for word but for the buffer, which is the
-    // caller's.
+    // The queries UpdatePairs describes, over move buffer entries [begin, end): UpdatePairs
+    // runs them over the whole buffer, the batched pair finding over batches of it.
     for (int i = begin; i < end; ++i)
     {
         const std::int32_t queryId = m_moveBuffer[static_cast<std::size_t>(i)];
@@ -67,6 +67,9 @@ void BroadPhase::FindPairs(int begin, int end, std::vector<Pair>& pairs) const
             pairs.push_back({std::min(proxyId, queryId), std::max(proxyId, queryId)});
             return true;
         };
+        // Leaving out pairs whose layers do not meet drops only pairs the filter refuses, so
+        // the rest keep their order (a net whose links do not collide with each other then
+        // costs no walk through its own part of the tree).
         const ProxyLayers layers = m_tree.GetLayers(queryId);
         if (layers.bitsDecide)
         {

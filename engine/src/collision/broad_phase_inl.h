@@ -136,41 +136,7 @@ void BroadPhase::UpdatePairs(AddPair&& addPair)
     // only the query of the one with the larger id records it; the pair is stored as (smaller
     // id, larger id), in discovery order (Box2D 2.4.1 neither sorts nor deduplicates this
     // buffer).
-    for (std::size_t i = 0; i < m_moveBuffer.size(); ++i)
-    {
-        const std::int32_t queryId = m_moveBuffer[i];
-        if (queryId == kNullProxy)
-        {
-            continue;
-        }
-
-        const AABB fatBox = m_tree.GetFatAABB(queryId);
-        const auto record = [this, queryId](std::int32_t proxyId)
-        {
-            if (proxyId == queryId)
-            {
-                return true;
-            }
-            if (proxyId > queryId && m_tree.WasMoved(proxyId))
-            {
-                return true;
-            }
-            m_pairBuffer.push_back({std::min(proxyId, queryId), std::max(proxyId, queryId)});
-            return true;
-        };
-        // Leaving out pairs whose layers do not meet drops only pairs the filter refuses, so
-        // the rest keep their order (a net whose links do not collide with each other then
-        // costs no walk through its own part of the tree).
-        const ProxyLayers layers = m_tree.GetLayers(queryId);
-        if (layers.bitsDecide)
-        {
-            m_tree.Query(fatBox, layers, record);
-        }
-        else
-        {
-            m_tree.Query(fatBox, record);
-        }
-    }
+    FindPairs(0, static_cast<int>(m_moveBuffer.size()), m_pairBuffer);
 
     for (std::size_t i = 0; i < m_pairBuffer.size(); ++i)
     {
