@@ -67,11 +67,6 @@ Block Inverse(const Block& m, int n)
     return inv;
 }
 
-} // namespace
-
-namespace
-{
-
 /// What the selection reads of a joint: its kind, its bodies and whether each moves and turns.
 [[gnu::always_inline]] inline SoftJointTree::SelectionKey KeyOf(const Joint& joint,
                                                                 const SoftJointFrame& f)
@@ -116,12 +111,9 @@ int SoftJointTree::Select(const std::vector<Joint*>& joints, std::vector<SoftJoi
     m_union.resize(bodyCount);
     std::iota(m_union.begin(), m_union.end(), 0);
     m_cycle.assign(joints.size(), 0);
+    // A revolute joint (flag 1) with a moving body (flags 2, 4): KeyOf has read both.
     const auto candidate = [&](std::size_t k)
-    {
-        const SoftJointFrame& f = frames[k];
-        return std::holds_alternative<RevoluteJoint>(joints[k]->data) &&
-               (Moves(f.mA) || Moves(f.mB));
-    };
+    { return (m_keys[k].flags & 1) != 0 && (m_keys[k].flags & 6) != 0; };
     for (std::size_t k = 0; k < joints.size(); ++k)
     {
         const SoftJointFrame& f = frames[k];
@@ -180,7 +172,8 @@ void SoftJointTree::Build(const std::vector<Joint*>& joints,
     {
         if (frames[k].pointInTree)
         {
-            m_joints.push_back({std::get_if<RevoluteJoint>(&joints[k]->data), &frames[k], {}, {}});
+            m_joints.push_back(
+                {std::get_if<RevoluteJoint>(&joints[k]->data), &frames[k], {}, {}, {}});
         }
     }
     if (m_joints.empty())
@@ -482,6 +475,7 @@ void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBia
         m_factored = m_factored && at.rA == j.rA && at.rB == j.rB;
         j.rA = at.rA;
         j.rB = at.rB;
+        j.d = at.d;
         if (useBias)
         {
             RowBodies moved =
@@ -507,8 +501,7 @@ void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBia
         {
             const RowBodies moved =
                 LoadRowBodies(m_moved.data(), f.indexA, f.indexB, f.mA, f.iA, f.mB, f.iB);
-            const SoftAnchors at = AnchorsNow(f, bodies.deltas[f.indexA], bodies.deltas[f.indexB]);
-            target = soft.massScale * target + soft.biasScale * at.d +
+            target = soft.massScale * target + soft.biasScale * j.d +
                      soft.impulseScale * AnchorVelocity(j.rA, j.rB, moved);
         }
         // The joint rows of the system read −J·Δv = −rhs, and rhs = −target.

@@ -91,6 +91,7 @@ class SoftJointTree
         RevoluteJoint* joint = nullptr;
         const SoftJointFrame* frame = nullptr;
         Vec2 rA, rB; ///< anchors now (m)
+        Vec2 d;      ///< anchor B − anchor A now: the point rows' C (m)
     };
 
     /// The edge from a node to its parent: −J of the joint on the body = sign·[I | lever].
