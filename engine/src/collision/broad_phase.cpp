@@ -7,10 +7,9 @@
 namespace meff::detail
 {
 
-std::int32_t BroadPhase::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers,
-                                     Real extent)
+std::int32_t BroadPhase::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers)
 {
-    const std::int32_t proxyId = m_tree.CreateProxy(aabb, userData, layers, extent);
+    const std::int32_t proxyId = m_tree.CreateProxy(aabb, userData, layers);
     ++m_proxyCount;
     BufferMove(proxyId);
     return proxyId;

@@ -45,10 +45,8 @@ class DynamicTree
     /// Box2D 2.4.1's rule with this margin.
     explicit DynamicTree(Real aabbMargin) : DynamicTree(FatBoxRule{aabbMargin}) {}
 
-    /// Inserts a leaf with the box fattened by the margin; returns its proxy id. `extent`: the
-    /// shape's half-diagonal, for a rule that limits the stretch with it (FatBoxRule).
-    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {},
-                             Real extent = 0);
+    /// Inserts a leaf with the box fattened by the margin; returns its proxy id.
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
     void DestroyProxy(std::int32_t proxyId);
     /// Re-inserts the leaf when `aabb` leaves the fat box (or the fat box is far too large);
     /// returns true when it did.
@@ -57,6 +55,23 @@ class DynamicTree
     /// leaves them (or they are far too large for the new rule).
     void SetFatBoxRule(FatBoxRule rule) { m_rule = rule; }
     const FatBoxRule& GetFatBoxRule() const { return m_rule; }
+    /// How MoveProxy updates the tree from now on (TreeUpdate). Boxes grown under the old
+    /// update are built first, so that a re-insertion's rotations never meet one.
+    void SetTreeUpdate(TreeUpdate update)
+    {
+        Rebuild();
+        m_update = update;
+    }
+    /// TreeUpdate::EnlargeAndRebuild: builds again the part of the tree whose boxes grew since
+    /// the last call (every internal node above a moved leaf), keeping the untouched subtrees
+    /// whole; does nothing when no box grew. Node ids of leaves (proxy ids) are kept.
+    void Rebuild()
+    {
+        if (m_grown)
+        {
+            RebuildGrown();
+        }
+    }
 
     std::int32_t GetUserData(std::int32_t proxyId) const { return m_nodes[proxyId].userData; }
     const AABB& GetFatAABB(std::int32_t proxyId) const { return m_nodes[proxyId].aabb; }
@@ -99,6 +114,8 @@ class DynamicTree
     void BoxCast(const RayCastInput& input, Vec2 halfExtents, Callback&& callback) const;
 
     int GetHeight() const;
+    /// Internal nodes whose boxes grew in place and await Rebuild; for tests.
+    int CountEnlarged() const;
     /// Checks parent links, heights, boxes and layer unions of the whole tree; for tests.
     bool Validate() const;
 
@@ -115,7 +132,9 @@ class DynamicTree
         std::uint16_t maskBits = 0;
         bool bitsDecide = true; ///< leaves: ProxyLayers::bitsDecide
         bool moved = false;
-        Real extent = 0; ///< leaves: the shape's half-diagonal (CreateProxy)
+        /// Internal nodes: the box may be larger than its children's union, grown in place
+        /// for a moved leaf below (TreeUpdate::EnlargeAndRebuild); Rebuild builds it again.
+        bool enlarged = false;
         bool IsLeaf() const { return child1 == kNullProxy; }
     };
 
@@ -130,12 +149,27 @@ class DynamicTree
     void InsertLeaf(std::int32_t leaf);
     void RemoveLeaf(std::int32_t leaf);
     std::int32_t Balance(std::int32_t index);
+    /// Grows the leaf's ancestors to hold its box, marking them enlarged.
+    void EnlargeAncestors(std::int32_t leaf);
+    void RebuildGrown();
+    /// A Rebuild unit: a leaf or a kept subtree, with its box's centre.
+    struct BuildUnit
+    {
+        std::int32_t node;
+        Vec2 centre;
+    };
+    /// Builds a subtree over m_units[begin, end); returns its root.
+    std::int32_t BuildRange(int begin, int end, int depth);
 
     std::vector<Node> m_nodes;
     std::int32_t m_root = kNullProxy;
     std::int32_t m_freeList = kNullProxy;
     std::int32_t m_nodeCount = 0;
     FatBoxRule m_rule;
+    TreeUpdate m_update = TreeUpdate::Reinsert;
+    bool m_grown = false;           ///< some box grew in place since the last Rebuild
+    std::vector<BuildUnit> m_units; ///< Rebuild's scratch, kept for its capacity
+    std::vector<std::int32_t> m_unitStack;
 };
 
 /// The explicit stack of one walk of a tree (Query, RayCast, BoxCast), local to the walk so that
@@ -180,12 +214,14 @@ class BroadPhase
     /// Box2D 2.4.1's rule with this margin.
     explicit BroadPhase(Real aabbMargin) : m_tree(FatBoxRule{aabbMargin}) {}
 
-    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {},
-                             Real extent = 0);
+    std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
     void DestroyProxy(std::int32_t proxyId);
     void MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
     void SetFatBoxRule(FatBoxRule rule) { m_tree.SetFatBoxRule(rule); }
     const FatBoxRule& GetFatBoxRule() const { return m_tree.GetFatBoxRule(); }
+    void SetTreeUpdate(TreeUpdate update) { m_tree.SetTreeUpdate(update); }
+    /// DynamicTree::Rebuild; before the pairs are looked for, so the queries walk a built tree.
+    void RebuildTree() { m_tree.Rebuild(); }
     /// Makes the proxy report its pairs again at the next UpdatePairs.
     void TouchProxy(std::int32_t proxyId);
 

@@ -130,6 +130,7 @@ template <typename AddPair>
 void BroadPhase::UpdatePairs(AddPair&& addPair)
 {
     m_pairBuffer.clear();
+    m_tree.Rebuild(); // TreeUpdate::EnlargeAndRebuild: the queries walk a built tree
 
     // Query the tree with the fat box of every proxy that moved, so that pairs that may touch
     // soon are not missed (FindPairs: the same queries). When both proxies of a pair moved,

@@ -11,24 +11,35 @@ namespace meff::detail
 
 /// How a proxy's fat box is made from its shape's box (its back end chooses:
 /// Solver::Collision): the box grown by `margin` on every side, then stretched by
-/// `displacementMultiplier` times the step's displacement on the side the shape is heading to —
-/// with `stretchLimit` > 0, by at most that fraction of the shape's extent (the half-diagonal of
-/// its own box) in x and in y. A larger box is kept longer as its shape moves (fewer
-/// re-insertions and pair searches) but overlaps more boxes (more candidate pairs, each one a
-/// contact the narrow phase updates every step). Box2D 2.4.1: a 0.1 m margin and a fourfold,
-/// unlimited stretch.
+/// `displacementMultiplier` times the step's displacement on the side the shape is heading to.
+/// A larger box is kept longer as its shape moves (fewer tree updates and pair searches) but
+/// overlaps more boxes (more candidate pairs, each one a contact the narrow phase walks every
+/// step). Box2D 2.4.1: a 0.1 m margin and a fourfold stretch.
 struct FatBoxRule
 {
     Real margin = Real(0.1);         ///< m
-    Real displacementMultiplier = 4; ///< Box2D's b2_aabbMultiplier
-    Real stretchLimit = 0;           ///< of the extent; 0: no limit
+    Real displacementMultiplier = 4; ///< Box2D's b2_aabbMultiplier; 0: no stretch
     friend bool operator==(const FatBoxRule&, const FatBoxRule&) = default;
+};
+
+/// How the broad phase's tree follows a proxy whose shape left its fat box.
+enum class TreeUpdate
+{
+    /// Box2D 2.4.1's: the leaf is removed and inserted again by the perimeter heuristic, with
+    /// rotations on the way up: the tree, and so the pairs' order, are Box2D's.
+    Reinsert,
+    /// The leaf takes its new box in place and its ancestors grow to hold it (a walk up, no
+    /// search); before the next pairs are found, the grown part of the tree is built again top
+    /// down, the untouched subtrees kept whole (DynamicTree::Rebuild). Cheaper where many
+    /// proxies move each step, and a built tree is tighter than one grown leaf by leaf.
+    EnlargeAndRebuild,
 };
 
 /// A back end's choices for the collision stages.
 struct CollisionPolicy
 {
     FatBoxRule fatBoxes;
+    TreeUpdate treeUpdate = TreeUpdate::Reinsert;
     /// A touching manifold is kept as it is, not computed again, while neither shape has moved
     /// by more than this (m) relative to the other since it was computed (Collide's recycling);
     /// 0: every touching manifold is computed every step, as Box2D 2.4.1 does.

@@ -64,6 +64,7 @@ std::int32_t DynamicTree::AllocateNode()
     node.maskBits = 0;
     node.bitsDecide = true;
     node.moved = false;
+    node.enlarged = false;
     ++m_nodeCount;
     return id;
 }
@@ -77,13 +78,15 @@ void DynamicTree::FreeNode(std::int32_t id)
     --m_nodeCount;
 }
 
-std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers,
-                                      Real extent)
+std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers)
 {
+    // Insertion rotates subtrees, which would leave a grown box under one that is not marked,
+    // where Rebuild would never reach it: the grown part is built first. Boxes grow only in
+    // MoveProxy, so outside a step (SetTransform) and at most once a step.
+    Rebuild();
     const std::int32_t proxyId = AllocateNode();
 
     Node& node = m_nodes[proxyId];
-    node.extent = extent;
     const Vec2 r(m_rule.margin, m_rule.margin);
     node.aabb.lowerBound = aabb.lowerBound - r;
     node.aabb.upperBound = aabb.upperBound + r;
@@ -100,6 +103,7 @@ std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, P
 
 void DynamicTree::DestroyProxy(std::int32_t proxyId)
 {
+    Rebuild(); // as in CreateProxy: removal rotates subtrees too
     RemoveLeaf(proxyId);
     FreeNode(proxyId);
 }
@@ -113,13 +117,7 @@ bool DynamicTree::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displac
     fat.lowerBound = aabb.lowerBound - r;
     fat.upperBound = aabb.upperBound + r;
 
-    Vec2 d = m_rule.displacementMultiplier * displacement;
-    if (m_rule.stretchLimit > 0)
-    {
-        // Box2D's rule has no limit, and skips this so that its boxes round as Box2D's.
-        const Real limit = m_rule.stretchLimit * m_nodes[proxyId].extent;
-        d = Max(Min(d, Vec2(limit, limit)), Vec2(-limit, -limit));
-    }
+    const Vec2 d = m_rule.displacementMultiplier * displacement;
     if (d.x < Real(0))
     {
         fat.lowerBound.x += d.x;
@@ -152,9 +150,17 @@ bool DynamicTree::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displac
         }
     }
 
-    RemoveLeaf(proxyId);
-    m_nodes[proxyId].aabb = fat;
-    InsertLeaf(proxyId);
+    if (m_update == TreeUpdate::EnlargeAndRebuild)
+    {
+        m_nodes[proxyId].aabb = fat;
+        EnlargeAncestors(proxyId);
+    }
+    else
+    {
+        RemoveLeaf(proxyId);
+        m_nodes[proxyId].aabb = fat;
+        InsertLeaf(proxyId);
+    }
     m_nodes[proxyId].moved = true;
     return true;
 }
@@ -472,8 +478,11 @@ bool DynamicTree::Validate() const
         {
             return false;
         }
+        // A box grown in place (TreeUpdate::EnlargeAndRebuild) need only hold its children's.
         const AABB box = Combine(c1.aabb, c2.aabb);
-        if (box.lowerBound != node.aabb.lowerBound || box.upperBound != node.aabb.upperBound)
+        const bool exact =
+            box.lowerBound == node.aabb.lowerBound && box.upperBound == node.aabb.upperBound;
+        if (!exact && !(node.enlarged && node.aabb.Contains(box)))
         {
             return false;
         }

@@ -716,10 +716,8 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
     shape.reach = shape.ComputeReach();
     // A shape in a positive group pairs with its group whatever the bits (FiltersAllow).
     const Filter& filter = def.filter;
-    const AABB own = shape.ComputeAABB(Transform{});
     shape.proxyId = world.broadPhase.CreateProxy(
-        shape.aabb, index, {filter.categoryBits, filter.maskBits, filter.groupIndex <= 0},
-        Real(0.5) * (own.upperBound - own.lowerBound).Length());
+        shape.aabb, index, {filter.categoryBits, filter.maskBits, filter.groupIndex <= 0});
 
     const ShapeId id{index, generation};
     body.shapes.insert(body.shapes.begin(), index); // newest first, as Box2D's fixture list
@@ -1500,6 +1498,7 @@ void World::SetSolverSettings(const SolverSettings& settings)
     // keep manifolds (collision/collision_policy.h).
     world.collision = world.solvers.For(settings.kind).Collision(world.tolerances);
     world.broadPhase.SetFatBoxRule(world.collision.fatBoxes);
+    world.broadPhase.SetTreeUpdate(world.collision.treeUpdate);
 }
 Vec2 World::GetGravity() const
 {

@@ -29,7 +29,8 @@ std::unique_ptr<Solver> MakeSolver(SolverKind kind)
 CollisionPolicy Box2DCollision(const Tolerances& tolerances)
 {
     CollisionPolicy policy;
-    policy.fatBoxes = {tolerances.aabbMargin, 4, 0};
+    policy.fatBoxes = {tolerances.aabbMargin, 4};
+    policy.treeUpdate = TreeUpdate::Reinsert;
     policy.recycleDistance = 0;
     return policy;
 }
@@ -37,15 +38,9 @@ CollisionPolicy Box2DCollision(const Tolerances& tolerances)
 CollisionPolicy ThroughputCollision(const Tolerances& tolerances)
 {
     CollisionPolicy policy;
-    policy.fatBoxes = {Real(0.5) * tolerances.aabbMargin, 2, 1};
+    policy.fatBoxes = {Real(0.5) * tolerances.aabbMargin, 0};
+    policy.treeUpdate = TreeUpdate::EnlargeAndRebuild;
     policy.recycleDistance = tolerances.linearSlop;
-    return policy;
-}
-
-CollisionPolicy SoftStepCollision(const Tolerances& tolerances)
-{
-    CollisionPolicy policy = Box2DCollision(tolerances);
-    policy.recycleDistance = ThroughputCollision(tolerances).recycleDistance;
     return policy;
 }
 

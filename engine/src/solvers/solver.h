@@ -69,7 +69,7 @@ class Solver
     /// moved, which the broad-phase synchronization reads.
     virtual void Step(SolverWorld& world, const StepContext& step) = 0;
     /// How the shared broad and narrow phases should work for this back end (the fat boxes,
-    /// manifold recycling): Box2DCollision, ThroughputCollision or SoftStepCollision.
+    /// manifold recycling, the tree update): Box2DCollision or ThroughputCollision.
     virtual CollisionPolicy Collision(const Tolerances& tolerances) const = 0;
 };
 
@@ -78,22 +78,16 @@ class Solver
 /// for bit Box2D's.
 CollisionPolicy Box2DCollision(const Tolerances& tolerances);
 
-/// Collision for throughput (the colour back end), nearer Box2D v3's: fat boxes
-/// with half of tolerances.aabbMargin (v3's 5 cm at the default 10 cm), stretched twice the
-/// step's displacement but by at most the shape's half-diagonal (a fast small body's box no
-/// longer sweeps through a crowd), and touching manifolds kept while their shapes move less than
-/// the linear slop relative to each other (Collide). Measured with callgrind against Box2D's
-/// rule (README, Performance): fewer candidate pairs on tumbler and smash, a third of the
-/// narrow phase on large_pyramid. Which contacts exist, and so their order, changes; a kept
-/// manifold is within the slop of the exact one.
+/// Collision for throughput (the colour and soft-step back ends), as Box2D v3's: fat boxes
+/// with half of tolerances.aabbMargin (v3's 5 cm at the default 10 cm) and no stretch along the
+/// motion; the tree grown in place and its grown part built again each step instead of leaves
+/// re-inserted (TreeUpdate::EnlargeAndRebuild); touching manifolds kept while their shapes move
+/// less than the linear slop relative to each other (Collide). Against Box2D's rule: fewer
+/// candidate pairs, so fewer contacts to walk and solve (spinner 127,000 → 34,000 by the soft
+/// step), and cheap tree updates for the proxies that leave their smaller boxes more often
+/// (README, Performance). Which contacts exist, and so their order, changes; a kept manifold is
+/// within the slop of the exact one.
 CollisionPolicy ThroughputCollision(const Tolerances& tolerances);
-
-/// The soft step's: Box2D's fat boxes (so Box2D's contacts, in Box2D's order) with the
-/// throughput rule's kept manifolds. The throughput rule's smaller boxes moved pyramid20's
-/// settled displacement from 2.7 cm to 3.5–3.7 cm when they were tried; kept manifolds alone
-/// moved the soft-step target figures by at most 2 µm (tests/extreme/test_soft_step_targets.cpp)
-/// and cut the narrow phase to a fifth on the pyramids (README, Performance).
-CollisionPolicy SoftStepCollision(const Tolerances& tolerances);
 
 /// The world's back ends, each made when first used (a world pays for the one it runs).
 /// Copying a world (a snapshot) does not copy them: they hold only memory that every step

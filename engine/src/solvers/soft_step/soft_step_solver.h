@@ -37,10 +37,10 @@ class SoftStepSolver final : public Solver
 {
   public:
     void Step(SolverWorld& world, const StepContext& step) override;
-    /// Box2D's fat boxes with the throughput rule's kept manifolds (SoftStepCollision).
+    /// Colour's (ThroughputCollision).
     CollisionPolicy Collision(const Tolerances& tolerances) const override
     {
-        return SoftStepCollision(tolerances);
+        return ThroughputCollision(tolerances);
     }
 
   private:

@@ -1,0 +1,138 @@
+// The broad phase's tree grown in place and built again (TreeUpdate::EnlargeAndRebuild), for the
+// back ends that need not reproduce Box2D 2.4.1's tree.
+//
+// Re-inserting a moved leaf (Box2D 2.4.1) costs a removal, a descent by the perimeter heuristic
+// and rotations on the way up, for each of the thousands of proxies that leave their fat boxes
+// every step when a crowd moves (spinner, washer, the tumbler), and a tree grown leaf by leaf in
+// the order bodies happen to move is looser than one built over all of them at once: queries
+// visit more nodes. Here a moved leaf only grows its ancestors' boxes, and once per step, before
+// the pairs are looked for, the grown part — every internal node above a moved leaf — is built
+// again top down over its leaves and the untouched subtrees below it, splitting each set at the
+// middle of its box centres' extent along the longer axis. The build is serial and in a fixed
+// order, so the tree, and with it the pairs' order, is the same for any thread count.
+#include "collision/broad_phase.h"
+
+#include <algorithm>
+
+namespace meff::detail
+{
+
+namespace
+{
+
+/// Splits deeper than this are made at the median instead of the middle of the extent: a
+/// middle split of clustered centres can peel off one unit at a time, and the median bounds the
+/// rest of the build's depth by log2 of the units.
+constexpr int kMaxMiddleSplitDepth = 32;
+
+} // namespace
+
+void DynamicTree::EnlargeAncestors(std::int32_t leaf)
+{
+    const AABB box = m_nodes[leaf].aabb;
+    std::int32_t index = m_nodes[leaf].parentOrNext;
+    while (index != kNullProxy)
+    {
+        Node& node = m_nodes[index];
+        if (node.enlarged && node.aabb.Contains(box))
+        {
+            // Marked by an earlier leaf this step: its ancestors are marked and hold its box.
+            break;
+        }
+        node.aabb = Combine(node.aabb, box);
+        node.enlarged = true;
+        index = node.parentOrNext;
+    }
+    m_grown = true;
+}
+
+void DynamicTree::RebuildGrown()
+{
+    m_grown = false; // a box grew, so the tree has a leaf and a root
+
+    // The units: leaves and internal nodes not marked (their subtrees are kept whole), found
+    // from the root through the marked nodes, which are freed. The marked nodes form a binary
+    // tree whose leaves are the units, so the build allocates exactly the nodes freed here and
+    // the pool never grows (no Node reference is invalidated below).
+    m_units.clear();
+    m_unitStack.clear();
+    m_unitStack.push_back(m_root);
+    while (!m_unitStack.empty())
+    {
+        const std::int32_t index = m_unitStack.back();
+        m_unitStack.pop_back();
+        Node& node = m_nodes[index];
+        if (node.IsLeaf() || !node.enlarged)
+        {
+            m_units.push_back({index, node.aabb.GetCenter()});
+            continue;
+        }
+        m_unitStack.push_back(node.child2);
+        m_unitStack.push_back(node.child1);
+        node.enlarged = false;
+        FreeNode(index);
+    }
+    m_root = BuildRange(0, static_cast<int>(m_units.size()), 0);
+    m_nodes[m_root].parentOrNext = kNullProxy;
+}
+
+int DynamicTree::CountEnlarged() const
+{
+    return static_cast<int>(std::count_if(m_nodes.begin(), m_nodes.end(),
+                                          [](const Node& node)
+                                          { return node.height > 0 && node.enlarged; }));
+}
+
+std::int32_t DynamicTree::BuildRange(int begin, int end, int depth)
+{
+    if (end - begin == 1)
+    {
+        return m_units[static_cast<std::size_t>(begin)].node;
+    }
+
+    const auto first = m_units.begin() + begin;
+    const auto last = m_units.begin() + end;
+    Vec2 lower = first->centre;
+    Vec2 upper = first->centre;
+    for (auto unit = first + 1; unit != last; ++unit)
+    {
+        lower = Min(lower, unit->centre);
+        upper = Max(upper, unit->centre);
+    }
+    const Vec2 extent = upper - lower;
+    const bool alongX = extent.x >= extent.y;
+    const auto key = [alongX](const BuildUnit& unit)
+    { return alongX ? unit.centre.x : unit.centre.y; };
+
+    auto middle = last;
+    if (depth < kMaxMiddleSplitDepth)
+    {
+        const Real split = Real(0.5) * (alongX ? lower.x + upper.x : lower.y + upper.y);
+        middle = std::partition(first, last,
+                                [&key, split](const BuildUnit& unit) { return key(unit) < split; });
+    }
+    if (middle == first || middle == last)
+    {
+        // Centres all alike along the axis (or too deep): half the units on each side.
+        middle = first + (end - begin) / 2;
+        std::nth_element(first, middle, last,
+                         [&key](const BuildUnit& a, const BuildUnit& b)
+                         { return key(a) < key(b); });
+    }
+
+    const int split = static_cast<int>(middle - m_units.begin());
+    const std::int32_t child1 = BuildRange(begin, split, depth + 1);
+    const std::int32_t child2 = BuildRange(split, end, depth + 1);
+    const std::int32_t index = AllocateNode();
+    Node& node = m_nodes[index];
+    node.child1 = child1;
+    node.child2 = child2;
+    node.aabb = Combine(m_nodes[child1].aabb, m_nodes[child2].aabb);
+    node.height = 1 + std::max(m_nodes[child1].height, m_nodes[child2].height);
+    UniteLayers(node);
+    m_nodes[child1].parentOrNext = index;
+    m_nodes[child2].parentOrNext = index;
+    return index;
+}
+
+} // namespace meff::detail

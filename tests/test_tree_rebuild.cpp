@@ -1,0 +1,315 @@
+// Tests of the broad phase's tree grown in place and built again (TreeUpdate::EnlargeAndRebuild,
+// engine/src/collision/tree_rebuild.cpp): the colour and soft-step back ends' tree update.
+#include "collision/broad_phase.h"
+#include "test_random.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+using meff::AABB;
+using meff::Real;
+using meff::Vec2;
+using meff::detail::BroadPhase;
+using meff::detail::DynamicTree;
+using meff::detail::FatBoxRule;
+using meff::detail::ProxyLayers;
+using meff::detail::TreeUpdate;
+using meff::test::Random;
+
+namespace
+{
+
+/// The throughput rule's margin, no stretch: every move past 5 cm leaves the fat box.
+const FatBoxRule kRule{Real(0.05), 0};
+
+AABB Box(Vec2 centre, Vec2 halfExtents)
+{
+    return {centre - halfExtents, centre + halfExtents};
+}
+
+AABB RandomBox(Random& rng, float worldHalfSize, float maxHalfExtent)
+{
+    const Vec2 c(rng.Uniform(-worldHalfSize, worldHalfSize),
+                 rng.Uniform(-worldHalfSize, worldHalfSize));
+    return Box(c, {rng.Uniform(0.05f, maxHalfExtent), rng.Uniform(0.05f, maxHalfExtent)});
+}
+
+AABB Translated(const AABB& box, Vec2 d)
+{
+    return {box.lowerBound + d, box.upperBound + d};
+}
+
+ProxyLayers RandomLayers(Random& rng)
+{
+    ProxyLayers layers;
+    layers.categoryBits = static_cast<std::uint16_t>(1u << static_cast<unsigned>(rng.Index(4)));
+    layers.maskBits = static_cast<std::uint16_t>(rng.Index(16));
+    return layers;
+}
+
+DynamicTree RebuildingTree()
+{
+    DynamicTree tree(kRule);
+    tree.SetTreeUpdate(TreeUpdate::EnlargeAndRebuild);
+    return tree;
+}
+
+/// The query's leaves, sorted, against every live leaf's fat box tested one by one.
+void CheckQueryAgainstBruteForce(const DynamicTree& tree, const std::map<std::int32_t, AABB>& live,
+                                 const AABB& query)
+{
+    std::vector<std::int32_t> found;
+    tree.Query(query,
+               [&found](std::int32_t id)
+               {
+                   found.push_back(id);
+                   return true;
+               });
+    std::vector<std::int32_t> expected;
+    for (const auto& [id, box] : live)
+    {
+        if (meff::TestOverlap(tree.GetFatAABB(id), query))
+        {
+            expected.push_back(id);
+        }
+    }
+    std::sort(found.begin(), found.end());
+    CHECK(found == expected);
+}
+
+} // namespace
+
+TEST_CASE("Tree rebuild: random creates, moves, destroys and rebuilds keep the tree valid and "
+          "its queries exact",
+          "[broad_phase][tree_rebuild]")
+{
+    for (std::uint64_t seed = 1; seed <= 4; ++seed)
+    {
+        Random rng(seed);
+        DynamicTree tree = RebuildingTree();
+        std::map<std::int32_t, AABB> live; // proxy id -> tight box
+        std::map<std::int32_t, int> user;  // proxy id -> user data
+        int rebuilds = 0;
+        for (int op = 0; op < 3000; ++op)
+        {
+            INFO("seed " << seed << " op " << op);
+            const int kind = live.size() < 20 ? 0 : rng.Index(20);
+            if (kind <= 4)
+            {
+                const AABB box = RandomBox(rng, 50, 3);
+                const std::int32_t id = tree.CreateProxy(box, op, RandomLayers(rng));
+                REQUIRE(live.count(id) == 0);
+                live[id] = box;
+                user[id] = op;
+            }
+            else if (kind <= 15)
+            {
+                auto it = std::next(live.begin(), rng.Index(static_cast<int>(live.size())));
+                const float scale = rng.Index(4) == 0 ? 5.0f : 0.3f;
+                const Vec2 d(rng.Uniform(-scale, scale), rng.Uniform(-scale, scale));
+                it->second = Translated(it->second, d);
+                tree.MoveProxy(it->first, it->second, d);
+                REQUIRE(tree.GetFatAABB(it->first).Contains(it->second));
+            }
+            else if (kind <= 17)
+            {
+                auto it = std::next(live.begin(), rng.Index(static_cast<int>(live.size())));
+                tree.DestroyProxy(it->first);
+                user.erase(it->first);
+                live.erase(it);
+            }
+            else
+            {
+                // Rebuild changes internal nodes only: every leaf keeps its id, user data and
+                // fat box, and no box is left grown.
+                std::map<std::int32_t, AABB> fat;
+                for (const auto& [id, box] : live)
+                {
+                    fat[id] = tree.GetFatAABB(id);
+                }
+                tree.Rebuild();
+                ++rebuilds;
+                CHECK(tree.CountEnlarged() == 0);
+                for (const auto& [id, box] : fat)
+                {
+                    CHECK(tree.GetUserData(id) == user[id]);
+                    CHECK(tree.GetFatAABB(id).lowerBound == box.lowerBound);
+                    CHECK(tree.GetFatAABB(id).upperBound == box.upperBound);
+                }
+            }
+            REQUIRE(tree.Validate());
+            if (op % 50 == 0)
+            {
+                for (int q = 0; q < 10; ++q)
+                {
+                    CheckQueryAgainstBruteForce(tree, live, RandomBox(rng, 55, 8));
+                }
+            }
+        }
+        CHECK(rebuilds > 100); // the rebuilds were interleaved with everything else
+        while (!live.empty())
+        {
+            tree.DestroyProxy(live.begin()->first);
+            live.erase(live.begin());
+            REQUIRE(tree.Validate());
+        }
+        CHECK(tree.GetHeight() == 0);
+    }
+}
+
+TEST_CASE("Tree rebuild: moves grow boxes in place until the rebuild; untouched subtrees are kept",
+          "[broad_phase][tree_rebuild]")
+{
+    Random rng(11);
+    DynamicTree tree = RebuildingTree();
+    std::map<std::int32_t, AABB> live;
+    for (int i = 0; i < 400; ++i)
+    {
+        const AABB box = RandomBox(rng, 40, 1);
+        live[tree.CreateProxy(box, i)] = box;
+    }
+    tree.Rebuild(); // nothing grew: a tree built by insertion stays as it is
+    REQUIRE(tree.CountEnlarged() == 0);
+    const int insertedHeight = tree.GetHeight();
+
+    // One leaf moves far: its ancestors, and only they, are marked — at most the tree's height.
+    const std::int32_t far = live.begin()->first;
+    live[far] = Translated(live[far], {60, 60});
+    tree.MoveProxy(far, live[far], {0, 0});
+    const int marked = tree.CountEnlarged();
+    CHECK(marked >= 1);
+    CHECK(marked <= insertedHeight);
+    REQUIRE(tree.Validate()); // grown boxes hold their children
+    for (int q = 0; q < 50; ++q)
+    {
+        CheckQueryAgainstBruteForce(tree, live, RandomBox(rng, 45, 6));
+    }
+    CheckQueryAgainstBruteForce(tree, live, tree.GetFatAABB(far));
+
+    tree.Rebuild();
+    CHECK(tree.CountEnlarged() == 0);
+    REQUIRE(tree.Validate());
+    CheckQueryAgainstBruteForce(tree, live, tree.GetFatAABB(far));
+}
+
+TEST_CASE("Tree rebuild: built trees stay shallow, clustered boxes included",
+          "[broad_phase][tree_rebuild]")
+{
+    // Splitting at the middle of the centres' extent halves random boxes: the height is near
+    // log2(n). Centres that double in spacing make the middle split peel off one box at a time;
+    // beyond 32 levels the build splits at the median, so the height stays at most
+    // 32 + ceil(log2 n) (the bound in tree_rebuild.cpp), where peeling alone would make it n − 1.
+    const auto moveAllAndRebuild =
+        [](DynamicTree& tree, const std::vector<std::int32_t>& ids, const std::vector<AABB>& boxes)
+    {
+        for (std::size_t i = 0; i < ids.size(); ++i)
+        {
+            const AABB moved = Translated(boxes[i], {0, 1});
+            tree.MoveProxy(ids[i], moved, {0, 1});
+        }
+        tree.Rebuild();
+        REQUIRE(tree.Validate());
+        REQUIRE(tree.CountEnlarged() == 0);
+    };
+
+    SECTION("random boxes: within 2 log2(n) + 2")
+    {
+        Random rng(5);
+        DynamicTree tree = RebuildingTree();
+        std::vector<std::int32_t> ids;
+        std::vector<AABB> boxes;
+        for (int i = 0; i < 2000; ++i)
+        {
+            boxes.push_back(RandomBox(rng, 100, 1));
+            ids.push_back(tree.CreateProxy(boxes.back(), i));
+        }
+        moveAllAndRebuild(tree, ids, boxes);
+        CHECK(tree.GetHeight() <= 2 * 11 + 2); // log2(2000) < 11
+    }
+
+    SECTION("centres spaced 1.5^i apart: at most 32 + ceil(log2 n)")
+    {
+        DynamicTree tree = RebuildingTree();
+        std::vector<std::int32_t> ids;
+        std::vector<AABB> boxes;
+        for (int i = 0; i < 200; ++i)
+        {
+            boxes.push_back(Box({std::pow(Real(1.5), Real(i % 60)), Real(i / 60)}, {0.1f, 0.1f}));
+            ids.push_back(tree.CreateProxy(boxes.back(), i));
+        }
+        moveAllAndRebuild(tree, ids, boxes);
+        CHECK(tree.GetHeight() <= 32 + 8); // log2(200) < 8
+    }
+
+    SECTION("one thousand boxes at one place: the median split, height ceil(log2 n)")
+    {
+        DynamicTree tree = RebuildingTree();
+        std::vector<std::int32_t> ids;
+        std::vector<AABB> boxes;
+        for (int i = 0; i < 1000; ++i)
+        {
+            boxes.push_back(Box({3, 4}, {0.5f, 0.5f}));
+            ids.push_back(tree.CreateProxy(boxes.back(), i));
+        }
+        moveAllAndRebuild(tree, ids, boxes);
+        CHECK(tree.GetHeight() == 10);
+    }
+}
+
+TEST_CASE("Tree rebuild: the broad phase reports every new overlapping pair once, as with "
+          "re-insertion",
+          "[broad_phase][tree_rebuild]")
+{
+    // The same moves through two broad phases, one re-inserting (Box2D's) and one growing and
+    // rebuilding: the fat boxes are the same rule's, so the pairs found must be the same set
+    // (their order follows each tree's shape). UpdatePairs builds the grown tree first.
+    Random rng(3);
+    BroadPhase reinserting(kRule);
+    BroadPhase rebuilding(kRule);
+    rebuilding.SetTreeUpdate(TreeUpdate::EnlargeAndRebuild);
+    std::vector<AABB> boxes;
+    std::vector<std::int32_t> ids; // the same in both: the same pool, the same insertions
+    for (int i = 0; i < 300; ++i)
+    {
+        boxes.push_back(RandomBox(rng, 25, 1.5f));
+        ids.push_back(reinserting.CreateProxy(boxes.back(), i));
+        REQUIRE(rebuilding.CreateProxy(boxes.back(), i) == ids.back());
+    }
+    const auto pairs = [](BroadPhase& bp)
+    {
+        std::vector<std::pair<std::int32_t, std::int32_t>> found;
+        bp.UpdatePairs([&found](std::int32_t a, std::int32_t b)
+                       { found.emplace_back(std::min(a, b), std::max(a, b)); });
+        std::set<std::pair<std::int32_t, std::int32_t>> once(found.begin(), found.end());
+        CHECK(once.size() == found.size()); // no pair twice
+        return once;
+    };
+    CHECK(pairs(reinserting) == pairs(rebuilding));
+    for (int round = 0; round < 30; ++round)
+    {
+        INFO("round " << round);
+        std::set<std::size_t> picked; // each moved once: a proxy buffered twice is queried twice
+        while (picked.size() < 40)
+        {
+            picked.insert(static_cast<std::size_t>(rng.Index(300)));
+        }
+        for (const std::size_t i : picked)
+        {
+            const Vec2 d(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
+            boxes[i] = Translated(boxes[i], d);
+            reinserting.MoveProxy(ids[i], boxes[i], d);
+            rebuilding.MoveProxy(ids[i], boxes[i], d);
+        }
+        const auto expected = pairs(reinserting);
+        CHECK(!expected.empty());
+        CHECK(pairs(rebuilding) == expected);
+        REQUIRE(rebuilding.GetTree().Validate());
+    }
+}
