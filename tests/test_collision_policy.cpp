@@ -110,6 +110,35 @@ TEST_CASE("Collision policy: Box2D's back end keeps Box2D 2.4.1's rule, colour a
     CHECK(CountOverlapping(world, probe) == 0);
 }
 
+TEST_CASE("Collision policy: a moved shape's box covers its whole motion in Box2D's back end and "
+          "wherever continuous collision is on, its end pose alone otherwise",
+          "[collision_policy]")
+{
+    // A 1 m box at the origin moving at 30 m/s: one 60 Hz step takes it from [-0.5, 0.5] to
+    // [0, 1] in x. A probe at x = -0.3 lies in the start pose's box only: the swept box (and
+    // Box2D's, stretched ahead besides) holds it; the end pose's box, 5 cm fatter, does not.
+    const AABB probe = Box({Real(-0.3), 0}, {Real(0.01), Real(0.01)});
+    for (const SolverKind kind : {SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep})
+    {
+        for (const bool continuous : {false, true})
+        {
+            WorldDef def;
+            def.solver.kind = kind;
+            def.gravity = {0, 0};
+            def.continuous = continuous;
+            World world{def};
+            const BodyId body =
+                AddBox(world, BodyType::Dynamic, {0, 0}, 0, Real(0.5), Real(0.5), Material(1, 0));
+            world.SetLinearVelocity(body, {30, 0});
+            world.Step(Real(1) / 60);
+            INFO("back end " << static_cast<int>(kind) << ", continuous " << continuous);
+            REQUIRE(world.GetPosition(body).x == Approx(0.5).margin(1e-6));
+            const bool swept = kind == SolverKind::Box2D || continuous;
+            CHECK(CountOverlapping(world, probe) == (swept ? 1 : 0));
+        }
+    }
+}
+
 TEST_CASE("Collision policy: under the throughput rule every pair whose shapes' boxes overlap "
           "has been found",
           "[collision_policy]")

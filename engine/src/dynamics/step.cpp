@@ -191,15 +191,27 @@ bool Moved(const Body& body)
     return xf0;
 }
 
-/// Sets the shape's box to cover its motion from xf0 to xf1 and returns that motion's
-/// displacement (the broad phase stretches the fat box along it: MoveProxy).
+/// Sets the shape's box to cover its motion from xf0 to xf1 (`swept`) or its end pose xf1
+/// alone, and returns that motion's displacement (the broad phase stretches the fat box along
+/// it: MoveProxy); unswept, the body origin's.
 [[gnu::always_inline]] inline Vec2 SweepShapeBox(Shape& shape, const Transform& xf0,
-                                                 const Transform& xf1)
+                                                 const Transform& xf1, bool swept)
 {
-    const AABB box0 = shape.ComputeAABB(xf0);
     const AABB box1 = shape.ComputeAABB(xf1);
+    if (!swept)
+    {
+        shape.aabb = box1;
+        return xf1.p - xf0.p;
+    }
+    const AABB box0 = shape.ComputeAABB(xf0);
     shape.aabb = Combine(box0, box1);
     return box1.GetCenter() - box0.GetCenter();
+}
+
+/// Whether the moved shapes' boxes cover their motion (CollisionPolicy::shapeBoxes).
+bool SweepsBoxes(const WorldState& world)
+{
+    return world.collision.shapeBoxes == ShapeBoxes::Swept || world.continuous;
 }
 
 /// The moved bodies, in body-list order.
@@ -224,8 +236,9 @@ void SynchronizeShapesOnThreads(WorldState& world)
     StepScratch& scratch = world.scratch;
     ListMovedBodies(world, scratch.movedBodies);
     scratch.displacements.resize(world.shapes.size());
+    const bool swept = SweepsBoxes(world);
     ForRanges(world.tasks, static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
-              [&world, &scratch](int begin, int end, int)
+              [&world, &scratch, swept](int begin, int end, int)
               {
                   for (int i = begin; i < end; ++i)
                   {
@@ -234,7 +247,7 @@ void SynchronizeShapesOnThreads(WorldState& world)
                       for (const std::int32_t s : body.shapes)
                       {
                           scratch.displacements[std::size_t(s)] =
-                              SweepShapeBox(world.shapes[s], xf0, body.xf);
+                              SweepShapeBox(world.shapes[s], xf0, body.xf, swept);
                       }
                   }
               });
@@ -272,10 +285,11 @@ void SynchronizeShapes(WorldState& world)
 void SynchronizeBodyShapes(WorldState& world, Body& body)
 {
     const Transform xf0 = StartPose(body);
+    const bool swept = SweepsBoxes(world);
     for (const std::int32_t s : body.shapes)
     {
         Shape& shape = world.shapes[s];
-        const Vec2 displacement = SweepShapeBox(shape, xf0, body.xf);
+        const Vec2 displacement = SweepShapeBox(shape, xf0, body.xf, swept);
         world.broadPhase.MoveProxy(shape.proxyId, shape.aabb, displacement);
     }
 }

@@ -30,6 +30,7 @@ CollisionPolicy Box2DCollision(const Tolerances& tolerances)
 {
     CollisionPolicy policy;
     policy.fatBoxes = {tolerances.aabbMargin, 4};
+    policy.shapeBoxes = ShapeBoxes::Swept;
     policy.treeUpdate = TreeUpdate::Reinsert;
     policy.recycleDistance = 0;
     return policy;
@@ -39,6 +40,7 @@ CollisionPolicy ThroughputCollision(const Tolerances& tolerances)
 {
     CollisionPolicy policy;
     policy.fatBoxes = {Real(0.5) * tolerances.aabbMargin, 0};
+    policy.shapeBoxes = ShapeBoxes::SweptForContinuous;
     policy.treeUpdate = TreeUpdate::EnlargeAndRebuild;
     policy.recycleDistance = tolerances.linearSlop;
     return policy;

@@ -80,13 +80,14 @@ CollisionPolicy Box2DCollision(const Tolerances& tolerances);
 
 /// Collision for throughput (the colour and soft-step back ends), as Box2D v3's: fat boxes
 /// with half of tolerances.aabbMargin (v3's 5 cm at the default 10 cm) and no stretch along the
-/// motion; the tree grown in place and its grown part built again each step instead of leaves
-/// re-inserted (TreeUpdate::EnlargeAndRebuild); touching manifolds kept while their shapes move
-/// less than the linear slop relative to each other (Collide). Against Box2D's rule: fewer
-/// candidate pairs, so fewer contacts to walk and solve (spinner 127,000 → 34,000 by the soft
-/// step), and cheap tree updates for the proxies that leave their smaller boxes more often
-/// (README, Performance). Which contacts exist, and so their order, changes; a kept manifold is
-/// within the slop of the exact one.
+/// motion, around the shape's end pose unless continuous collision needs its swept box; the tree
+/// grown in place and its grown part built again each step instead of leaves re-inserted
+/// (TreeUpdate::EnlargeAndRebuild); touching manifolds kept while their shapes move less than the
+/// linear slop relative to each other (Collide). Against Box2D's rule: fewer candidate pairs, so
+/// fewer contacts to walk and solve (spinner 127,000 → 34,000 by the soft step), and cheap tree
+/// updates for the proxies that leave their smaller boxes more often (README, Performance). Which
+/// contacts exist, and so their order, changes; a kept manifold is within the slop of the exact
+/// one.
 CollisionPolicy ThroughputCollision(const Tolerances& tolerances);
 
 /// The world's back ends, each made when first used (a world pays for the one it runs).
