@@ -1,9 +1,9 @@
 // The collision policy each back end chooses (engine/src/collision/collision_policy.h): the
-// Box2D back end keeps Box2D 2.4.1's fat boxes and recomputes every manifold (so does the soft
-// step, for now); colour uses smaller, less stretched boxes and keeps (recycles) touching
-// manifolds while the shapes barely move. These tests check the rules themselves, that the broad
-// phase still finds every pair that touches under the throughput rule, and that a kept manifold
-// stays within its bound of a freshly computed one.
+// Box2D back end keeps Box2D 2.4.1's fat boxes and recomputes every manifold; colour and the
+// soft step use smaller boxes, unstretched (and unswept without continuous collision), a tree
+// grown and rebuilt, and keep (recycle) touching manifolds while the shapes barely move. These
+// tests check the rules themselves, that the broad phase still finds every pair that touches under
+// the throughput rule, and that a kept manifold stays within its bound of a freshly computed one.
 #include "analytic_support.h"
 #include "collision/broad_phase.h"
 #include "dynamics/contact.h"

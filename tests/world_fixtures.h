@@ -42,9 +42,11 @@ inline World MakePile(int count, int columns, Real spacing, Real circleRestituti
 /// bar passes). The bars, turning in step, leave their fat boxes together every few steps: a
 /// hundred moved proxies, four batches of the colour and soft-step pair finding, whose pairs
 /// come and go in a cycle of a quarter turn.
-inline World MakePinwheels(SolverKind kind, bool spinning)
+inline World MakePinwheels(SolverKind kind, bool spinning,
+                           Real aabbMargin = Tolerances{}.aabbMargin)
 {
-    World world(WorldDef{.gravity = {0, 0}, .solver = {.kind = kind}});
+    World world(WorldDef{
+        .gravity = {0, 0}, .solver = {.kind = kind}, .tolerances = {.aabbMargin = aabbMargin}});
     const BodyId hubs = world.CreateBody({});
     const BodyId posts = world.CreateBody({});
     const Real reach = std::sqrt(Real(1.01)); // the bar's corner: hypot(1, 0.1)

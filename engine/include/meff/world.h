@@ -632,9 +632,10 @@ class World
 
     /// Every shape whose broad-phase box overlaps `box`, as Box2D 2.4.1's b2World::QueryAABB.
     /// The broad-phase box is the shape's bounding box fattened by the solver back end's margin
-    /// (Box2D's and the soft step's: Tolerances::aabbMargin; colour's: half of it) and
-    /// stretched ahead of fast motion, so shapes up to a margin away are found too: a cheap
-    /// candidate list. For the exact answer, test GetShapeAABB(shape) in the callback.
+    /// (Box2D's: Tolerances::aabbMargin, stretched ahead of fast motion; colour's and the soft
+    /// step's: half of it, around the end pose alone when continuous collision is off), so
+    /// shapes up to a margin away are found too: a cheap candidate list. For the exact answer,
+    /// test GetShapeAABB(shape) in the callback.
     void OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback callback) const;
     /// Every shape containing the point (its boundary included), by each shape's exact test:
     /// circles and polygons (skin not counted); segments contain nothing.
@@ -685,7 +686,8 @@ class World
     /// The shape's bounding box at its body's current transform, skin included (m).
     AABB GetShapeAABB(ShapeId id) const;
     /// The shape's box in the broad phase: the bounding box fattened by the back end's margin
-    /// and the predicted motion (OverlapAABB), as the broad phase last updated it (m).
+    /// (and, in Box2D's back end, stretched along the motion: OverlapAABB), as the broad phase
+    /// last updated it (m).
     /// OverlapAABB tests these.
     AABB GetShapeFatAABB(ShapeId id) const;
 

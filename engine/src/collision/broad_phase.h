@@ -4,7 +4,8 @@
 // It follows Box2D 2.4.1's b2BroadPhase/b2DynamicTree algorithms (node pool and free list,
 // surface-area insertion heuristic, AVL-style rotations, fat AABBs extended by the margin and
 // by 4x the displacement, moved flags, pair order) so that contacts are created in the same
-// order as in Box2D and the solver sweeps them in the same order.
+// order as in Box2D and the solver sweeps them in the same order — for Box2D's back end; the
+// others choose their own fat boxes and tree update (collision_policy.h).
 #pragma once
 
 #include "collision/collision_policy.h"
@@ -48,8 +49,8 @@ class DynamicTree
     /// Inserts a leaf with the box fattened by the margin; returns its proxy id.
     std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
     void DestroyProxy(std::int32_t proxyId);
-    /// Re-inserts the leaf when `aabb` leaves the fat box (or the fat box is far too large);
-    /// returns true when it did.
+    /// Gives the leaf a new fat box when `aabb` leaves it (or it is far too large), re-inserting
+    /// the leaf or growing its ancestors (TreeUpdate); returns true when it did.
     bool MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
     /// The rule for the boxes made from now on; boxes already made are kept until their shape
     /// leaves them (or they are far too large for the new rule).
@@ -175,7 +176,8 @@ class DynamicTree
 /// The explicit stack of one walk of a tree (Query, RayCast, BoxCast), local to the walk so that
 /// a callback may start another and the compiler can keep it out of memory it must reload: 256
 /// node ids in place — an AVL-balanced tree needs its height plus one, under 60 for any tree
-/// that fits in memory — and the heap beyond, last in first out across both.
+/// that fits in memory; a rebuilt one (TreeUpdate::EnlargeAndRebuild), whose kept subtrees add
+/// their heights, may need more — and the heap beyond, last in first out across both.
 class TreeWalkStack
 {
   public:

@@ -9,7 +9,8 @@
 //    then every ancestor is rebalanced by at most one rotation on the way back up;
 //  - removing a leaf frees its parent before the ancestors are rebalanced.
 // Floating-point expressions keep Box2D's operation order so that fat boxes and costs round
-// identically.
+// identically. That is the tree of TreeUpdate::Reinsert (Box2D's back end); the other back ends
+// grow it in place and build it again instead (tree_rebuild.cpp).
 #include "collision/broad_phase.h"
 
 #include <algorithm>
@@ -82,7 +83,8 @@ std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, P
 {
     // Insertion rotates subtrees, which would leave a grown box under one that is not marked,
     // where Rebuild would never reach it: the grown part is built first. Boxes grow only in
-    // MoveProxy, so outside a step (SetTransform) and at most once a step.
+    // MoveProxy: in a step (each time followed by the pairs' search, which rebuilds) and in
+    // SetTransform.
     Rebuild();
     const std::int32_t proxyId = AllocateNode();
 
@@ -456,6 +458,15 @@ bool DynamicTree::Validate() const
             return false;
         }
         const Node& node = m_nodes[i];
+        // Marks (TreeUpdate::EnlargeAndRebuild): only internal nodes, only while a box has
+        // grown since the last Rebuild, and a marked node's parent is marked too (the root
+        // aside), so that Rebuild's walk down the marked nodes reaches every one.
+        if (node.enlarged &&
+            (node.IsLeaf() || !m_grown ||
+             (node.parentOrNext != kNullProxy && !m_nodes[node.parentOrNext].enlarged)))
+        {
+            return false;
+        }
         if (node.IsLeaf())
         {
             if (node.child2 != kNullProxy || node.height != 0)

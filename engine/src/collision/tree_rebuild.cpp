@@ -8,8 +8,9 @@
 // visit more nodes. Here a moved leaf only grows its ancestors' boxes, and once per step, before
 // the pairs are looked for, the grown part — every internal node above a moved leaf — is built
 // again top down over its leaves and the untouched subtrees below it, splitting each set at the
-// middle of its box centres' extent along the longer axis. The build is serial and in a fixed
-// order, so the tree, and with it the pairs' order, is the same for any thread count.
+// middle of its box centres' extent along the longer axis. The build is serial and each split
+// depends only on the set of units it splits (not on their order), so the tree, and with it the
+// pairs' order, is the same for any thread count and any standard library.
 #include "collision/broad_phase.h"
 
 #include <algorithm>
@@ -113,11 +114,13 @@ std::int32_t DynamicTree::BuildRange(int begin, int end, int depth)
     }
     if (middle == first || middle == last)
     {
-        // Centres all alike along the axis (or too deep): half the units on each side.
+        // Centres all alike along the axis (or too deep): half the units on each side. Ties
+        // are broken by node id, so that each side is the same set of units whatever the
+        // standard library's nth_element does with equal keys, and so is the tree.
         middle = first + (end - begin) / 2;
         std::nth_element(first, middle, last,
                          [&key](const BuildUnit& a, const BuildUnit& b)
-                         { return key(a) < key(b); });
+                         { return key(a) < key(b) || (key(a) == key(b) && a.node < b.node); });
     }
 
     const int split = static_cast<int>(middle - m_units.begin());

@@ -31,7 +31,7 @@ struct Shape
     std::int32_t chain = -1;
     ShapeDef def;
     std::int32_t proxyId = -1;
-    AABB aabb; ///< the box last given to the broad phase (swept over the step)
+    AABB aabb; ///< the box last given to the broad phase (swept over the step: ShapeBoxes)
     /// The largest distance of the shape's core (a polygon's vertices, a circle's centre, a
     /// segment's end points: the shape less its radius) from its body's origin (m), set at
     /// creation: how far a point of the core can move when the body turns (Collide's
