@@ -2,8 +2,9 @@
 """Writes the benchmark scenes of samples/bench/ as Box2D v3's benchmark suite defines them
 (shared/benchmarks.c: large_pyramid, joint_grid, tumbler, many_pyramids, compounds, smash,
 spinner, washer; frames as v3's benchmark program steps them), plus pyramids of 10, 20 and 50
-rows for the scaling measurement. Where v3 uses a shape meff lacks (capsules, rounded boxes),
-the scene's description says what stands in. Run it from anywhere; it rewrites the JSON files
+rows for the scaling measurement. Where v3 uses a shape Box2D 2.4.1 lacks (capsules, rounded
+boxes), the scene's description says what stands in, so that `meff bench`'s default peer can run
+it. Run it from anywhere; it rewrites the JSON files
 beside it. `generate.py --pyramid ROWS OUT.json` writes only a pyramid of ROWS rows, to OUT.json
 (the cost-per-body measurement's larger pyramids, too large to bundle)."""
 import json
@@ -204,7 +205,8 @@ write("spinner", "Benchmark: 6,076 bodies (in turn a capsule, a circle of radius
       "of half-extent 0.35; density 0.25, friction 0.1, restitution 0.1) in a drum of radius 40 "
       "(a 360-point chain loop, friction 0.1) stirred by a bar of half-extents 0.6 x 20.2 "
       "(frictionless) turned at 5 rad/s by a revolute motor of up to 1e10 N m, as Box2D v3's "
-      "spinner. Stand-ins, as meff has no capsules or rounded polygons: each capsule (segment "
+      "spinner. Stand-ins, so that Box2D 2.4.1 (meff bench's default peer) can run it too: "
+      "each capsule (segment "
       "0.5 m, radius 0.25) is an 8-sided polygon inscribed in it, with flat sides and two "
       "corners on each cap, and v3's bar, a box of half-extents 0.4 x 20 rounded by 0.2 m, is "
       "the box around it; v3's motor torque is unlimited. The bodies should churn around the "
