@@ -14,6 +14,7 @@
 #include "collision/broad_phase.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace meff::detail
 {
@@ -116,11 +117,17 @@ std::int32_t DynamicTree::BuildRange(int begin, int end, int depth)
     {
         // Centres all alike along the axis (or too deep): half the units on each side. Ties
         // are broken by node id, so that each side is the same set of units whatever the
-        // standard library's nth_element does with equal keys, and so is the tree.
+        // standard library's nth_element does with equal keys, and so is the tree. A box that
+        // overflowed to infinity on both sides has a NaN centre: NaN sorts last, so the order
+        // stays strict and weak (nth_element's precondition) whatever the boxes.
         middle = first + (end - begin) / 2;
+        const auto before = [](Real x, Real y)
+        { return x < y || (std::isnan(y) && !std::isnan(x)); };
         std::nth_element(first, middle, last,
-                         [&key](const BuildUnit& a, const BuildUnit& b)
-                         { return key(a) < key(b) || (key(a) == key(b) && a.node < b.node); });
+                         [&key, &before](const BuildUnit& a, const BuildUnit& b) {
+                             return before(key(a), key(b)) ||
+                                    (!before(key(b), key(a)) && a.node < b.node);
+                         });
     }
 
     const int split = static_cast<int>(middle - m_units.begin());
