@@ -10,11 +10,17 @@
 #include "solvers/lanes/lane_bodies.h"
 #include "tasks/parallel_ranges.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 namespace meff::detail
 {
+
+/// The fewest groups a thread is handed at once: a range must pay for handing it out (a
+/// compare-and-swap, perhaps a thread's wake-up), so a colour of fewer than two ranges stays on
+/// the calling thread.
+inline constexpr int kMinGroupsPerTask = 64;
 
 /// Cuts each colour of `colouring` into groups of kLanes constraints (the last of a colour may
 /// be partly empty): colour c's groups are [starts[c], starts[c + 1]). Returns the group count.
@@ -33,21 +39,82 @@ inline std::int32_t GroupStartsOf(const ConstraintColouring& colouring,
 }
 
 /// Runs solve(group, discard) on each of colour c's groups ([starts[c], starts[c + 1])), at
-/// least `minGroups` to a thread, on the world's threads (data.tasks).
+/// least `minGroups` to a thread, on `tasks` (null: this thread); `discardIndex` is worker 0's
+/// discard slot (SolverData::discardIndex).
 template <typename Solve>
-void ForEachGroupOfColour(const std::vector<std::int32_t>& starts, int c, const SolverData& data,
-                          int minGroups, Solve&& solve)
+void ForEachGroupOfColour(const std::vector<std::int32_t>& starts, int c, TaskSystem* tasks,
+                          std::int32_t discardIndex, int minGroups, Solve&& solve)
 {
     const std::int32_t first = starts[c];
-    ForRanges(data.tasks, starts[c + 1] - first, minGroups,
+    ForRanges(tasks, starts[c + 1] - first, minGroups,
               [&](int begin, int end, int worker)
               {
-                  const DiscardSlots discard{data.discardIndex, data.discardIndex + worker};
+                  const DiscardSlots discard{discardIndex, discardIndex + worker};
                   for (std::int32_t i = first + begin; i < first + end; ++i)
                   {
                       solve(i, discard);
                   }
               });
 }
+
+/// The same on the world's threads of `data` (data.tasks, data.discardIndex).
+template <typename Solve>
+void ForEachGroupOfColour(const std::vector<std::int32_t>& starts, int c, const SolverData& data,
+                          int minGroups, Solve&& solve)
+{
+    ForEachGroupOfColour(starts, c, data.tasks, data.discardIndex, minGroups, solve);
+}
+
+/// A colouring's groups and the threads they run on, for a solver whose passes all take the
+/// same threads (the soft step's lanes): colour c's groups are [starts[c], starts[c + 1]).
+struct ColourGroups
+{
+    std::vector<std::int32_t> starts{0};
+    TaskSystem* tasks = nullptr;   ///< the world's threads, or null
+    std::int32_t discardIndex = 0; ///< worker 0's discard slot (SolverData::discardIndex)
+    int minGroups = kMinGroupsPerTask;
+
+    /// Cuts `colouring` into groups (GroupStartsOf) for `threads`, whose worker 0 writes the
+    /// discard slot `discard`; returns the group count.
+    std::int32_t Cut(const ConstraintColouring& colouring, TaskSystem* threads,
+                     std::int32_t discard)
+    {
+        tasks = threads;
+        discardIndex = discard;
+        return GroupStartsOf(colouring, starts);
+    }
+    int ColourCount() const { return static_cast<int>(starts.size()) - 1; }
+    /// The colour of group i.
+    int ColourOf(std::int32_t i) const
+    {
+        return static_cast<int>(std::upper_bound(starts.begin(), starts.end(), i) -
+                                starts.begin()) -
+               1;
+    }
+    /// Runs f(group) on every group, in ranges on the threads: for what each group does alone
+    /// (packing, scaling or copying its own rows).
+    template <typename F>
+    void ForEachGroup(F&& f) const
+    {
+        ForRanges(tasks, starts.back(), minGroups,
+                  [&](int begin, int end, int)
+                  {
+                      for (std::int32_t i = begin; i < end; ++i)
+                      {
+                          f(i);
+                      }
+                  });
+    }
+    /// Runs f(group, discard) colour after colour, a colour's groups on the threads: for the
+    /// sweeps, whose groups of one colour share no moving body.
+    template <typename F>
+    void ForEachGroupByColour(F&& f) const
+    {
+        for (int c = 0; c < ColourCount(); ++c)
+        {
+            ForEachGroupOfColour(starts, c, tasks, discardIndex, minGroups, f);
+        }
+    }
+};
 
 } // namespace meff::detail

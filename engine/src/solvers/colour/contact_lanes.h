@@ -61,11 +61,6 @@ struct ContactPositionGroup
     MaskW hasPoint[2];
 };
 
-/// The fewest groups a thread is handed at once: a range must pay for handing it out (a
-/// compare-and-swap, perhaps a thread's wake-up), so a colour of fewer than two ranges stays on
-/// the calling thread.
-inline constexpr int kMinGroupsPerTask = 64;
-
 class ContactLanes
 {
   public:

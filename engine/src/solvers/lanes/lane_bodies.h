@@ -130,19 +130,26 @@ struct DiscardSlots
     std::int32_t own;    ///< discardIndex + worker
 };
 
-/// Scatter for a worker of the world's TaskSystem: lanes packed to write the discard slot write
+/// The stores of a worker of the world's TaskSystem: lanes packed to write the discard slot write
 /// the worker's own slot instead, so that the groups of one colour, solved on several threads
 /// at once, never write the same memory (for worker 0 the slots are the same).
+[[gnu::always_inline]] inline void StoresOfWorker(const std::int32_t (&store)[kLanes],
+                                                  DiscardSlots discard, std::int32_t (&to)[kLanes])
+{
+    for (int l = 0; l < kLanes; ++l)
+    {
+        to[l] = store[l] == discard.packed ? discard.own : store[l];
+    }
+}
+
+/// Scatter for a worker of the world's TaskSystem (StoresOfWorker).
 template <typename State>
 [[gnu::always_inline]] inline void ScatterFromWorker(State* states,
                                                      const std::int32_t (&store)[kLanes],
                                                      DiscardSlots discard, const BodyStateW& in)
 {
     std::int32_t to[kLanes];
-    for (int l = 0; l < kLanes; ++l)
-    {
-        to[l] = store[l] == discard.packed ? discard.own : store[l];
-    }
+    StoresOfWorker(store, discard, to);
     Scatter(states, to, in);
 }
 

@@ -2,6 +2,7 @@
 
 #include "dynamics/body.h"
 #include "solvers/soft_step/soft_delta_lanes.h"
+#include "tasks/parallel_ranges.h"
 
 #include <cmath>
 #include <cstring>
@@ -36,56 +37,80 @@ Velocity DampingOver(Real dt, const Body& body)
     return {{linear, linear}, Real(1) / (Real(1) + dt * body.angularDamping)};
 }
 
+/// Runs f(i) for each body i of [0, count), in ranges on `tasks`.
+template <typename F>
+void ForBodies(TaskSystem* tasks, std::size_t count, F&& f)
+{
+    ForRanges(tasks, static_cast<int>(count), kMinBodiesPerTask,
+              [&](int begin, int end, int)
+              {
+                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
+                       ++i)
+                  {
+                      f(i);
+                  }
+              });
+}
+
+/// Body `body`'s state into slot i of `bodies`, its sweep's start set to now.
+void GatherSoftBody(const SolverWorld& world, Body& body, Real h, std::size_t i, SoftBodies& bodies)
+{
+    body.sweep.c0 = body.sweep.c;
+    body.sweep.a0 = body.sweep.a;
+    bodies.start[i] = {body.sweep.c, body.sweep.a};
+    bodies.velocities[i] = {body.linearVelocity, body.angularVelocity};
+    // Static and kinematic bodies keep their velocities: no forces, no damping.
+    if (body.type != BodyType::Dynamic)
+    {
+        bodies.kick[i] = {};
+        bodies.wholeDamping[i] = bodies.halfDamping[i] = {{1, 1}, 1};
+        return;
+    }
+    bodies.kick[i] = {h * body.invMass *
+                          (body.gravityScale * body.mass * world.gravity + body.force),
+                      h * body.invI * body.torque};
+    bodies.wholeDamping[i] = DampingOver(h, body);
+    bodies.halfDamping[i] = DampingOver(Real(0.5) * h, body);
+}
+
 } // namespace
 
 void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodies& bodies)
 {
     const std::size_t count = island.bodies.size();
-    bodies.velocities.resize(count + 1);
-    bodies.deltas.assign(count + 1, SoftDelta{});
+    const auto discardSlots = static_cast<std::size_t>(WorkerCount(world.tasks));
+    bodies.velocities.resize(count + discardSlots);
+    bodies.deltas.assign(count + discardSlots, SoftDelta{});
     bodies.start.resize(count);
     bodies.kick.resize(count);
     bodies.wholeDamping.resize(count);
     bodies.halfDamping.resize(count);
-    for (std::size_t i = 0; i < count; ++i)
+    ForBodies(world.tasks, count,
+              [&](std::size_t i)
+              { GatherSoftBody(world, world.bodies[island.bodies[i]], h, i, bodies); });
+    for (std::size_t slot = count; slot < count + discardSlots; ++slot)
     {
-        Body& body = world.bodies[island.bodies[i]];
-        body.sweep.c0 = body.sweep.c;
-        body.sweep.a0 = body.sweep.a;
-        bodies.start[i] = {body.sweep.c, body.sweep.a};
-        bodies.velocities[i] = {body.linearVelocity, body.angularVelocity};
-        // Static and kinematic bodies keep their velocities: no forces, no damping.
-        if (body.type != BodyType::Dynamic)
-        {
-            bodies.kick[i] = {};
-            bodies.wholeDamping[i] = bodies.halfDamping[i] = {{1, 1}, 1};
-            continue;
-        }
-        bodies.kick[i] = {h * body.invMass *
-                              (body.gravityScale * body.mass * world.gravity + body.force),
-                          h * body.invI * body.torque};
-        bodies.wholeDamping[i] = DampingOver(h, body);
-        bodies.halfDamping[i] = DampingOver(Real(0.5) * h, body);
+        bodies.velocities[slot] = {};
     }
-    bodies.velocities[count] = {};
     bodies.h = h;
 }
 
-void IntegrateSoftVelocities(SoftBodies& bodies, bool half)
+void IntegrateSoftVelocities(SoftBodies& bodies, bool half, TaskSystem* tasks)
 {
     // Semi-implicit Euler: v ← (v + fraction·Δv)·damping (DampingOver). A body's velocity, kick
     // and damping are each one Real4 (x, y, angular, padding): one vector operation per step.
     const Real fraction = half ? Real(0.5) : Real(1);
     const Velocity* damping = half ? bodies.halfDamping.data() : bodies.wholeDamping.data();
-    for (std::size_t i = 0; i < bodies.start.size(); ++i)
-    {
-        Real4 v, kick, factor;
-        std::memcpy(&v, &bodies.velocities[i], sizeof(Real4));
-        std::memcpy(&kick, &bodies.kick[i], sizeof(Real4));
-        std::memcpy(&factor, &damping[i], sizeof(Real4));
-        v = (v + fraction * kick) * factor;
-        std::memcpy(static_cast<void*>(&bodies.velocities[i]), &v, sizeof(Real4));
-    }
+    ForBodies(tasks, bodies.start.size(),
+              [&](std::size_t i)
+              {
+                  Real4 v, kick, factor;
+                  std::memcpy(&v, &bodies.velocities[i], sizeof(Real4));
+                  std::memcpy(&kick, &bodies.kick[i], sizeof(Real4));
+                  std::memcpy(&factor, &damping[i], sizeof(Real4));
+                  v = (v + fraction * kick) * factor;
+                  std::memcpy(static_cast<void*>(&bodies.velocities[i]), &v, sizeof(Real4));
+              });
 }
 
 namespace
@@ -147,33 +172,40 @@ void IntegrateSoftPositionsW(SoftBodies& bodies, std::int32_t first, Real h, Spe
 
 } // namespace
 
-void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step)
+void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step, TaskSystem* tasks)
 {
     const Tolerances& tol = step.tolerances;
     const SpeedLimits limits{tol.maxTranslation * step.invDt, tol.maxRotation * step.invDt};
     const auto count = static_cast<std::int32_t>(bodies.start.size());
-    std::int32_t i = 0;
-    for (; i + kLanes <= count; i += kLanes)
-    {
-        IntegrateSoftPositionsW(bodies, i, h, limits);
-    }
-    for (; i < count; ++i)
+    // Whole blocks of kLanes bodies on the threads, the rest one by one.
+    const std::int32_t blocks = count / kLanes;
+    ForRanges(tasks, blocks, kMinBodiesPerTask / kLanes,
+              [&](int begin, int end, int)
+              {
+                  for (std::int32_t b = begin; b < end; ++b)
+                  {
+                      IntegrateSoftPositionsW(bodies, b * kLanes, h, limits);
+                  }
+              });
+    for (std::int32_t i = blocks * kLanes; i < count; ++i)
     {
         IntegrateSoftPosition(bodies.velocities[i], bodies.deltas[i], h, limits);
     }
 }
 
-void ScatterSoftBodies(const SoftBodies& bodies, Island& island)
+void ScatterSoftBodies(const SoftBodies& bodies, Island& island, TaskSystem* tasks)
 {
     const std::size_t count = bodies.start.size();
     island.positions.resize(count);
     island.velocities.resize(count);
-    for (std::size_t i = 0; i < count; ++i)
-    {
-        const SoftDelta& d = bodies.deltas[i];
-        island.positions[i] = {bodies.start[i].c + d.dp, bodies.start[i].a + d.dq.GetAngle()};
-        island.velocities[i] = bodies.velocities[i];
-    }
+    ForBodies(
+        tasks, count,
+        [&](std::size_t i)
+        {
+            const SoftDelta& d = bodies.deltas[i];
+            island.positions[i] = {bodies.start[i].c + d.dp, bodies.start[i].a + d.dq.GetAngle()};
+            island.velocities[i] = bodies.velocities[i];
+        });
 }
 
 } // namespace meff::detail

@@ -24,7 +24,8 @@ struct alignas(4 * sizeof(Real)) SoftDelta
 
 struct SoftBodies
 {
-    /// By solver index (the island's order), with one slot more: SolverData::discardIndex.
+    /// By solver index (the island's order), with a slot more for each worker of the world's
+    /// threads: SolverData::discardIndex (= the island's body count) + worker.
     std::vector<Velocity> velocities;
     std::vector<SoftDelta> deltas;
     std::vector<Position> start; ///< centre of mass and angle when the step began
@@ -35,18 +36,25 @@ struct SoftBodies
     /// where c = 0. Computed once per step: the kicks are the same in every sub-step.
     std::vector<Velocity> wholeDamping, halfDamping;
     Real h = 0; ///< the sub-step (s)
+
+    /// Worker 0's discard slot: the island's body count.
+    std::int32_t DiscardIndex() const { return static_cast<std::int32_t>(start.size()); }
 };
 
-/// Copies the island's bodies in (their sweeps' start c0, a0 set to now) for sub-steps of h.
+// Each of these works body by body, so it spreads the bodies over `tasks` (the world's threads,
+// or null) in ranges: the results do not depend on the thread count.
+
+/// Copies the island's bodies in (their sweeps' start c0, a0 set to now) for sub-steps of h,
+/// with a discard slot for each of world.tasks' workers.
 void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodies& bodies);
 /// v ← damping·(v + fraction·Δv) for every dynamic body (static and kinematic bodies keep
 /// theirs): `fraction` 1 for a whole sub-step, ½ (`half`) for velocity Verlet's half kicks.
-void IntegrateSoftVelocities(SoftBodies& bodies, bool half);
+void IntegrateSoftVelocities(SoftBodies& bodies, bool half, TaskSystem* tasks);
 /// dp ← dp + h·v, dq ← the rotation by h·w after dq, with the speeds clamped so a body moves at
 /// most maxTranslation and maxRotation per step, as the Box2D back end clamps them.
-void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step);
+void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step, TaskSystem* tasks);
 /// The island's state at the step's end, into island.positions and island.velocities.
-void ScatterSoftBodies(const SoftBodies& bodies, Island& island);
+void ScatterSoftBodies(const SoftBodies& bodies, Island& island, TaskSystem* tasks);
 
 /// Below this angle (rad) SmallRotation's series stops at the 5th and 4th power: the first term
 /// left out is under (1/16)⁶/720 < 2e-10, far below float's rounding, and most turns within a

@@ -128,7 +128,7 @@ void SolveRolling(SoftContactGroup& g, BodyStateW& a, BodyStateW& b)
     SolveRollingLanes(g, a, b, [&](int l, Real lambda) { g.totalRollingImpulse[l] += lambda; });
 }
 
-void WarmStartGroup(SoftContactGroup& g, Velocity* velocities)
+void WarmStartGroup(SoftContactGroup& g, Velocity* velocities, DiscardSlots discard)
 {
     BodyStateW a = Gather(velocities, g.indexA);
     BodyStateW b = Gather(velocities, g.indexB);
@@ -143,8 +143,8 @@ void WarmStartGroup(SoftContactGroup& g, Velocity* velocities)
     a.angular = a.angular - g.invIA * g.rollingImpulse;
     b.angular = b.angular + g.invIB * g.rollingImpulse;
     g.totalRollingImpulse += g.rollingImpulse;
-    Scatter(velocities, g.storeA, a);
-    Scatter(velocities, g.storeB, b);
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
 /// Each point's C at the bodies' poses now, into g.error.
@@ -163,7 +163,7 @@ void MeasureErrors(SoftContactGroup& g, const SoftStepContext& context)
 
 /// One sweep of the group; `measure`: the bodies moved since g.error was measured.
 void SolveGroup(SoftContactGroup& g, const SoftStepContext& context, bool useBias, bool friction,
-                bool measure)
+                bool measure, DiscardSlots discard)
 {
     Velocity* velocities = context.bodies->velocities.data();
     BodyStateW a = Gather(velocities, g.indexA);
@@ -222,11 +222,11 @@ void SolveGroup(SoftContactGroup& g, const SoftStepContext& context, bool useBia
             SolveRolling(g, a, b);
         }
     }
-    Scatter(velocities, g.storeA, a);
-    Scatter(velocities, g.storeB, b);
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
-void CorrectGroup(const SoftContactGroup& g, const SoftStepContext& context)
+void CorrectGroup(const SoftContactGroup& g, const SoftStepContext& context, DiscardSlots discard)
 {
     SoftDelta* deltas = context.bodies->deltas.data();
     DeltaW dA = GatherDeltas(deltas, g.indexA);
@@ -264,8 +264,8 @@ void CorrectGroup(const SoftContactGroup& g, const SoftStepContext& context)
     }
     if (moved)
     {
-        ScatterDeltas(deltas, g.storeA, dA);
-        ScatterDeltas(deltas, g.storeB, dB);
+        ScatterDeltasFromWorker(deltas, g.storeA, discard, dA);
+        ScatterDeltasFromWorker(deltas, g.storeB, discard, dB);
     }
 }
 
@@ -320,7 +320,8 @@ void PackLane(SoftContactGroup& g, int l, std::int32_t source, const SoftContact
 
 } // namespace
 
-void SoftContactLanes::Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount)
+void SoftContactLanes::Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount,
+                               TaskSystem* tasks)
 {
     ColourSoftRows(
         contacts.size(), bodyCount,
@@ -331,120 +332,129 @@ void SoftContactLanes::Prepare(std::span<const SoftContact> contacts, std::int32
                                     SolverMoves(c.mB, c.iB)};
         },
         m_colouring);
-    m_groups.clear();
     m_errorsKnown = false;
-    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
+    m_groups.resize(static_cast<std::size_t>(m_groupsOfColour.Cut(m_colouring, tasks, bodyCount)));
+    m_groupsOfColour.ForEachGroup([&](std::int32_t i) { PackGroup(i, contacts); });
+}
+
+void SoftContactLanes::PackGroup(std::int32_t i, std::span<const SoftContact> contacts)
+{
+    // The group's contacts: kLanes of its colour's, in the colouring's order.
+    const int colour = m_groupsOfColour.ColourOf(i);
+    const std::int32_t first =
+        m_colouring.colourStarts[colour] + (i - m_groupsOfColour.starts[colour]) * kLanes;
+    const std::int32_t discardIndex = m_groupsOfColour.discardIndex;
+    const std::int32_t end = m_colouring.colourStarts[colour + 1];
+    SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
+    g = SoftContactGroup{};
+    for (int l = 0; l < kLanes; ++l)
     {
-        const std::int32_t end = m_colouring.colourStarts[colour + 1];
-        for (std::int32_t first = m_colouring.colourStarts[colour]; first < end; first += kLanes)
-        {
-            SoftContactGroup& g = m_groups.emplace_back();
-            for (int l = 0; l < kLanes; ++l)
-            {
-                g.source[l] = -1;
-                g.storeA[l] = g.storeB[l] = bodyCount;
-            }
-            int filled = 0;
-            for (; filled < kLanes && first + filled < end; ++filled)
-            {
-                const std::int32_t k = m_colouring.order[first + filled];
-                PackLane(g, filled, k, contacts[k], bodyCount);
-            }
-            // Empty lanes read lane 0's bodies and change nothing (zero masses, no point).
-            for (int l = filled; l < kLanes; ++l)
-            {
-                g.indexA[l] = g.indexA[0];
-                g.indexB[l] = g.indexB[0];
-            }
-        }
+        g.source[l] = -1;
+        g.storeA[l] = g.storeB[l] = discardIndex;
+    }
+    int filled = 0;
+    for (; filled < kLanes && first + filled < end; ++filled)
+    {
+        const std::int32_t k = m_colouring.order[first + filled];
+        PackLane(g, filled, k, contacts[k], discardIndex);
+    }
+    // Empty lanes read lane 0's bodies and change nothing (zero masses, no point).
+    for (int l = filled; l < kLanes; ++l)
+    {
+        g.indexA[l] = g.indexA[0];
+        g.indexB[l] = g.indexB[0];
     }
 }
 
 void SoftContactLanes::WarmStart(const SoftStepContext& context)
 {
-    for (SoftContactGroup& g : m_groups)
-    {
-        WarmStartGroup(g, context.bodies->velocities.data());
-    }
+    Velocity* velocities = context.bodies->velocities.data();
+    m_groupsOfColour.ForEachGroupByColour([&](std::int32_t i, DiscardSlots discard)
+                                          { WarmStartGroup(m_groups[i], velocities, discard); });
 }
 
 void SoftContactLanes::Solve(const SoftStepContext& context, bool useBias)
 {
     const bool friction = !useBias || context.frictionInSolve;
-    for (SoftContactGroup& g : m_groups)
-    {
-        SolveGroup(g, context, useBias, friction, !m_errorsKnown);
-    }
+    const bool measure = !m_errorsKnown;
+    m_groupsOfColour.ForEachGroupByColour(
+        [&](std::int32_t i, DiscardSlots discard)
+        { SolveGroup(m_groups[i], context, useBias, friction, measure, discard); });
     m_errorsKnown = true;
 }
 
 void SoftContactLanes::CorrectPositions(const SoftStepContext& context)
 {
-    for (const SoftContactGroup& g : m_groups)
-    {
-        CorrectGroup(g, context);
-    }
+    m_groupsOfColour.ForEachGroupByColour([&](std::int32_t i, DiscardSlots discard)
+                                          { CorrectGroup(m_groups[i], context, discard); });
 }
 
 void SoftContactLanes::ScaleImpulses(Real factor)
 {
-    for (SoftContactGroup& g : m_groups)
-    {
-        for (int j = 0; j < 2; ++j)
+    m_groupsOfColour.ForEachGroup(
+        [&](std::int32_t i)
         {
-            g.normalImpulse[j] *= factor;
-            g.tangentImpulse[j] *= factor;
-        }
-        g.rollingImpulse *= factor;
-    }
+            SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
+            for (int j = 0; j < 2; ++j)
+            {
+                g.normalImpulse[j] *= factor;
+                g.tangentImpulse[j] *= factor;
+            }
+            g.rollingImpulse *= factor;
+        });
 }
 
 void SoftContactLanes::SaveImpulses()
 {
     m_saved.resize(m_groups.size());
-    for (std::size_t i = 0; i < m_groups.size(); ++i)
-    {
-        const SoftContactGroup& g = m_groups[i];
-        m_saved[i] = {{g.normalImpulse[0], g.normalImpulse[1]},
-                      {g.tangentImpulse[0], g.tangentImpulse[1]},
-                      g.rollingImpulse};
-    }
+    m_groupsOfColour.ForEachGroup(
+        [&](std::int32_t i)
+        {
+            const SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
+            m_saved[static_cast<std::size_t>(i)] = {{g.normalImpulse[0], g.normalImpulse[1]},
+                                                    {g.tangentImpulse[0], g.tangentImpulse[1]},
+                                                    g.rollingImpulse};
+        });
 }
 
 void SoftContactLanes::RestoreImpulses()
 {
-    for (std::size_t i = 0; i < m_groups.size(); ++i)
-    {
-        SoftContactGroup& g = m_groups[i];
-        const SoftGroupImpulses& saved = m_saved[i];
-        for (int j = 0; j < 2; ++j)
+    m_groupsOfColour.ForEachGroup(
+        [&](std::int32_t i)
         {
-            g.normalImpulse[j] = saved.normal[j];
-            g.tangentImpulse[j] = saved.tangent[j];
-        }
-        g.rollingImpulse = saved.rolling;
-    }
+            SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
+            const SoftGroupImpulses& saved = m_saved[static_cast<std::size_t>(i)];
+            for (int j = 0; j < 2; ++j)
+            {
+                g.normalImpulse[j] = saved.normal[j];
+                g.tangentImpulse[j] = saved.tangent[j];
+            }
+            g.rollingImpulse = saved.rolling;
+        });
 }
 
 void SoftContactLanes::Collect(std::span<SoftContact> contacts) const
 {
-    for (const SoftContactGroup& g : m_groups)
-    {
-        for (int l = 0; l < kLanes && g.source[l] >= 0; ++l)
+    // Each lane writes its own contact.
+    m_groupsOfColour.ForEachGroup(
+        [&](std::int32_t i)
         {
-            SoftContact& c = contacts[g.source[l]];
-            c.rollingImpulse = g.rollingImpulse[l];
-            c.totalRollingImpulse = g.totalRollingImpulse[l];
-            for (int j = 0; j < c.pointCount; ++j)
+            const SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
+            for (int l = 0; l < kLanes && g.source[l] >= 0; ++l)
             {
-                SoftContactPoint& p = c.points[j];
-                p.normalImpulse = g.normalImpulse[j][l];
-                p.tangentImpulse = g.tangentImpulse[j][l];
-                p.totalNormalImpulse = g.totalNormalImpulse[j][l];
-                p.totalTangentImpulse = g.totalTangentImpulse[j][l];
+                SoftContact& c = contacts[g.source[l]];
+                c.rollingImpulse = g.rollingImpulse[l];
+                c.totalRollingImpulse = g.totalRollingImpulse[l];
+                for (int j = 0; j < c.pointCount; ++j)
+                {
+                    SoftContactPoint& p = c.points[j];
+                    p.normalImpulse = g.normalImpulse[j][l];
+                    p.tangentImpulse = g.tangentImpulse[j][l];
+                    p.totalNormalImpulse = g.totalNormalImpulse[j][l];
+                    p.totalTangentImpulse = g.totalTangentImpulse[j][l];
+                }
             }
-        }
-    }
+        });
 }
 
 } // namespace meff::detail

@@ -8,9 +8,12 @@
 // so a contact solved in a lane gives the bits it would give solved alone in that order. Only the
 // Gauss-Seidel order changes (colour order instead of island order), and it does not depend on
 // the lane count: the SSE2 and AVX2 builds give the same results. The contacts no colour had room
-// for are left to the caller, which solves them one by one after the lanes.
+// for are left to the caller, which solves them one by one after the lanes. On the world's
+// threads a colour's groups are solved at once (ColourGroups), which changes nothing in the
+// results: they share no moving body.
 #pragma once
 
+#include "solvers/colour/colour_groups.h"
 #include "solvers/colour/graph_colouring.h"
 #include "solvers/lanes/wide_real.h"
 #include "solvers/soft_step/soft_step_context.h"
@@ -90,8 +93,9 @@ class SoftContactLanes
 {
   public:
     /// Colours the island's prepared contacts (island order) and packs the coloured ones into
-    /// groups. `bodyCount` is the island's; its discard slot is bodyCount.
-    void Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount);
+    /// groups. `bodyCount` is the island's; its discard slots are bodyCount + each worker of
+    /// `tasks` (the world's threads, or null), on which every pass below runs.
+    void Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount, TaskSystem* tasks);
     /// Island positions of the contacts no colour had room for, in island order.
     std::span<const std::int32_t> Overflow() const { return m_colouring.overflow; }
 
@@ -110,8 +114,11 @@ class SoftContactLanes
     void Collect(std::span<SoftContact> contacts) const;
 
   private:
+    /// Packs group i from its colour's contacts.
+    void PackGroup(std::int32_t i, std::span<const SoftContact> contacts);
     ConstraintColouring m_colouring;
     std::vector<SoftContactGroup> m_groups; ///< colour after colour
+    ColourGroups m_groupsOfColour;          ///< where each colour's groups are, and their threads
     std::vector<SoftGroupImpulses> m_saved;
     bool m_errorsKnown = false; ///< whether every group's `error` is at the bodies' poses
 };

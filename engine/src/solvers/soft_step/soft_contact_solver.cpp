@@ -2,6 +2,9 @@
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
+#include "tasks/parallel_ranges.h"
+
+#include <algorithm>
 
 namespace meff::detail
 {
@@ -38,6 +41,83 @@ void Turn(SoftDelta& d, Real angle)
     d.dq = Mul(SmallRotation(angle), d.dq);
 }
 
+/// The rows of island contact k at the bodies' poses of the step's start; returns whether the
+/// contact asked for hit events.
+bool PrepareContact(const IslandContacts& island, std::size_t k, Real warmScale,
+                    const SoftStepContext& context, SoftContact& c)
+{
+    const std::int32_t contactIndex = island.contactIndices[k];
+    const Contact& contact = island.contacts[contactIndex];
+    const Body& bodyA = island.bodies[contact.bodyA];
+    const Body& bodyB = island.bodies[contact.bodyB];
+    c.contactIndex = contactIndex;
+    c.indexA = bodyA.islandIndex;
+    c.indexB = bodyB.islandIndex;
+    c.mA = bodyA.invMass;
+    c.iA = bodyA.invI;
+    c.mB = bodyB.invMass;
+    c.iB = bodyB.invI;
+    c.friction = contact.friction;
+    c.restitution = contact.restitution;
+    c.threshold = contact.restitutionThreshold;
+    c.tangentSpeed = contact.tangentSpeed;
+    c.rollingResistance = contact.rollingResistance;
+    c.rollingImpulse = c.totalRollingImpulse = 0;
+    if (c.rollingResistance > 0)
+    {
+        c.rollingMass = RowMass(c.iA + c.iB);
+        c.rollingImpulse = warmScale * contact.rollingImpulse;
+    }
+    const bool againstFixed = (c.mA == 0 && c.iA == 0) || (c.mB == 0 && c.iB == 0);
+    c.softness = againstFixed ? context.staticContact : context.contact;
+
+    const Manifold& manifold = contact.manifold;
+    WorldManifold wm;
+    wm.Initialize(manifold, bodyA.xf, contact.radiusA, bodyB.xf, contact.radiusB);
+    c.normal = wm.normal;
+    c.pointCount = manifold.pointCount;
+    const Vec2 tangent = Tangent(c.normal);
+    const RowBodies masses{{}, 0, {}, 0, c.mA, c.iA, c.mB, c.iB};
+    RowJacobian normalRows[2];
+    for (int j = 0; j < c.pointCount; ++j)
+    {
+        SoftContactPoint& p = c.points[j];
+        p.rA = wm.points[j] - bodyA.sweep.c;
+        p.rB = wm.points[j] - bodyB.sweep.c;
+        p.baseSeparation = wm.separations[j] - Dot(p.rB - p.rA, c.normal);
+        normalRows[j] = PointRow(c.normal, p.rA, p.rB);
+        p.normalMass = RowMass(InverseEffectiveMass(normalRows[j], masses));
+        p.tangentMass = RowMass(InverseEffectiveMass(PointRow(tangent, p.rA, p.rB), masses));
+        p.normalImpulse = warmScale * manifold.points[j].normalImpulse;
+        p.tangentImpulse = warmScale * manifold.points[j].tangentImpulse;
+        p.totalNormalImpulse = 0;
+        p.totalTangentImpulse = 0;
+        // The approach speed before the step: restitution's vn and the hit events'.
+        const Vec2 vA = bodyA.linearVelocity + Cross(bodyA.angularVelocity, p.rA);
+        const Vec2 vB = bodyB.linearVelocity + Cross(bodyB.angularVelocity, p.rB);
+        p.relativeVelocity = Dot(vB - vA, c.normal);
+    }
+    // The two normal rows' block K (its diagonal the rows' scalar k), unless they are
+    // nearly parallel (Box2D's condition test): then the points go one by one.
+    c.block = false;
+    if (c.pointCount == 2 && context.blockSolver)
+    {
+        const RowJacobian& J1 = normalRows[0];
+        const RowJacobian& J2 = normalRows[1];
+        const Real k11 = InverseEffectiveMass(J1, masses);
+        const Real k22 = InverseEffectiveMass(J2, masses);
+        const Real k12 = c.mA + c.mB + c.iA * J1.aA * J2.aA + c.iB * J1.aB * J2.aB;
+        if (k11 * k11 < kMaxConditionNumber * (k11 * k22 - k12 * k12))
+        {
+            c.K.ex = {k11, k12};
+            c.K.ey = {k12, k22};
+            c.invK = c.K.GetInverse();
+            c.block = true;
+        }
+    }
+    return (contact.flags & Contact::HitEvents) != 0;
+}
+
 } // namespace
 
 void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepContext& context)
@@ -45,85 +125,26 @@ void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepCont
     const StepContext& step = *context.step;
     const std::size_t count = island.contactIndices.size();
     m_contacts.resize(count);
-    m_anyHitEvents = false;
     // Stored impulses are per step; the rows work per sub-step.
     const Real warmScale =
         step.solver.warmStarting ? step.dtRatio / Real(context.substeps) : Real(0);
-    for (std::size_t k = 0; k < count; ++k)
-    {
-        const std::int32_t contactIndex = island.contactIndices[k];
-        const Contact& contact = island.contacts[contactIndex];
-        m_anyHitEvents = m_anyHitEvents || (contact.flags & Contact::HitEvents) != 0;
-        const Body& bodyA = island.bodies[contact.bodyA];
-        const Body& bodyB = island.bodies[contact.bodyB];
-        SoftContact& c = m_contacts[k];
-        c.contactIndex = contactIndex;
-        c.indexA = bodyA.islandIndex;
-        c.indexB = bodyB.islandIndex;
-        c.mA = bodyA.invMass;
-        c.iA = bodyA.invI;
-        c.mB = bodyB.invMass;
-        c.iB = bodyB.invI;
-        c.friction = contact.friction;
-        c.restitution = contact.restitution;
-        c.threshold = contact.restitutionThreshold;
-        c.tangentSpeed = contact.tangentSpeed;
-        c.rollingResistance = contact.rollingResistance;
-        c.rollingImpulse = c.totalRollingImpulse = 0;
-        if (c.rollingResistance > 0)
-        {
-            c.rollingMass = RowMass(c.iA + c.iB);
-            c.rollingImpulse = warmScale * contact.rollingImpulse;
-        }
-        const bool againstFixed = (c.mA == 0 && c.iA == 0) || (c.mB == 0 && c.iB == 0);
-        c.softness = againstFixed ? context.staticContact : context.contact;
-
-        const Manifold& manifold = contact.manifold;
-        WorldManifold wm;
-        wm.Initialize(manifold, bodyA.xf, contact.radiusA, bodyB.xf, contact.radiusB);
-        c.normal = wm.normal;
-        c.pointCount = manifold.pointCount;
-        const Vec2 tangent = Tangent(c.normal);
-        const RowBodies masses{{}, 0, {}, 0, c.mA, c.iA, c.mB, c.iB};
-        RowJacobian normalRows[2];
-        for (int j = 0; j < c.pointCount; ++j)
-        {
-            SoftContactPoint& p = c.points[j];
-            p.rA = wm.points[j] - bodyA.sweep.c;
-            p.rB = wm.points[j] - bodyB.sweep.c;
-            p.baseSeparation = wm.separations[j] - Dot(p.rB - p.rA, c.normal);
-            normalRows[j] = PointRow(c.normal, p.rA, p.rB);
-            p.normalMass = RowMass(InverseEffectiveMass(normalRows[j], masses));
-            p.tangentMass = RowMass(InverseEffectiveMass(PointRow(tangent, p.rA, p.rB), masses));
-            p.normalImpulse = warmScale * manifold.points[j].normalImpulse;
-            p.tangentImpulse = warmScale * manifold.points[j].tangentImpulse;
-            p.totalNormalImpulse = 0;
-            p.totalTangentImpulse = 0;
-            // The approach speed before the step: restitution's vn and the hit events'.
-            const Vec2 vA = bodyA.linearVelocity + Cross(bodyA.angularVelocity, p.rA);
-            const Vec2 vB = bodyB.linearVelocity + Cross(bodyB.angularVelocity, p.rB);
-            p.relativeVelocity = Dot(vB - vA, c.normal);
-        }
-        // The two normal rows' block K (its diagonal the rows' scalar k), unless they are
-        // nearly parallel (Box2D's condition test): then the points go one by one.
-        c.block = false;
-        if (c.pointCount == 2 && context.blockSolver)
-        {
-            const RowJacobian& J1 = normalRows[0];
-            const RowJacobian& J2 = normalRows[1];
-            const Real k11 = InverseEffectiveMass(J1, masses);
-            const Real k22 = InverseEffectiveMass(J2, masses);
-            const Real k12 = c.mA + c.mB + c.iA * J1.aA * J2.aA + c.iB * J1.aB * J2.aB;
-            if (k11 * k11 < kMaxConditionNumber * (k11 * k22 - k12 * k12))
-            {
-                c.K.ex = {k11, k12};
-                c.K.ey = {k12, k22};
-                c.invK = c.K.GetInverse();
-                c.block = true;
-            }
-        }
-    }
-    m_lanes.Prepare(m_contacts, static_cast<std::int32_t>(context.bodies->start.size()));
+    // Each contact's rows are its own: any thread may take any range of them.
+    m_hitEventsOfWorker.assign(static_cast<std::size_t>(WorkerCount(context.tasks)), 0);
+    ForRanges(context.tasks, static_cast<int>(count), kMinSoftContactsPerTask,
+              [&](int begin, int end, int worker)
+              {
+                  bool hitEvents = false;
+                  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end);
+                       ++k)
+                  {
+                      hitEvents =
+                          PrepareContact(island, k, warmScale, context, m_contacts[k]) || hitEvents;
+                  }
+                  m_hitEventsOfWorker[static_cast<std::size_t>(worker)] |= hitEvents ? 1 : 0;
+              });
+    m_anyHitEvents =
+        std::ranges::any_of(m_hitEventsOfWorker, [](std::uint8_t h) { return h != 0; });
+    m_lanes.Prepare(m_contacts, context.bodies->DiscardIndex(), context.tasks);
 }
 
 void SoftContactSolver::WarmStart(const SoftStepContext& context)
@@ -362,24 +383,35 @@ void SoftContactSolver::Store(std::span<Contact> contacts, const SoftStepContext
 {
     m_solved.resize(m_contacts.size());
     const Real perStep = Real(context.substeps);
-    for (std::size_t k = 0; k < m_contacts.size(); ++k)
+    // Each row writes its own contact and its own SolvedContact.
+    ForRanges(context.tasks, static_cast<int>(m_contacts.size()), kMinSoftContactsPerTask,
+              [&](int begin, int end, int)
+              {
+                  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end);
+                       ++k)
+                  {
+                      StoreContact(m_contacts[k], perStep, contacts[m_contacts[k].contactIndex],
+                                   m_solved[k]);
+                  }
+              });
+}
+
+void SoftContactSolver::StoreContact(const SoftContact& c, Real perStep, Contact& contact,
+                                     SolvedContact& solved)
+{
+    solved.contactIndex = c.contactIndex;
+    solved.pointCount = c.pointCount;
+    solved.rollingImpulse = c.totalRollingImpulse;
+    contact.rollingImpulse = perStep * c.rollingImpulse;
+    Manifold& manifold = contact.manifold;
+    for (int j = 0; j < c.pointCount; ++j)
     {
-        const SoftContact& c = m_contacts[k];
-        SolvedContact& solved = m_solved[k];
-        solved.contactIndex = c.contactIndex;
-        solved.pointCount = c.pointCount;
-        solved.rollingImpulse = c.totalRollingImpulse;
-        contacts[c.contactIndex].rollingImpulse = perStep * c.rollingImpulse;
-        Manifold& manifold = contacts[c.contactIndex].manifold;
-        for (int j = 0; j < c.pointCount; ++j)
-        {
-            const SoftContactPoint& p = c.points[j];
-            manifold.points[j].normalImpulse = perStep * p.normalImpulse;
-            manifold.points[j].tangentImpulse = perStep * p.tangentImpulse;
-            solved.normalImpulse[j] = p.totalNormalImpulse;
-            solved.tangentImpulse[j] = p.totalTangentImpulse;
-            solved.normalVelocity[j] = p.relativeVelocity;
-        }
+        const SoftContactPoint& p = c.points[j];
+        manifold.points[j].normalImpulse = perStep * p.normalImpulse;
+        manifold.points[j].tangentImpulse = perStep * p.tangentImpulse;
+        solved.normalImpulse[j] = p.totalNormalImpulse;
+        solved.tangentImpulse[j] = p.totalTangentImpulse;
+        solved.normalVelocity[j] = p.relativeVelocity;
     }
 }
 

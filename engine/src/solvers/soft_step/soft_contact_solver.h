@@ -28,6 +28,10 @@ namespace meff::detail
 
 struct Contact;
 
+/// The fewest contacts a thread is handed at once when rows are prepared or stored: one costs
+/// a world manifold and a few effective masses, so fewer would not pay for the hand-out.
+inline constexpr int kMinSoftContactsPerTask = 64;
+
 /// A point's separation + linearSlop now (m), the normal row's C, from the separation at the
 /// step's start and the bodies' motion since (dp, dq): s = base + (dpB − dpA + dqB·rB − dqA·rA)·n.
 /// Written once for a Real and for SIMD lanes (soft_contact_lanes.cpp).
@@ -105,6 +109,8 @@ class SoftContactSolver
     void WarmStartContact(SoftContact& c, const SoftStepContext& context);
     void SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias);
     void CorrectContact(const SoftContact& c, const SoftStepContext& context);
+    static void StoreContact(const SoftContact& c, Real perStep, Contact& contact,
+                             SolvedContact& solved);
 
     std::vector<SoftContact> m_contacts; ///< island order
     SoftContactLanes m_lanes;
@@ -114,6 +120,7 @@ class SoftContactSolver
     std::vector<Vec2> m_saved;
     std::vector<Real> m_savedRolling;
     bool m_anyHitEvents = false;
+    std::vector<std::uint8_t> m_hitEventsOfWorker; ///< Prepare: per worker, whether any has them
 };
 
 } // namespace meff::detail

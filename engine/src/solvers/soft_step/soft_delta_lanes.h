@@ -89,6 +89,16 @@ struct DeltaW
 #endif
 }
 
+/// ScatterDeltas for a worker of the world's TaskSystem (StoresOfWorker).
+[[gnu::always_inline]] inline void ScatterDeltasFromWorker(SoftDelta* deltas,
+                                                           const std::int32_t (&store)[kLanes],
+                                                           DiscardSlots discard, const DeltaW& d)
+{
+    std::int32_t to[kLanes];
+    StoresOfWorker(store, discard, to);
+    ScatterDeltas(deltas, to, d);
+}
+
 /// SmallRotationW's lanes beyond kShortSeriesAngle: the longer series, and std::sin/std::cos
 /// in lanes beyond 0.5 rad, lane by lane (SmallRotation's cases). Out of line: most turns
 /// within a sub-step are short.

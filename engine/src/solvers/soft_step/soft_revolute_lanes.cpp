@@ -32,20 +32,21 @@ struct AnchorsW
     return {g.invMassA, g.invIA, g.invMassB, g.invIB};
 }
 
-void WarmStartGroup(const SoftRevoluteGroup& g, const SoftBodies& bodies, Velocity* velocities)
+void WarmStartGroup(const SoftRevoluteGroup& g, const SoftBodies& bodies, Velocity* velocities,
+                    DiscardSlots discard)
 {
     const AnchorsW at = AnchorsNowW(g, bodies);
     BodyStateW a = Gather(velocities, g.indexA);
     BodyStateW b = Gather(velocities, g.indexB);
     ApplyImpulseW(Masses(g), a, b, at.rA, at.rB, g.impulse);
-    Scatter(velocities, g.storeA, a);
-    Scatter(velocities, g.storeB, b);
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
 /// SolvePoint's block update per lane (without a bound on the impulse's length: the revolute
 /// joint has none).
 void SolveGroup(SoftRevoluteGroup& g, const SoftStepContext& context, bool useBias,
-                Velocity* velocities)
+                Velocity* velocities, DiscardSlots discard)
 {
     const AnchorsW at = AnchorsNowW(g, *context.bodies);
     BodyStateW a = Gather(velocities, g.indexA);
@@ -69,8 +70,8 @@ void SolveGroup(SoftRevoluteGroup& g, const SoftStepContext& context, bool useBi
     const Vec2W applied = next - g.impulse;
     g.impulse = next;
     ApplyImpulseW(Masses(g), a, b, rA, rB, applied);
-    Scatter(velocities, g.storeA, a);
-    Scatter(velocities, g.storeB, b);
+    ScatterFromWorker(velocities, g.storeA, discard, a);
+    ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
 } // namespace
@@ -88,7 +89,8 @@ RevoluteJoint* SoftRevoluteLanes::LaneJoint(Joint& joint, const SoftStepContext&
 
 void SoftRevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
                                 std::span<const SoftJointFrame> frames,
-                                std::span<const std::int32_t> rows, std::int32_t bodyCount)
+                                std::span<const std::int32_t> rows, std::int32_t bodyCount,
+                                TaskSystem* tasks)
 {
     m_bodies.resize(joints.size());
     for (std::size_t i = 0; i < joints.size(); ++i)
@@ -105,94 +107,105 @@ void SoftRevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
             joints.size(), bodyCount, [&](std::size_t i) { return m_bodies[i]; }, m_colouring);
         m_colouredFrom.Keep(m_bodies, bodies);
     }
-    m_groups.clear();
-    m_sources.clear();
-    for (int colour = 0; colour < m_colouring.ColourCount(); ++colour)
+    const std::int32_t groups = m_groupsOfColour.Cut(m_colouring, tasks, bodyCount);
+    m_groups.resize(static_cast<std::size_t>(groups));
+    m_sources.resize(static_cast<std::size_t>(groups) * kLanes);
+    m_groupsOfColour.ForEachGroup([&](std::int32_t i) { PackGroup(i, joints, frames, rows); });
+}
+
+void SoftRevoluteLanes::PackGroup(std::int32_t i, std::span<RevoluteJoint* const> joints,
+                                  std::span<const SoftJointFrame> frames,
+                                  std::span<const std::int32_t> rows)
+{
+    // The group's joints: kLanes of its colour's, in the colouring's order.
+    const int colour = m_groupsOfColour.ColourOf(i);
+    const std::int32_t first =
+        m_colouring.colourStarts[colour] + (i - m_groupsOfColour.starts[colour]) * kLanes;
+    const std::int32_t end = m_colouring.colourStarts[colour + 1];
+    const std::int32_t discardIndex = m_groupsOfColour.discardIndex;
+    SoftRevoluteGroup& g = m_groups[static_cast<std::size_t>(i)];
+    g = SoftRevoluteGroup{};
+    RevoluteJoint** sources = &m_sources[static_cast<std::size_t>(i) * kLanes];
+    int filled = 0;
+    for (; filled < kLanes && first + filled < end; ++filled)
     {
-        const std::int32_t end = m_colouring.colourStarts[colour + 1];
-        for (std::int32_t first = m_colouring.colourStarts[colour]; first < end; first += kLanes)
-        {
-            SoftRevoluteGroup& g = m_groups.emplace_back();
-            int filled = 0;
-            for (; filled < kLanes && first + filled < end; ++filled)
-            {
-                const std::int32_t k = m_colouring.order[first + filled];
-                const SoftJointFrame& f = frames[rows[k]];
-                const RevoluteJoint& joint = *joints[k];
-                const int l = filled;
-                PackLaneBodies(g, l, f.indexA, f.indexB, f.mA, f.iA, f.mB, f.iB, bodyCount);
-                g.rA0.x[l] = f.rA0.x;
-                g.rA0.y[l] = f.rA0.y;
-                g.rB0.x[l] = f.rB0.x;
-                g.rB0.y[l] = f.rB0.y;
-                g.deltaCenter.x[l] = f.deltaCenter.x;
-                g.deltaCenter.y[l] = f.deltaCenter.y;
-                g.impulse.x[l] = joint.impulse.x;
-                g.impulse.y[l] = joint.impulse.y;
-                m_sources.push_back(joints[k]);
-            }
-            // Empty lanes read lane 0's bodies, have zero masses and change nothing.
-            for (int l = filled; l < kLanes; ++l)
-            {
-                g.indexA[l] = g.indexA[0];
-                g.indexB[l] = g.indexB[0];
-                g.storeA[l] = g.storeB[l] = bodyCount;
-                m_sources.push_back(nullptr);
-            }
-        }
+        const std::int32_t k = m_colouring.order[first + filled];
+        const SoftJointFrame& f = frames[rows[k]];
+        const RevoluteJoint& joint = *joints[k];
+        const int l = filled;
+        PackLaneBodies(g, l, f.indexA, f.indexB, f.mA, f.iA, f.mB, f.iB, discardIndex);
+        g.rA0.x[l] = f.rA0.x;
+        g.rA0.y[l] = f.rA0.y;
+        g.rB0.x[l] = f.rB0.x;
+        g.rB0.y[l] = f.rB0.y;
+        g.deltaCenter.x[l] = f.deltaCenter.x;
+        g.deltaCenter.y[l] = f.deltaCenter.y;
+        g.impulse.x[l] = joint.impulse.x;
+        g.impulse.y[l] = joint.impulse.y;
+        sources[l] = joints[k];
+    }
+    // Empty lanes read lane 0's bodies, have zero masses and change nothing.
+    for (int l = filled; l < kLanes; ++l)
+    {
+        g.indexA[l] = g.indexA[0];
+        g.indexB[l] = g.indexB[0];
+        g.storeA[l] = g.storeB[l] = discardIndex;
+        sources[l] = nullptr;
     }
 }
 
 void SoftRevoluteLanes::WarmStart(const SoftStepContext& context)
 {
-    for (const SoftRevoluteGroup& g : m_groups)
-    {
-        WarmStartGroup(g, *context.bodies, context.bodies->velocities.data());
-    }
+    m_groupsOfColour.ForEachGroupByColour(
+        [&](std::int32_t i, DiscardSlots discard) {
+            WarmStartGroup(m_groups[i], *context.bodies, context.bodies->velocities.data(),
+                           discard);
+        });
 }
 
 void SoftRevoluteLanes::Solve(const SoftStepContext& context, bool useBias)
 {
-    for (SoftRevoluteGroup& g : m_groups)
-    {
-        SolveGroup(g, context, useBias, context.bodies->velocities.data());
-    }
+    m_groupsOfColour.ForEachGroupByColour(
+        [&](std::int32_t i, DiscardSlots discard)
+        { SolveGroup(m_groups[i], context, useBias, context.bodies->velocities.data(), discard); });
 }
 
 void SoftRevoluteLanes::ScaleImpulses(Real factor)
 {
-    for (SoftRevoluteGroup& g : m_groups)
-    {
-        g.impulse = Splat(factor) * g.impulse;
-    }
+    m_groupsOfColour.ForEachGroup([&](std::int32_t i)
+                                  { m_groups[i].impulse = Splat(factor) * m_groups[i].impulse; });
 }
 
 void SoftRevoluteLanes::CloseStep(const SoftStepContext& context)
 {
-    for (SoftRevoluteGroup& g : m_groups)
-    {
-        g.savedImpulse = g.impulse;
-        g.impulse = Splat(Real(0.5)) * g.impulse;
-        WarmStartGroup(g, *context.bodies, context.bodies->velocities.data());
-        SolveGroup(g, context, false, context.bodies->velocities.data());
-        g.impulse = g.savedImpulse;
-    }
+    m_groupsOfColour.ForEachGroupByColour(
+        [&](std::int32_t i, DiscardSlots discard)
+        {
+            SoftRevoluteGroup& g = m_groups[i];
+            g.savedImpulse = g.impulse;
+            g.impulse = Splat(Real(0.5)) * g.impulse;
+            WarmStartGroup(g, *context.bodies, context.bodies->velocities.data(), discard);
+            SolveGroup(g, context, false, context.bodies->velocities.data(), discard);
+            g.impulse = g.savedImpulse;
+        });
 }
 
 void SoftRevoluteLanes::Store(Real factor) const
 {
-    for (std::size_t i = 0; i < m_groups.size(); ++i)
-    {
-        const SoftRevoluteGroup& g = m_groups[i];
-        for (int l = 0; l < kLanes; ++l)
+    // Each lane writes its own joint.
+    m_groupsOfColour.ForEachGroup(
+        [&](std::int32_t i)
         {
-            if (RevoluteJoint* joint = m_sources[i * kLanes + l])
+            const SoftRevoluteGroup& g = m_groups[static_cast<std::size_t>(i)];
+            for (int l = 0; l < kLanes; ++l)
             {
-                joint->impulse = Vec2{g.impulse.x[l], g.impulse.y[l]};
-                joint->impulse *= factor;
+                if (RevoluteJoint* joint = m_sources[static_cast<std::size_t>(i) * kLanes + l])
+                {
+                    joint->impulse = Vec2{g.impulse.x[l], g.impulse.y[l]};
+                    joint->impulse *= factor;
+                }
             }
-        }
-    }
+        });
 }
 
 } // namespace meff::detail

@@ -41,10 +41,11 @@ class SoftRevoluteLanes
     static RevoluteJoint* LaneJoint(Joint& joint, const SoftStepContext& context);
 
     /// Colours the prepared joints and packs the coloured ones into groups: joint i is
-    /// `joints[i]`, its frame `frames[rows[i]]`. `bodyCount` is the island's; its discard slot
-    /// is bodyCount.
+    /// `joints[i]`, its frame `frames[rows[i]]`. `bodyCount` is the island's; its discard slots
+    /// are bodyCount + each worker of `tasks` (the world's threads, or null), on which every
+    /// pass below runs, a colour's groups at once.
     void Prepare(std::span<RevoluteJoint* const> joints, std::span<const SoftJointFrame> frames,
-                 std::span<const std::int32_t> rows, std::int32_t bodyCount);
+                 std::span<const std::int32_t> rows, std::int32_t bodyCount, TaskSystem* tasks);
     /// Positions i in Prepare's `joints` of the joints no colour had room for, in their order.
     std::span<const std::int32_t> Overflow() const { return m_colouring.overflow; }
 
@@ -59,10 +60,15 @@ class SoftRevoluteLanes
     void Store(Real factor) const;
 
   private:
+    /// Packs group i from its colour's joints.
+    void PackGroup(std::int32_t i, std::span<RevoluteJoint* const> joints,
+                   std::span<const SoftJointFrame> frames, std::span<const std::int32_t> rows);
+
     ConstraintColouring m_colouring;
     std::vector<ConstraintBodies> m_bodies; ///< scratch: the joints' bodies
     ColouringInputs m_colouredFrom;         ///< what m_colouring was computed from
     std::vector<SoftRevoluteGroup> m_groups;
+    ColourGroups m_groupsOfColour;         ///< where each colour's groups are, and their threads
     std::vector<RevoluteJoint*> m_sources; ///< each group's joints, kLanes per group (or null)
 };
 

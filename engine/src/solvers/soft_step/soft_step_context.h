@@ -27,6 +27,10 @@ struct SoftStepContext
     bool halfKick = false;        ///< this sweep belongs to one of the step's two half sub-steps
     bool closing = false;         ///< the closing half kick's sweep: springs act, rigid rows relax
     SoftBodies* bodies = nullptr;
+    /// The world's threads (SolverWorld::tasks), or null: the lanes of one colour, the bodies'
+    /// integration and the rows' preparation are spread over them (worker w writes the discard
+    /// slot bodies->discardIndex + w).
+    TaskSystem* tasks = nullptr;
 
     /// The time this sweep's impulses act over (s): a sub-step, or half of one in the step's
     /// opening and closing half kicks. A row bounded by a force or torque (motors, friction

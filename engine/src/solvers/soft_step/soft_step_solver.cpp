@@ -39,6 +39,7 @@ void SoftStepSolver::Step(SolverWorld& world, const StepContext& step)
 {
     m_context = MakeSoftStepContext(step);
     m_context.bodies = &m_bodies;
+    m_context.tasks = world.tasks;
     const auto solve = [&](Island& island) { SolveIsland(world, island, step); };
     // Without sleep, islands would only split the work.
     if (!world.allowSleep && BuildWorldIsland(world, m_island))
@@ -73,8 +74,8 @@ void SoftStepSolver::SolveIsland(SolverWorld& world, Island& island, const StepC
     }
     m_revolutes.Store(Real(m_context.substeps));
 
-    ScatterSoftBodies(m_bodies, island);
-    FinishBodies(world, island);
+    ScatterSoftBodies(m_bodies, island, world.tasks);
+    FinishBodies(world, island, world.tasks);
     world.solvedContacts.Record(m_contacts.SolvedContacts(), m_contacts.AnyHitEvents(), step);
     if (world.allowSleep)
     {
@@ -89,14 +90,14 @@ void SoftStepSolver::SubStep(bool first, const StepContext& step)
     // last sub-step's, and what the kick accumulates is doubled back to a whole sub-step's.
     const Real kick = first ? Real(0.5) : Real(1);
     m_context.halfKick = first;
-    IntegrateSoftVelocities(m_bodies, first);
+    IntegrateSoftVelocities(m_bodies, first, m_context.tasks);
     ScaleImpulses(kick);
     WarmStartJoints();
     m_contacts.WarmStart(m_context);
     SolveJoints(true);
     m_contacts.Solve(m_context, true);
     m_tree.Solve(m_context, true, true);
-    IntegrateSoftPositions(m_bodies, m_context.h, step);
+    IntegrateSoftPositions(m_bodies, m_context.h, step, m_context.tasks);
     m_contacts.BodiesMoved();
     if (m_context.contactModel == SoftContactModel::Rigid)
     {
@@ -130,7 +131,7 @@ void SoftStepSolver::CloseStep()
 {
     // Half a sub-step's kick, with half of the sub-step's constraint impulses, then one rigid
     // sweep; the accumulated impulses stay the last whole sub-step's (next step's warm start).
-    IntegrateSoftVelocities(m_bodies, true);
+    IntegrateSoftVelocities(m_bodies, true, m_context.tasks);
     m_context.halfKick = true;
     m_context.closing = true;
     m_contacts.SaveImpulses();
@@ -169,7 +170,7 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
         m_joints.push_back(&joint);
         m_candidates.push_back(SoftRevoluteLanes::LaneJoint(joint, m_context));
     }
-    const std::size_t bodyCount = m_bodies.velocities.size();
+    const std::size_t bodyCount = m_bodies.start.size();
     if (m_context.step->solver.softStep.jointTrees)
     {
         m_tree.Select(m_joints, m_frames, bodyCount);
@@ -199,8 +200,8 @@ void SoftStepSolver::SplitLaneJoints(bool useLanes)
             }
         }
     }
-    m_revolutes.Prepare(m_laneJoints, m_frames, m_laneRows,
-                        static_cast<std::int32_t>(m_bodies.start.size()));
+    m_revolutes.Prepare(m_laneJoints, m_frames, m_laneRows, m_bodies.DiscardIndex(),
+                        m_context.tasks);
     if (m_laneRows.empty())
     {
         return;
