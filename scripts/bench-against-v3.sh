@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Times meff beside Box2D v3 on samples/bench/ scenes, paired and alternating (README,
 # Performance): per scene and round, v3 on 1 worker, meff by colour and by the soft step on 1
-# thread, v3 on 2 workers, meff by colour on 2 threads. Prints ms/step per run, one line per
-# scene and round, with the load average. Box2D v3 is not a dependency: build its `benchmark`
-# program outside the project (erincatto/box2d, -DBOX2D_BENCHMARKS=ON) and pass its path.
+# thread, v3 on 2 workers, meff by colour and by the soft step on 2 threads. Prints ms/step per
+# run, one line per scene and round, with the load average. Box2D v3 is not a dependency: build
+# its `benchmark` program outside the project (erincatto/box2d, -DBOX2D_BENCHMARKS=ON) and pass
+# its path.
 #
 # Usage: scripts/bench-against-v3.sh MEFF V3_BENCHMARK ROUNDS SCENE...   (SCENE: large_pyramid ...)
 set -euo pipefail
@@ -21,7 +22,7 @@ for round in $(seq 1 "$rounds"); do
         steps=$(python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['world']['frames'])" \
             "$bench/$scene.json")
         line="round $round $scene load $(cut -d' ' -f1 /proc/loadavg)"
-        for run in v3:1 colour:1 soft_step:1 v3:2 colour:2; do
+        for run in v3:1 colour:1 soft_step:1 v3:2 colour:2 soft_step:2; do
             kind=${run%%:*}
             threads=${run##*:}
             if [ "$kind" = v3 ]; then

@@ -9,11 +9,11 @@ CLI::Option* AddThreadsOption(CLI::App& app, int& threads, const std::string& wh
 {
     return app
         .add_option("--threads", threads,
-                    what + " (default 1). The colour and soft step back ends use them: "
-                           "both for the narrow phase's manifolds and the broad phase's boxes, "
-                           "colour also for its contact and joint lanes, integration and "
-                           "writing the bodies back (box2d steps on one); the results are the "
-                           "same bit for bit for any N")
+                    what + " (default 1). The colour and soft step back ends use them for "
+                           "the narrow phase's manifolds, the broad phase's boxes and pairs, "
+                           "their contact and joint lanes, integration and writing the bodies "
+                           "back (box2d steps on one); the results are the same bit for bit "
+                           "for any N")
         ->type_name("N")
         ->check(CLI::Range(1, 1024));
 }

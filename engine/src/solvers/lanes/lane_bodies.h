@@ -148,6 +148,11 @@ template <typename State>
                                                      const std::int32_t (&store)[kLanes],
                                                      DiscardSlots discard, const BodyStateW& in)
 {
+    if (discard.own == discard.packed) // worker 0, or no threads: the packed stores
+    {
+        Scatter(states, store, in);
+        return;
+    }
     std::int32_t to[kLanes];
     StoresOfWorker(store, discard, to);
     Scatter(states, to, in);

@@ -7,6 +7,8 @@
 #include "solvers/soft_step/soft_contact_solver.h"
 #include "solvers/soft_step/soft_delta_lanes.h"
 
+#include <memory>
+
 namespace meff::detail
 {
 
@@ -346,7 +348,7 @@ void SoftContactLanes::PackGroup(std::int32_t i, std::span<const SoftContact> co
     const std::int32_t discardIndex = m_groupsOfColour.discardIndex;
     const std::int32_t end = m_colouring.colourStarts[colour + 1];
     SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
-    g = SoftContactGroup{};
+    std::construct_at(&g); // empty lanes: zero masses, no point, nothing to write
     for (int l = 0; l < kLanes; ++l)
     {
         g.source[l] = -1;
@@ -366,27 +368,35 @@ void SoftContactLanes::PackGroup(std::int32_t i, std::span<const SoftContact> co
     }
 }
 
+// The sweeps' closures hold their values, not references to them: the group functions are
+// called, not inlined, so a value behind a reference is loaded again for every group.
+
 void SoftContactLanes::WarmStart(const SoftStepContext& context)
 {
+    SoftContactGroup* groups = m_groups.data();
     Velocity* velocities = context.bodies->velocities.data();
-    m_groupsOfColour.ForEachGroupByColour([&](std::int32_t i, DiscardSlots discard)
-                                          { WarmStartGroup(m_groups[i], velocities, discard); });
+    m_groupsOfColour.ForEachGroupByColour([groups, velocities](std::int32_t i, DiscardSlots discard)
+                                          { WarmStartGroup(groups[i], velocities, discard); });
 }
 
 void SoftContactLanes::Solve(const SoftStepContext& context, bool useBias)
 {
+    SoftContactGroup* groups = m_groups.data();
+    const SoftStepContext* at = &context;
     const bool friction = !useBias || context.frictionInSolve;
     const bool measure = !m_errorsKnown;
     m_groupsOfColour.ForEachGroupByColour(
-        [&](std::int32_t i, DiscardSlots discard)
-        { SolveGroup(m_groups[i], context, useBias, friction, measure, discard); });
+        [groups, at, useBias, friction, measure](std::int32_t i, DiscardSlots discard)
+        { SolveGroup(groups[i], *at, useBias, friction, measure, discard); });
     m_errorsKnown = true;
 }
 
 void SoftContactLanes::CorrectPositions(const SoftStepContext& context)
 {
-    m_groupsOfColour.ForEachGroupByColour([&](std::int32_t i, DiscardSlots discard)
-                                          { CorrectGroup(m_groups[i], context, discard); });
+    SoftContactGroup* groups = m_groups.data();
+    const SoftStepContext* at = &context;
+    m_groupsOfColour.ForEachGroupByColour([groups, at](std::int32_t i, DiscardSlots discard)
+                                          { CorrectGroup(groups[i], *at, discard); });
 }
 
 void SoftContactLanes::ScaleImpulses(Real factor)

@@ -94,6 +94,11 @@ struct DeltaW
                                                            const std::int32_t (&store)[kLanes],
                                                            DiscardSlots discard, const DeltaW& d)
 {
+    if (discard.own == discard.packed) // worker 0, or no threads: the packed stores
+    {
+        ScatterDeltas(deltas, store, d);
+        return;
+    }
     std::int32_t to[kLanes];
     StoresOfWorker(store, discard, to);
     ScatterDeltas(deltas, to, d);

@@ -3,6 +3,7 @@
 #include "solvers/lanes/lane_bodies.h"
 #include "solvers/soft_step/soft_delta_lanes.h"
 
+#include <memory>
 #include <variant>
 
 namespace meff::detail
@@ -124,7 +125,7 @@ void SoftRevoluteLanes::PackGroup(std::int32_t i, std::span<RevoluteJoint* const
     const std::int32_t end = m_colouring.colourStarts[colour + 1];
     const std::int32_t discardIndex = m_groupsOfColour.discardIndex;
     SoftRevoluteGroup& g = m_groups[static_cast<std::size_t>(i)];
-    g = SoftRevoluteGroup{};
+    std::construct_at(&g); // empty lanes: zero masses, nothing to write
     RevoluteJoint** sources = &m_sources[static_cast<std::size_t>(i) * kLanes];
     int filled = 0;
     for (; filled < kLanes && first + filled < end; ++filled)
