@@ -3,6 +3,7 @@
 #include "dynamics/body.h"
 #include "dynamics/joint_slot.h"
 #include "solvers/box2d/joint_solver.h"
+#include "tasks/parallel_ranges.h"
 
 namespace meff::detail
 {
@@ -154,27 +155,35 @@ void SoftStepSolver::CloseStep()
 
 void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Real warmScale)
 {
-    m_joints.clear();
-    m_frames.clear();
-    m_candidates.clear();
-    std::size_t laneCandidates = 0;
-    for (const std::int32_t index : island.joints)
-    {
-        Joint& joint = world.joints[index].joint;
-        const Body& bodyA = world.bodies[joint.bodyA];
-        const Body& bodyB = world.bodies[joint.bodyB];
-        StoreOtherJointBodies(joint, world.bodies);
-        PrepareSoftJoint(joint, m_frames.emplace_back(), JointBodyOf(bodyA), JointBodyOf(bodyB),
-                         m_bodies.start[bodyA.islandIndex], m_bodies.start[bodyB.islandIndex],
-                         warmScale, m_context);
-        m_joints.push_back(&joint);
-        m_candidates.push_back(SoftRevoluteLanes::LaneJoint(joint, m_context));
-    }
+    const std::size_t count = island.joints.size();
+    m_joints.resize(count);
+    m_frames.resize(count);
+    m_candidates.resize(count);
+    // Each joint writes only itself, its frame and its slots here (a gear copies its other
+    // bodies, which it only reads): any thread may take any range of them.
+    ForRanges(m_context.tasks, static_cast<int>(count), kMinSoftJointsPerTask,
+              [&](int begin, int end, int)
+              {
+                  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end);
+                       ++k)
+                  {
+                      Joint& joint = world.joints[island.joints[k]].joint;
+                      const Body& bodyA = world.bodies[joint.bodyA];
+                      const Body& bodyB = world.bodies[joint.bodyB];
+                      StoreOtherJointBodies(joint, world.bodies);
+                      PrepareSoftJoint(joint, m_frames[k], JointBodyOf(bodyA), JointBodyOf(bodyB),
+                                       m_bodies.start[bodyA.islandIndex],
+                                       m_bodies.start[bodyB.islandIndex], warmScale, m_context);
+                      m_joints[k] = &joint;
+                      m_candidates[k] = SoftRevoluteLanes::LaneJoint(joint, m_context);
+                  }
+              });
     const std::size_t bodyCount = m_bodies.start.size();
     if (m_context.step->solver.softStep.jointTrees)
     {
         m_tree.Select(m_joints, m_frames, bodyCount);
     }
+    std::size_t laneCandidates = 0;
     for (std::size_t k = 0; k < m_joints.size(); ++k)
     {
         // A tree's joints are solved with their tree, not in lanes.

@@ -39,6 +39,10 @@
 namespace meff::detail
 {
 
+/// The fewest joints a thread is handed at once when they are prepared (a joint's frame, its
+/// effective masses and warm start cost hundreds of operations).
+inline constexpr int kMinSoftJointsPerTask = 64;
+
 class SoftStepSolver final : public Solver
 {
   public:
