@@ -4,6 +4,7 @@
 #include "dynamics/joint_slot.h"
 #include "joints/joint.h"
 #include "solvers/box2d/joint_solver.h"
+#include "tasks/parallel_ranges.h"
 
 namespace meff::detail
 {
@@ -30,24 +31,45 @@ void ColourJointSolver::Prepare(std::span<const std::int32_t> jointIndices,
                                 std::span<JointSlot> joints, std::span<const Body> bodies,
                                 SolverData& data)
 {
+    // Which joints the lanes take, and their bodies, on the threads: each joint writes only
+    // itself and its own slots.
+    const std::size_t count = jointIndices.size();
+    m_laneOf.resize(count);
+    m_bodiesOf.resize(count);
+    ForRanges(
+        data.tasks, static_cast<int>(count), kMinJointsPerTask,
+        [&](int begin, int end, int)
+        {
+            for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k)
+            {
+                Joint& joint = joints[jointIndices[k]].joint;
+                RevoluteJoint* revolute = LaneRevolute(joint, data.step.solver);
+                m_laneOf[k] = revolute;
+                if (revolute != nullptr)
+                {
+                    // The lanes prepare the rest, kLanes joints at a time.
+                    const JointBody a = JointBodyOf(bodies[joint.bodyA]);
+                    const JointBody b = JointBodyOf(bodies[joint.bodyB]);
+                    StoreJointBodies(*revolute, a, b);
+                    m_bodiesOf[k] = {a.solverIndex, b.solverIndex, SolverMoves(a.invMass, a.invI),
+                                     SolverMoves(b.invMass, b.invI)};
+                }
+            }
+        });
+    // Then in island order on this thread: the other joints prepared one by one (their warm
+    // start moves the bodies), the lane joints listed for the colouring.
     m_sequential.clear();
     m_candidates.clear();
     m_candidateRevolutes.clear();
     m_candidateBodies.clear();
-    for (const std::int32_t j : jointIndices)
+    for (std::size_t k = 0; k < count; ++k)
     {
-        Joint& joint = joints[j].joint;
-        if (RevoluteJoint* revolute = LaneRevolute(joint, data.step.solver))
+        Joint& joint = joints[jointIndices[k]].joint;
+        if (m_laneOf[k] != nullptr)
         {
-            // The lanes prepare the rest, kLanes joints at a time.
-            const JointBody a = JointBodyOf(bodies[joint.bodyA]);
-            const JointBody b = JointBodyOf(bodies[joint.bodyB]);
-            StoreJointBodies(*revolute, a, b);
             m_candidates.push_back(&joint);
-            m_candidateRevolutes.push_back(revolute);
-            m_candidateBodies.push_back({a.solverIndex, b.solverIndex,
-                                         SolverMoves(a.invMass, a.invI),
-                                         SolverMoves(b.invMass, b.invI)});
+            m_candidateRevolutes.push_back(m_laneOf[k]);
+            m_candidateBodies.push_back(m_bodiesOf[k]);
         }
         else
         {

@@ -17,6 +17,10 @@ namespace meff::detail
 struct Joint;
 struct RevoluteJoint;
 
+/// The fewest joints a thread is handed at once when the lane joints are picked and their
+/// bodies read (a joint costs two bodies' reads, mostly waiting on memory).
+inline constexpr int kMinJointsPerTask = 256;
+
 class ColourJointSolver final : public JointStage
 {
   public:
@@ -32,6 +36,9 @@ class ColourJointSolver final : public JointStage
     std::vector<Joint*> m_candidates;
     std::vector<RevoluteJoint*> m_candidateRevolutes;
     std::vector<ConstraintBodies> m_candidateBodies;
+    /// While preparing, by island position: the joint's lane revolute (or null) and its bodies.
+    std::vector<RevoluteJoint*> m_laneOf;
+    std::vector<ConstraintBodies> m_bodiesOf;
     bool m_lanesInUse = false;
     RevoluteLanes m_lanes;
 };
