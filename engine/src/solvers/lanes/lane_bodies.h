@@ -130,32 +130,35 @@ struct DiscardSlots
     std::int32_t own;    ///< discardIndex + worker
 };
 
-/// The stores of a worker of the world's TaskSystem: lanes packed to write the discard slot write
-/// the worker's own slot instead, so that the groups of one colour, solved on several threads
-/// at once, never write the same memory (for worker 0 the slots are the same).
-[[gnu::always_inline]] inline void StoresOfWorker(const std::int32_t (&store)[kLanes],
-                                                  DiscardSlots discard, std::int32_t (&to)[kLanes])
+/// Calls write(stores) with the stores of a worker of the world's TaskSystem: lanes packed to
+/// write the discard slot write the worker's own slot instead, so that the groups of one colour,
+/// solved on several threads at once, never write the same memory. For worker 0 (and without
+/// threads) the slots are the same, and the packed stores are passed as they are.
+template <typename Write>
+[[gnu::always_inline]] inline void WithWorkerStores(const std::int32_t (&store)[kLanes],
+                                                    DiscardSlots discard, Write&& write)
 {
+    if (discard.own == discard.packed)
+    {
+        write(store);
+        return;
+    }
+    std::int32_t to[kLanes];
     for (int l = 0; l < kLanes; ++l)
     {
         to[l] = store[l] == discard.packed ? discard.own : store[l];
     }
+    write(to);
 }
 
-/// Scatter for a worker of the world's TaskSystem (StoresOfWorker).
+/// Scatter for a worker of the world's TaskSystem (WithWorkerStores).
 template <typename State>
 [[gnu::always_inline]] inline void ScatterFromWorker(State* states,
                                                      const std::int32_t (&store)[kLanes],
                                                      DiscardSlots discard, const BodyStateW& in)
 {
-    if (discard.own == discard.packed) // worker 0, or no threads: the packed stores
-    {
-        Scatter(states, store, in);
-        return;
-    }
-    std::int32_t to[kLanes];
-    StoresOfWorker(store, discard, to);
-    Scatter(states, to, in);
+    WithWorkerStores(store, discard,
+                     [&](const std::int32_t(&to)[kLanes]) { Scatter(states, to, in); });
 }
 
 /// Fills lane l's bodies: the solver indices to read, where to write (the body, or the discard

@@ -89,19 +89,13 @@ struct DeltaW
 #endif
 }
 
-/// ScatterDeltas for a worker of the world's TaskSystem (StoresOfWorker).
+/// ScatterDeltas for a worker of the world's TaskSystem (WithWorkerStores).
 [[gnu::always_inline]] inline void ScatterDeltasFromWorker(SoftDelta* deltas,
                                                            const std::int32_t (&store)[kLanes],
                                                            DiscardSlots discard, const DeltaW& d)
 {
-    if (discard.own == discard.packed) // worker 0, or no threads: the packed stores
-    {
-        ScatterDeltas(deltas, store, d);
-        return;
-    }
-    std::int32_t to[kLanes];
-    StoresOfWorker(store, discard, to);
-    ScatterDeltas(deltas, to, d);
+    WithWorkerStores(store, discard,
+                     [&](const std::int32_t(&to)[kLanes]) { ScatterDeltas(deltas, to, d); });
 }
 
 /// SmallRotationW's lanes beyond kShortSeriesAngle: the longer series, and std::sin/std::cos
