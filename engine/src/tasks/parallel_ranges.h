@@ -25,6 +25,21 @@ void ForRanges(TaskSystem* tasks, int count, int minRange, F&& f)
     tasks->ParallelFor(count, minRange, f);
 }
 
+/// Runs f(i) for each i of [0, count) on `tasks` (ForRanges): for loops whose every index writes
+/// only its own memory.
+template <typename F>
+void ForEachIndex(TaskSystem* tasks, int count, int minRange, F&& f)
+{
+    ForRanges(tasks, count, minRange,
+              [&](int begin, int end, int)
+              {
+                  for (int i = begin; i < end; ++i)
+                  {
+                      f(i);
+                  }
+              });
+}
+
 /// Threads that may run the world's work at once (worker indices 0 to this − 1).
 inline int WorkerCount(const TaskSystem* tasks)
 {

@@ -1,8 +1,9 @@
 // Groups of kLanes constraints, colour after colour, and how a colour's groups are spread over the
-// world's threads: shared by the contact lanes (contact_lanes.h) and the joint lanes
-// (revolute_lanes.h). A colour's groups share no moving body, so they may be solved at the same
-// time; each writes its own bodies, its own rows and its worker's discard slot
-// (ScatterFromWorker), so the results are the same bit for bit for any thread count.
+// world's threads: shared by the colour back end's contact and joint lanes (contact_lanes.h,
+// revolute_lanes.h) and the soft step's (ColourGroups: soft_contact_lanes.h,
+// soft_revolute_lanes.h). A colour's groups share no moving body, so they may be solved at the
+// same time; each writes its own bodies, its own rows and its worker's discard slot
+// (WithWorkerStores), so the results are the same bit for bit for any thread count.
 #pragma once
 
 #include "dynamics/solver_types.h"
@@ -91,19 +92,23 @@ struct ColourGroups
                                 starts.begin()) -
                1;
     }
+    /// Group i's constraints: positions [first, end) of colouring.order (at most kLanes).
+    struct Rows
+    {
+        std::int32_t first, end;
+    };
+    Rows RowsOf(std::int32_t i, const ConstraintColouring& colouring) const
+    {
+        const int colour = ColourOf(i);
+        const std::int32_t first = colouring.colourStarts[colour] + (i - starts[colour]) * kLanes;
+        return {first, std::min(first + kLanes, colouring.colourStarts[colour + 1])};
+    }
     /// Runs f(group) on every group, in ranges on the threads: for what each group does alone
     /// (packing, scaling or copying its own rows).
     template <typename F>
     void ForEachGroup(F&& f) const
     {
-        ForRanges(tasks, starts.back(), minGroups,
-                  [&](int begin, int end, int)
-                  {
-                      for (std::int32_t i = begin; i < end; ++i)
-                      {
-                          f(i);
-                      }
-                  });
+        ForEachIndex(tasks, starts.back(), minGroups, f);
     }
     /// Runs f(group, discard) colour after colour, a colour's groups on the threads: for the
     /// sweeps, whose groups of one colour share no moving body.

@@ -36,26 +36,24 @@ void ColourJointSolver::Prepare(std::span<const std::int32_t> jointIndices,
     const std::size_t count = jointIndices.size();
     m_laneOf.resize(count);
     m_bodiesOf.resize(count);
-    ForRanges(
-        data.tasks, static_cast<int>(count), kMinJointsPerTask,
-        [&](int begin, int end, int)
-        {
-            for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k)
-            {
-                Joint& joint = joints[jointIndices[k]].joint;
-                RevoluteJoint* revolute = LaneRevolute(joint, data.step.solver);
-                m_laneOf[k] = revolute;
-                if (revolute != nullptr)
-                {
-                    // The lanes prepare the rest, kLanes joints at a time.
-                    const JointBody a = JointBodyOf(bodies[joint.bodyA]);
-                    const JointBody b = JointBodyOf(bodies[joint.bodyB]);
-                    StoreJointBodies(*revolute, a, b);
-                    m_bodiesOf[k] = {a.solverIndex, b.solverIndex, SolverMoves(a.invMass, a.invI),
-                                     SolverMoves(b.invMass, b.invI)};
-                }
-            }
-        });
+    ForEachIndex(data.tasks, static_cast<int>(count), kMinLaneJointPicksPerTask,
+                 [&](int i)
+                 {
+                     const auto k = static_cast<std::size_t>(i);
+                     Joint& joint = joints[jointIndices[k]].joint;
+                     RevoluteJoint* revolute = LaneRevolute(joint, data.step.solver);
+                     m_laneOf[k] = revolute;
+                     if (revolute != nullptr)
+                     {
+                         // The lanes prepare the rest, kLanes joints at a time.
+                         const JointBody a = JointBodyOf(bodies[joint.bodyA]);
+                         const JointBody b = JointBodyOf(bodies[joint.bodyB]);
+                         StoreJointBodies(*revolute, a, b);
+                         m_bodiesOf[k] = {a.solverIndex, b.solverIndex,
+                                          SolverMoves(a.invMass, a.invI),
+                                          SolverMoves(b.invMass, b.invI)};
+                     }
+                 });
     // Then in island order on this thread: the other joints prepared one by one (their warm
     // start moves the bodies), the lane joints listed for the colouring.
     m_sequential.clear();

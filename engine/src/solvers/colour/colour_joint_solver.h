@@ -19,7 +19,7 @@ struct RevoluteJoint;
 
 /// The fewest joints a thread is handed at once when the lane joints are picked and their
 /// bodies read (a joint costs two bodies' reads, mostly waiting on memory).
-inline constexpr int kMinJointsPerTask = 256;
+inline constexpr int kMinLaneJointPicksPerTask = 256;
 
 class ColourJointSolver final : public JointStage
 {

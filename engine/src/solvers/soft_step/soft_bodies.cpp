@@ -37,19 +37,12 @@ Velocity DampingOver(Real dt, const Body& body)
     return {{linear, linear}, Real(1) / (Real(1) + dt * body.angularDamping)};
 }
 
-/// Runs f(i) for each body i of [0, count), in ranges on `tasks`.
+/// Runs f(i) for each body i of [0, count), at least kMinBodiesPerTask to a range on `tasks`.
 template <typename F>
 void ForBodies(TaskSystem* tasks, std::size_t count, F&& f)
 {
-    ForRanges(tasks, static_cast<int>(count), kMinBodiesPerTask,
-              [&](int begin, int end, int)
-              {
-                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
-                       ++i)
-                  {
-                      f(i);
-                  }
-              });
+    ForEachIndex(tasks, static_cast<int>(count), kMinBodiesPerTask,
+                 [&](int i) { f(static_cast<std::size_t>(i)); });
 }
 
 /// Body `body`'s state into slot i of `bodies`, its sweep's start set to now.
@@ -179,14 +172,8 @@ void IntegrateSoftPositions(SoftBodies& bodies, Real h, const StepContext& step,
     const auto count = static_cast<std::int32_t>(bodies.start.size());
     // Whole blocks of kLanes bodies on the threads, the rest one by one.
     const std::int32_t blocks = count / kLanes;
-    ForRanges(tasks, blocks, kMinBodiesPerTask / kLanes,
-              [&](int begin, int end, int)
-              {
-                  for (std::int32_t b = begin; b < end; ++b)
-                  {
-                      IntegrateSoftPositionsW(bodies, b * kLanes, h, limits);
-                  }
-              });
+    ForEachIndex(tasks, blocks, kMinBodiesPerTask / kLanes,
+                 [&](std::int32_t b) { IntegrateSoftPositionsW(bodies, b * kLanes, h, limits); });
     for (std::int32_t i = blocks * kLanes; i < count; ++i)
     {
         IntegrateSoftPosition(bodies.velocities[i], bodies.deltas[i], h, limits);

@@ -25,7 +25,7 @@ struct alignas(4 * sizeof(Real)) SoftDelta
 struct SoftBodies
 {
     /// By solver index (the island's order), with a slot more for each worker of the world's
-    /// threads: SolverData::discardIndex (= the island's body count) + worker.
+    /// threads, written by the lanes that must not move their body: DiscardIndex() + worker.
     std::vector<Velocity> velocities;
     std::vector<SoftDelta> deltas;
     std::vector<Position> start; ///< centre of mass and angle when the step began

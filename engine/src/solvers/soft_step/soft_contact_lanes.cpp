@@ -341,12 +341,8 @@ void SoftContactLanes::Prepare(std::span<const SoftContact> contacts, std::int32
 
 void SoftContactLanes::PackGroup(std::int32_t i, std::span<const SoftContact> contacts)
 {
-    // The group's contacts: kLanes of its colour's, in the colouring's order.
-    const int colour = m_groupsOfColour.ColourOf(i);
-    const std::int32_t first =
-        m_colouring.colourStarts[colour] + (i - m_groupsOfColour.starts[colour]) * kLanes;
+    const auto [first, end] = m_groupsOfColour.RowsOf(i, m_colouring);
     const std::int32_t discardIndex = m_groupsOfColour.discardIndex;
-    const std::int32_t end = m_colouring.colourStarts[colour + 1];
     SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
     std::construct_at(&g); // empty lanes: zero masses, no point, nothing to write
     for (int l = 0; l < kLanes; ++l)
@@ -355,7 +351,7 @@ void SoftContactLanes::PackGroup(std::int32_t i, std::span<const SoftContact> co
         g.storeA[l] = g.storeB[l] = discardIndex;
     }
     int filled = 0;
-    for (; filled < kLanes && first + filled < end; ++filled)
+    for (; first + filled < end; ++filled)
     {
         const std::int32_t k = m_colouring.order[first + filled];
         PackLane(g, filled, k, contacts[k], discardIndex);

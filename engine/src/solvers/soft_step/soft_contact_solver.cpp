@@ -379,25 +379,12 @@ void SoftContactSolver::CollectLanes()
     m_lanes.Collect(m_contacts);
 }
 
-void SoftContactSolver::Store(std::span<Contact> contacts, const SoftStepContext& context)
+namespace
 {
-    m_solved.resize(m_contacts.size());
-    const Real perStep = Real(context.substeps);
-    // Each row writes its own contact and its own SolvedContact.
-    ForRanges(context.tasks, static_cast<int>(m_contacts.size()), kMinSoftContactsPerTask,
-              [&](int begin, int end, int)
-              {
-                  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end);
-                       ++k)
-                  {
-                      StoreContact(m_contacts[k], perStep, contacts[m_contacts[k].contactIndex],
-                                   m_solved[k]);
-                  }
-              });
-}
 
-void SoftContactSolver::StoreContact(const SoftContact& c, Real perStep, Contact& contact,
-                                     SolvedContact& solved)
+/// Contact c's sub-step impulses × perStep into its manifold (next step's warm start), and its
+/// step's totals into `solved`.
+void StoreContact(const SoftContact& c, Real perStep, Contact& contact, SolvedContact& solved)
 {
     solved.contactIndex = c.contactIndex;
     solved.pointCount = c.pointCount;
@@ -413,6 +400,22 @@ void SoftContactSolver::StoreContact(const SoftContact& c, Real perStep, Contact
         solved.tangentImpulse[j] = p.totalTangentImpulse;
         solved.normalVelocity[j] = p.relativeVelocity;
     }
+}
+
+} // namespace
+
+void SoftContactSolver::Store(std::span<Contact> contacts, const SoftStepContext& context)
+{
+    m_solved.resize(m_contacts.size());
+    const Real perStep = Real(context.substeps);
+    // Each row writes its own contact and its own SolvedContact.
+    ForEachIndex(context.tasks, static_cast<int>(m_contacts.size()), kMinSoftContactsPerTask,
+                 [&](int k)
+                 {
+                     const SoftContact& c = m_contacts[static_cast<std::size_t>(k)];
+                     StoreContact(c, perStep, contacts[c.contactIndex],
+                                  m_solved[static_cast<std::size_t>(k)]);
+                 });
 }
 
 } // namespace meff::detail

@@ -109,8 +109,6 @@ class SoftContactSolver
     void WarmStartContact(SoftContact& c, const SoftStepContext& context);
     void SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias);
     void CorrectContact(const SoftContact& c, const SoftStepContext& context);
-    static void StoreContact(const SoftContact& c, Real perStep, Contact& contact,
-                             SolvedContact& solved);
 
     std::vector<SoftContact> m_contacts; ///< island order
     SoftContactLanes m_lanes;

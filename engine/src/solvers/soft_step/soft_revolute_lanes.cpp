@@ -118,17 +118,13 @@ void SoftRevoluteLanes::PackGroup(std::int32_t i, std::span<RevoluteJoint* const
                                   std::span<const SoftJointFrame> frames,
                                   std::span<const std::int32_t> rows)
 {
-    // The group's joints: kLanes of its colour's, in the colouring's order.
-    const int colour = m_groupsOfColour.ColourOf(i);
-    const std::int32_t first =
-        m_colouring.colourStarts[colour] + (i - m_groupsOfColour.starts[colour]) * kLanes;
-    const std::int32_t end = m_colouring.colourStarts[colour + 1];
+    const auto [first, end] = m_groupsOfColour.RowsOf(i, m_colouring);
     const std::int32_t discardIndex = m_groupsOfColour.discardIndex;
     SoftRevoluteGroup& g = m_groups[static_cast<std::size_t>(i)];
     std::construct_at(&g); // empty lanes: zero masses, nothing to write
     RevoluteJoint** sources = &m_sources[static_cast<std::size_t>(i) * kLanes];
     int filled = 0;
-    for (; filled < kLanes && first + filled < end; ++filled)
+    for (; first + filled < end; ++filled)
     {
         const std::int32_t k = m_colouring.order[first + filled];
         const SoftJointFrame& f = frames[rows[k]];
@@ -157,36 +153,44 @@ void SoftRevoluteLanes::PackGroup(std::int32_t i, std::span<RevoluteJoint* const
 
 void SoftRevoluteLanes::WarmStart(const SoftStepContext& context)
 {
+    SoftRevoluteGroup* groups = m_groups.data();
+    const SoftBodies* bodies = context.bodies;
+    Velocity* velocities = context.bodies->velocities.data();
     m_groupsOfColour.ForEachGroupByColour(
-        [&](std::int32_t i, DiscardSlots discard) {
-            WarmStartGroup(m_groups[i], *context.bodies, context.bodies->velocities.data(),
-                           discard);
-        });
+        [groups, bodies, velocities](std::int32_t i, DiscardSlots discard)
+        { WarmStartGroup(groups[i], *bodies, velocities, discard); });
 }
 
 void SoftRevoluteLanes::Solve(const SoftStepContext& context, bool useBias)
 {
+    SoftRevoluteGroup* groups = m_groups.data();
+    const SoftStepContext* at = &context;
+    Velocity* velocities = context.bodies->velocities.data();
     m_groupsOfColour.ForEachGroupByColour(
-        [&](std::int32_t i, DiscardSlots discard)
-        { SolveGroup(m_groups[i], context, useBias, context.bodies->velocities.data(), discard); });
+        [groups, at, useBias, velocities](std::int32_t i, DiscardSlots discard)
+        { SolveGroup(groups[i], *at, useBias, velocities, discard); });
 }
 
 void SoftRevoluteLanes::ScaleImpulses(Real factor)
 {
-    m_groupsOfColour.ForEachGroup([&](std::int32_t i)
-                                  { m_groups[i].impulse = Splat(factor) * m_groups[i].impulse; });
+    SoftRevoluteGroup* groups = m_groups.data();
+    m_groupsOfColour.ForEachGroup([groups, factor](std::int32_t i)
+                                  { groups[i].impulse = Splat(factor) * groups[i].impulse; });
 }
 
 void SoftRevoluteLanes::CloseStep(const SoftStepContext& context)
 {
+    SoftRevoluteGroup* groups = m_groups.data();
+    const SoftStepContext* at = &context;
+    Velocity* velocities = context.bodies->velocities.data();
     m_groupsOfColour.ForEachGroupByColour(
-        [&](std::int32_t i, DiscardSlots discard)
+        [groups, at, velocities](std::int32_t i, DiscardSlots discard)
         {
-            SoftRevoluteGroup& g = m_groups[i];
+            SoftRevoluteGroup& g = groups[i];
             g.savedImpulse = g.impulse;
             g.impulse = Splat(Real(0.5)) * g.impulse;
-            WarmStartGroup(g, *context.bodies, context.bodies->velocities.data(), discard);
-            SolveGroup(g, context, false, context.bodies->velocities.data(), discard);
+            WarmStartGroup(g, *at->bodies, velocities, discard);
+            SolveGroup(g, *at, false, velocities, discard);
             g.impulse = g.savedImpulse;
         });
 }

@@ -29,7 +29,7 @@ struct SoftStepContext
     SoftBodies* bodies = nullptr;
     /// The world's threads (SolverWorld::tasks), or null: the lanes of one colour, the bodies'
     /// integration and the rows' preparation are spread over them (worker w writes the discard
-    /// slot bodies->discardIndex + w).
+    /// slot bodies->DiscardIndex() + w). GatherSoftBodies made a slot for each of them.
     TaskSystem* tasks = nullptr;
 
     /// The time this sweep's impulses act over (s): a sub-step, or half of one in the step's

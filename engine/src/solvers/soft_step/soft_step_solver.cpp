@@ -40,7 +40,7 @@ void SoftStepSolver::Step(SolverWorld& world, const StepContext& step)
 {
     m_context = MakeSoftStepContext(step);
     m_context.bodies = &m_bodies;
-    m_context.tasks = world.tasks;
+    m_context.tasks = world.tasks; // the threads GatherSoftBodies makes discard slots for
     const auto solve = [&](Island& island) { SolveIsland(world, island, step); };
     // Without sleep, islands would only split the work.
     if (!world.allowSleep && BuildWorldIsland(world, m_island))
@@ -161,23 +161,20 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
     m_candidates.resize(count);
     // Each joint writes only itself, its frame and its slots here (a gear copies its other
     // bodies, which it only reads): any thread may take any range of them.
-    ForRanges(m_context.tasks, static_cast<int>(count), kMinSoftJointsPerTask,
-              [&](int begin, int end, int)
-              {
-                  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end);
-                       ++k)
-                  {
-                      Joint& joint = world.joints[island.joints[k]].joint;
-                      const Body& bodyA = world.bodies[joint.bodyA];
-                      const Body& bodyB = world.bodies[joint.bodyB];
-                      StoreOtherJointBodies(joint, world.bodies);
-                      PrepareSoftJoint(joint, m_frames[k], JointBodyOf(bodyA), JointBodyOf(bodyB),
-                                       m_bodies.start[bodyA.islandIndex],
-                                       m_bodies.start[bodyB.islandIndex], warmScale, m_context);
-                      m_joints[k] = &joint;
-                      m_candidates[k] = SoftRevoluteLanes::LaneJoint(joint, m_context);
-                  }
-              });
+    ForEachIndex(m_context.tasks, static_cast<int>(count), kMinSoftJointsPerTask,
+                 [&](int i)
+                 {
+                     const auto k = static_cast<std::size_t>(i);
+                     Joint& joint = world.joints[island.joints[k]].joint;
+                     const Body& bodyA = world.bodies[joint.bodyA];
+                     const Body& bodyB = world.bodies[joint.bodyB];
+                     StoreOtherJointBodies(joint, world.bodies);
+                     PrepareSoftJoint(joint, m_frames[k], JointBodyOf(bodyA), JointBodyOf(bodyB),
+                                      m_bodies.start[bodyA.islandIndex],
+                                      m_bodies.start[bodyB.islandIndex], warmScale, m_context);
+                     m_joints[k] = &joint;
+                     m_candidates[k] = SoftRevoluteLanes::LaneJoint(joint, m_context);
+                 });
     const std::size_t bodyCount = m_bodies.start.size();
     if (m_context.step->solver.softStep.jointTrees)
     {

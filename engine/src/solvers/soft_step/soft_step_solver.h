@@ -17,11 +17,12 @@
 // searched as the Box2D back end does when sleep is on; without it the whole world is one
 // island, gathered from the arrays (island.h).
 //
-// With the world's threads (SolverWorld::tasks) the per-body loops, the contact rows'
-// preparation and storing, and each colour's lane groups in every sweep (contacts and plain
-// revolute joints) are spread over them; the joints solved one by one, the joint trees and
-// restitution stay on the calling thread. A colour's groups share no moving body and write
-// their worker's own discard slot, so the results are the same bit for bit for any thread count.
+// With the world's threads (SolverWorld::tasks) the per-body loops, the contact rows' and the
+// joints' preparation, the contact rows' storing, and each colour's lane groups in every sweep
+// (contacts and plain revolute joints) are spread over them; the colouring, solving the joints
+// that go one by one, the joint trees and restitution stay on the calling thread. A colour's groups
+// share no moving body and write their worker's own discard slot, so the results are the same bit
+// for bit for any thread count.
 #pragma once
 
 #include "joints/joint.h"
