@@ -430,28 +430,25 @@ void ListContacts(WorldState& world, std::vector<CollideEntry>& entries)
 void DecideAndCompute(WorldState& world, std::vector<CollideEntry>& entries)
 {
     const Real recycleDistance = RecycleDistance(world);
-    ForRanges(world.tasks, static_cast<int>(entries.size()), kMinContactsPerTask,
-              [&world, &entries, recycleDistance](int begin, int end, int)
-              {
-                  for (int i = begin; i < end; ++i)
-                  {
-                      CollideEntry& entry = entries[static_cast<std::size_t>(i)];
-                      if (entry.action != CollideAction::Pending)
-                      {
-                          continue;
-                      }
-                      Contact& contact = world.contacts[entry.contact];
-                      entry.action = DecideActive(world, contact, recycleDistance);
-                      if (entry.action == CollideAction::Keep)
-                      {
-                          KeepManifold(contact);
-                      }
-                      else if (entry.action == CollideAction::Update)
-                      {
-                          entry.touching = ComputeContact(world, contact);
-                      }
-                  }
-              });
+    ForEachIndex(world.tasks, static_cast<int>(entries.size()), kMinContactsPerTask,
+                 [&world, &entries, recycleDistance](int i)
+                 {
+                     CollideEntry& entry = entries[static_cast<std::size_t>(i)];
+                     if (entry.action != CollideAction::Pending)
+                     {
+                         return;
+                     }
+                     Contact& contact = world.contacts[entry.contact];
+                     entry.action = DecideActive(world, contact, recycleDistance);
+                     if (entry.action == CollideAction::Keep)
+                     {
+                         KeepManifold(contact);
+                     }
+                     else if (entry.action == CollideAction::Update)
+                     {
+                         entry.touching = ComputeContact(world, contact);
+                     }
+                 });
 }
 
 /// The third pass, in list order, so that wakes, events and their order are the serial walk's.

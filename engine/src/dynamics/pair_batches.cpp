@@ -96,14 +96,9 @@ void FindNewContactsInBatches(WorldState& world)
     std::vector<PairBatch>& lists = world.scratch.pairBatches;
     ReserveBatches(lists, batches, world.scratch.pairBatchCapacity);
     const WorldState& read = world;
-    ForRanges(world.tasks, batches, 1,
-              [&read, &lists, moves](int begin, int end, int)
-              {
-                  for (int b = begin; b < end; ++b)
-                  {
-                      FindBatchPairs(read, b, moves, lists[static_cast<std::size_t>(b)]);
-                  }
-              });
+    ForEachIndex(world.tasks, batches, 1,
+                 [&read, &lists, moves](int b)
+                 { FindBatchPairs(read, b, moves, lists[static_cast<std::size_t>(b)]); });
     EqualizeCapacity(lists, batches, world.scratch.pairBatchCapacity);
     for (int b = 0; b < batches; ++b)
     {

@@ -237,20 +237,17 @@ void SynchronizeShapesOnThreads(WorldState& world)
     ListMovedBodies(world, scratch.movedBodies);
     scratch.displacements.resize(world.shapes.size());
     const bool swept = SweepsBoxes(world);
-    ForRanges(world.tasks, static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
-              [&world, &scratch, swept](int begin, int end, int)
-              {
-                  for (int i = begin; i < end; ++i)
-                  {
-                      const Body& body = world.bodies[scratch.movedBodies[std::size_t(i)]];
-                      const Transform xf0 = StartPose(body);
-                      for (const std::int32_t s : body.shapes)
-                      {
-                          scratch.displacements[std::size_t(s)] =
-                              SweepShapeBox(world.shapes[s], xf0, body.xf, swept);
-                      }
-                  }
-              });
+    ForEachIndex(world.tasks, static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
+                 [&world, &scratch, swept](int i)
+                 {
+                     const Body& body = world.bodies[scratch.movedBodies[std::size_t(i)]];
+                     const Transform xf0 = StartPose(body);
+                     for (const std::int32_t s : body.shapes)
+                     {
+                         scratch.displacements[std::size_t(s)] =
+                             SweepShapeBox(world.shapes[s], xf0, body.xf, swept);
+                     }
+                 });
     for (const std::int32_t b : scratch.movedBodies)
     {
         for (const std::int32_t s : world.bodies[b].shapes)

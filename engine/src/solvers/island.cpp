@@ -182,20 +182,17 @@ void FinishBodies(SolverWorld& world, const Island& island, TaskSystem* tasks)
         }
     }
     // Each body is its own: any thread may take any range of them.
-    ForRanges(tasks, static_cast<int>(island.bodies.size()), kMinBodiesPerTask,
-              [&](int begin, int end, int)
-              {
-                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
-                       ++i)
-                  {
-                      Body& body = world.bodies[island.bodies[i]];
-                      body.sweep.c = island.positions[i].c;
-                      body.sweep.a = island.positions[i].a;
-                      body.linearVelocity = island.velocities[i].v;
-                      body.angularVelocity = island.velocities[i].w;
-                      SynchronizeTransform(body);
-                  }
-              });
+    ForEachIndex(tasks, static_cast<int>(island.bodies.size()), kMinBodiesPerTask,
+                 [&](int b)
+                 {
+                     const auto i = static_cast<std::size_t>(b);
+                     Body& body = world.bodies[island.bodies[i]];
+                     body.sweep.c = island.positions[i].c;
+                     body.sweep.a = island.positions[i].a;
+                     body.linearVelocity = island.velocities[i].v;
+                     body.angularVelocity = island.velocities[i].w;
+                     SynchronizeTransform(body);
+                 });
 }
 
 void UpdateSleep(SolverWorld& world, const Island& island, const StepContext& step,

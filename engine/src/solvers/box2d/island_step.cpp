@@ -113,30 +113,24 @@ void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& 
     island.velocities.resize(count + discardSlots);
     const Real h = step.dt;
     // Each body is its own: any thread may take any range of them.
-    ForRanges(world.tasks, static_cast<int>(count), kMinBodiesPerTask,
-              [&](int begin, int end, int)
-              {
-                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
-                       ++i)
-                  {
-                      Body& body = world.bodies[island.bodies[i]];
-                      island.positions[i] = {body.sweep.c, body.sweep.a};
-                      island.velocities[i] = IntegrateVelocity(body, world.gravity, h);
-                  }
-              });
+    ForEachIndex(world.tasks, static_cast<int>(count), kMinBodiesPerTask,
+                 [&](int b)
+                 {
+                     const auto i = static_cast<std::size_t>(b);
+                     Body& body = world.bodies[island.bodies[i]];
+                     island.positions[i] = {body.sweep.c, body.sweep.a};
+                     island.velocities[i] = IntegrateVelocity(body, world.gravity, h);
+                 });
 }
 
 void IntegratePositions(Island& island, const StepContext& step, TaskSystem* tasks)
 {
-    ForRanges(tasks, static_cast<int>(island.bodies.size()), kMinBodiesPerTask,
-              [&](int begin, int end, int)
-              {
-                  for (auto i = static_cast<std::size_t>(begin); i < static_cast<std::size_t>(end);
-                       ++i)
-                  {
-                      IntegratePosition(island.positions[i], island.velocities[i], step);
-                  }
-              });
+    ForEachIndex(tasks, static_cast<int>(island.bodies.size()), kMinBodiesPerTask,
+                 [&](int i)
+                 {
+                     const auto b = static_cast<std::size_t>(i);
+                     IntegratePosition(island.positions[b], island.velocities[b], step);
+                 });
 }
 
 void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts)

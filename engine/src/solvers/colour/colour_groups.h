@@ -73,7 +73,6 @@ struct ColourGroups
     std::vector<std::int32_t> starts{0};
     TaskSystem* tasks = nullptr;   ///< the world's threads, or null
     std::int32_t discardIndex = 0; ///< worker 0's discard slot (SolverData::discardIndex)
-    int minGroups = kMinGroupsPerTask;
 
     /// Cuts `colouring` into groups (GroupStartsOf) for `threads`, whose worker 0 writes the
     /// discard slot `discard`; returns the group count.
@@ -108,7 +107,7 @@ struct ColourGroups
     template <typename F>
     void ForEachGroup(F&& f) const
     {
-        ForEachIndex(tasks, starts.back(), minGroups, f);
+        ForEachIndex(tasks, starts.back(), kMinGroupsPerTask, f);
     }
     /// Runs f(group, discard) colour after colour, a colour's groups on the threads: for the
     /// sweeps, whose groups of one colour share no moving body.
@@ -117,7 +116,7 @@ struct ColourGroups
     {
         for (int c = 0; c < ColourCount(); ++c)
         {
-            ForEachGroupOfColour(starts, c, tasks, discardIndex, minGroups, f);
+            ForEachGroupOfColour(starts, c, tasks, discardIndex, kMinGroupsPerTask, f);
         }
     }
 };
