@@ -3,7 +3,8 @@
 // b2Island::SolveTOI, in the same order, so that both engines agree:
 //
 //   reset the step's time-of-impact state → loop:
-//     find the contact with the earliest time of impact (alpha, a fraction of the step) →
+//     find the contact with the earliest time of impact (alpha, a fraction of the step; the
+//     queue of impact_queue.h finds Box2D's choice from the contacts the last event changed) →
 //     move its two bodies back to alpha → refresh the contact; if it does not touch there,
 //     disable it for this step and restore the bodies → else build a mini-island of the pair
 //     and the static, kinematic or bullet bodies touching them (moved to alpha too) → solve it
@@ -131,12 +132,13 @@ bool ComputeImpact(WorldState& world, Contact& contact, const StepContext& step,
     return true;
 }
 
-/// The contact with the earliest impact in the step (kNullIndex for none), and its alpha.
+/// The contact with the earliest impact in the step (kNullIndex for none), and its alpha: what
+/// b2World::SolveTOI's walk of the contact list finds, from the contacts the last event may
+/// have changed (impact_queue.h).
 std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& minAlpha)
 {
-    std::int32_t minContact = kNullIndex;
-    minAlpha = 1;
-    for (std::int32_t c = world.contactList; c != kNullIndex; c = world.contacts[c].next)
+    ImpactQueue& queue = world.toiQueue;
+    for (const std::int32_t c : queue.TakeChanged())
     {
         Contact& contact = world.contacts[c];
         if ((contact.flags & Contact::Disabled) != 0 || contact.toiCount > kMaxSubSteps)
@@ -152,13 +154,9 @@ std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& m
         {
             continue;
         }
-        if (alpha < minAlpha)
-        {
-            minContact = c;
-            minAlpha = alpha;
-        }
+        queue.Push(c, alpha);
     }
-    return minContact;
+    return queue.PopFirst(minAlpha);
 }
 
 /// Moves the event's two bodies to alpha and refreshes its manifold. Returns false (and
@@ -350,27 +348,30 @@ void SynchronizeImpactIsland(WorldState& world, const Island& island)
 void SolveContinuous(WorldState& world, const StepContext& step)
 {
     ResetContinuousState(world);
+    world.toiQueue.Begin(world);
     Island& island = world.toiIsland;
     for (;;)
     {
         Real minAlpha = 1;
         const std::int32_t minContact = FindFirstImpact(world, step, minAlpha);
-        if (minContact == kNullIndex || Real(1) - Real(10) * kEpsilon < minAlpha)
+        if (minContact == kNullIndex)
         {
             break; // no impact left in this step
         }
         // The event moves bodies and refreshes manifolds: the reports of what was solved so
         // far are built first, at the transforms the solver left.
         BuildContactReports(world);
-        if (!AdvanceToImpact(world, minContact, minAlpha))
+        if (AdvanceToImpact(world, minContact, minAlpha))
         {
-            continue;
+            BuildImpactIsland(world, minContact, minAlpha, island);
+            SolveImpactIsland(world, island, step, minAlpha);
+            SynchronizeImpactIsland(world, island);
+            // The moved boxes may overlap new shapes: create those contacts now.
+            const std::int32_t oldHead = world.contactList;
+            FindNewContacts(world);
+            world.toiQueue.AddNewContacts(world, oldHead);
         }
-        BuildImpactIsland(world, minContact, minAlpha, island);
-        SolveImpactIsland(world, island, step, minAlpha);
-        SynchronizeImpactIsland(world, island);
-        // The moved boxes may overlap new shapes: create those contacts now.
-        FindNewContacts(world);
+        world.toiQueue.EventDone(world, minContact);
     }
 }
 

@@ -6,6 +6,7 @@
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
 #include "dynamics/contact_reports.h"
+#include "dynamics/impact_queue.h"
 #include "dynamics/joint_slot.h"
 #include "dynamics/pair_set.h"
 #include "dynamics/shape.h"
@@ -79,6 +80,7 @@ struct WorldState
     SolverSet solvers;       ///< the back ends (SolverSettings::kind picks one each step)
     Island toiIsland;        ///< the mini-island of one time-of-impact event
     ContactSolver toiSolver; ///< its contact rows: Box2D's, whatever the back end
+    ImpactQueue toiQueue;    ///< the candidate impacts of the continuous stage (not state)
 
     std::vector<ContactPointReport> contactReports; ///< built when read (contact_reports.h)
     std::vector<SolvedContact> solvedContacts;      ///< recorded, not yet in contactReports
