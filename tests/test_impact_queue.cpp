@@ -8,6 +8,7 @@
 
 #include "dynamics/impact_queue.h"
 #include "dynamics/pair_rules.h"
+#include "dynamics/step_stages.h"
 #include "dynamics/world_state.h"
 #include "meff/scene.h"
 #include "meff/world.h"
@@ -61,9 +62,9 @@ struct QueueWorld
     }
 };
 
-std::vector<std::int32_t> Taken(ImpactQueue& queue)
+std::vector<std::int32_t> Taken(const WorldState& state, ImpactQueue& queue)
 {
-    const std::vector<std::int32_t>& taken = queue.TakeChanged();
+    const std::vector<std::int32_t>& taken = queue.TakeChanged(state);
     return {taken.begin(), taken.end()};
 }
 
@@ -82,10 +83,10 @@ TEST_CASE("Impact queue: the smallest alpha first, the list's first among equals
     ImpactQueue queue;
     queue.Begin(q.State());
     // The newest contact heads the list, as b2ContactManager::AddPair puts it.
-    REQUIRE(Taken(queue) == std::vector<std::int32_t>{c3, c2, c1});
-    queue.Push(c1, Real(0.5));
-    queue.Push(c2, Real(0.5));
-    queue.Push(c3, Real(0.5));
+    REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c3, c2, c1});
+    queue.Push(q.State(), c1, Real(0.5));
+    queue.Push(q.State(), c2, Real(0.5));
+    queue.Push(q.State(), c3, Real(0.5));
     Real alpha = 0;
     // All at 0.5: the walk keeps the first it meets with the smallest alpha, the list's head.
     CHECK(queue.PopFirst(alpha) == c3);
@@ -95,10 +96,10 @@ TEST_CASE("Impact queue: the smallest alpha first, the list's first among equals
     CHECK(queue.PopFirst(alpha) == detail::kNullIndex);
 
     queue.Begin(q.State());
-    Taken(queue);
-    queue.Push(c3, Real(0.75));
-    queue.Push(c1, Real(0.25));
-    queue.Push(c2, Real(0.5));
+    Taken(q.State(), queue);
+    queue.Push(q.State(), c3, Real(0.75));
+    queue.Push(q.State(), c1, Real(0.25));
+    queue.Push(q.State(), c2, Real(0.5));
     CHECK(queue.PopFirst(alpha) == c1); // a smaller alpha wins wherever it is in the list
     CHECK(alpha == Real(0.25));
 }
@@ -111,20 +112,20 @@ TEST_CASE("Impact queue: an event's contacts are listed again and their old impa
     const std::int32_t c2 = q.Contact(q.ground, q.balls[1]);
     ImpactQueue queue;
     queue.Begin(q.State());
-    Taken(queue);
-    queue.Push(c1, Real(0.5));
-    queue.Push(c2, Real(0.25));
+    Taken(q.State(), queue);
+    queue.Push(q.State(), c1, Real(0.5));
+    queue.Push(q.State(), c2, Real(0.25));
     Real alpha = 0;
     REQUIRE(queue.PopFirst(alpha) == c2);
 
     // The event on c2 moved ball 1 and refreshed c2: c2 alone is listed (the static ground's
     // other contacts do not change), and c1's entry is still good.
     queue.EventDone(q.State(), c2);
-    REQUIRE(Taken(queue) == std::vector<std::int32_t>{c2});
-    queue.Push(c2, Real(0.75));
+    REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c2});
+    queue.Push(q.State(), c2, Real(0.75));
     // An event on c1 lists it again: its entry at 0.5, pushed before, is stale.
     queue.EventDone(q.State(), c1);
-    REQUIRE(Taken(queue) == std::vector<std::int32_t>{c1});
+    REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c1});
     CHECK(queue.PopFirst(alpha) == c2);
     CHECK(alpha == Real(0.75));
     CHECK(queue.PopFirst(alpha) == detail::kNullIndex);
@@ -137,23 +138,46 @@ TEST_CASE("Impact queue: a contact made during the stage goes before the whole l
     const std::int32_t c1 = q.Contact(q.ground, q.balls[0]);
     ImpactQueue queue;
     queue.Begin(q.State());
-    REQUIRE(Taken(queue) == std::vector<std::int32_t>{c1});
-    queue.Push(c1, Real(0.5));
+    REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c1});
+    queue.Push(q.State(), c1, Real(0.5));
 
-    const std::int32_t oldHead = q.State().contactList;
     const std::int32_t c2 = q.Contact(q.ground, q.balls[1]);
     const std::int32_t c3 = q.Contact(q.ground, q.balls[2]);
-    queue.AddNewContacts(q.State(), oldHead);
     // A new contact is one of a moved body, which the event lists with all its contacts.
     queue.EventDone(q.State(), c2);
     queue.EventDone(q.State(), c3);
-    REQUIRE(Taken(queue) == std::vector<std::int32_t>{c3, c2});
-    queue.Push(c2, Real(0.5));
-    queue.Push(c3, Real(0.5));
+    REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c3, c2});
+    queue.Push(q.State(), c2, Real(0.5));
+    queue.Push(q.State(), c3, Real(0.5));
     Real alpha = 0;
     CHECK(queue.PopFirst(alpha) == c3);
     CHECK(queue.PopFirst(alpha) == c2);
     CHECK(queue.PopFirst(alpha) == c1);
+}
+
+TEST_CASE("Swept contacts: the continuous stage's candidates stay listed as contacts come and go",
+          "[continuous][impact_queue]")
+{
+    QueueWorld q;
+    const std::int32_t c1 = q.Contact(q.ground, q.balls[0]);
+    const std::int32_t c2 = q.Contact(q.ground, q.balls[1]);
+    const std::int32_t c3 = q.Contact(q.ground, q.balls[2]);
+    const std::int32_t between = q.Contact(q.balls[0], q.balls[1]);
+    CHECK((q.state.contacts[between].flags & detail::Contact::Swept) == 0);
+    detail::DestroyContact(q.state, c1); // the last one takes its slot
+    detail::DestroyContact(q.state, between);
+    const std::int32_t c4 = q.Contact(q.ground, q.balls[3]);
+    REQUIRE(q.state.sweptContacts.size() == 3);
+    for (std::size_t slot = 0; slot < q.state.sweptContacts.size(); ++slot)
+    {
+        const std::int32_t c = q.state.sweptContacts[slot];
+        CHECK(q.state.contacts[c].sweptSlot == static_cast<std::int32_t>(slot));
+        CHECK((q.state.contacts[c].flags & detail::Contact::Swept) != 0);
+    }
+    ImpactQueue queue;
+    queue.Begin(q.State());
+    // c4 reused c1's index, or another: either way it is the list's head now.
+    CHECK(Taken(q.State(), queue) == std::vector<std::int32_t>{c4, c3, c2});
 }
 
 TEST_CASE("Impact queue: impacts the stage would not act on are not kept",
@@ -163,15 +187,15 @@ TEST_CASE("Impact queue: impacts the stage would not act on are not kept",
     const std::int32_t c1 = q.Contact(q.ground, q.balls[0]);
     ImpactQueue queue;
     queue.Begin(q.State());
-    Taken(queue);
+    Taken(q.State(), queue);
     // b2World::SolveTOI stops when the earliest alpha is above 1 − 10ε.
     const Real last = Real(1) - Real(10) * kEpsilon;
-    queue.Push(c1, std::nextafter(last, Real(2)));
-    queue.Push(c1, Real(1));
-    queue.Push(c1, std::numeric_limits<Real>::quiet_NaN());
+    queue.Push(q.State(), c1, std::nextafter(last, Real(2)));
+    queue.Push(q.State(), c1, Real(1));
+    queue.Push(q.State(), c1, std::numeric_limits<Real>::quiet_NaN());
     Real alpha = 0;
     CHECK(queue.PopFirst(alpha) == detail::kNullIndex);
-    queue.Push(c1, last);
+    queue.Push(q.State(), c1, last);
     CHECK(queue.PopFirst(alpha) == c1);
 }
 
@@ -185,9 +209,9 @@ TEST_CASE("Impact queue: with a user callback that could wake any body, every ca
     q.state.customFilter = [](ShapeId, ShapeId) { return true; };
     ImpactQueue queue;
     queue.Begin(q.State());
-    REQUIRE(Taken(queue) == std::vector<std::int32_t>{c2, c1});
+    REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c2, c1});
     queue.EventDone(q.State(), c1);
-    CHECK(Taken(queue) == std::vector<std::int32_t>{c2, c1});
+    CHECK(Taken(q.State(), queue) == std::vector<std::int32_t>{c2, c1});
 }
 
 TEST_CASE("Impact queue: listing only what an event changed steps as listing every candidate "

@@ -50,6 +50,9 @@ struct Contact
         Sensor = 1u << 5,    ///< a shape is a sensor: overlap test only, never solved
         HitEvents = 1u << 6, ///< a shape asked for hit events
         PoseKept = 1u << 7,  ///< keptPose is the pose the manifold was computed at
+        /// The continuous stage sweeps it: no sensor, and a body static, kinematic or a bullet.
+        /// Set at creation and fixed: types, bullets and sensors never change.
+        Swept = 1u << 8,
     };
 
     // What the list walks read (the narrow phase's, the islands') comes first, together, so
@@ -75,10 +78,13 @@ struct Contact
     /// The shapes' collision radii (Shape::Radius), copied at creation (a shape never changes
     /// its own), so that the solver and the reports need not visit the shapes.
     Real radiusA = 0, radiusB = 0;
-    int toiCount = 0;           ///< time-of-impact events this step
-    Real toi = 1;               ///< cached time of impact (fraction of the step)
-    std::uint64_t hitStep = 0;  ///< 1 + the step count when hitEvent was last written
-    std::int32_t hitEvent = -1; ///< its index in WorldState::hitEvents during that step
+    /// Creation order (WorldState::contactSerial): the list holds newer contacts first.
+    std::uint64_t serial = 0;
+    std::int32_t sweptSlot = -1; ///< with Swept: its index in WorldState::sweptContacts
+    int toiCount = 0;            ///< time-of-impact events this step
+    Real toi = 1;                ///< cached time of impact (fraction of the step)
+    std::uint64_t hitStep = 0;   ///< 1 + the step count when hitEvent was last written
+    std::int32_t hitEvent = -1;  ///< its index in WorldState::hitEvents during that step
     /// Two sharp polygons apart at the last update: the face that separated them, tested first
     /// at the next (UpdateManifold; exact, so Box2D's back end uses it too).
     SeparatingFace separatingFace;

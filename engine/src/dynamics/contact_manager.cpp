@@ -17,6 +17,17 @@ namespace
 {
 
 /// The user's filter (World::SetCustomFilterCallback), asked after the built-in rules.
+/// Contact::Swept: what the continuous stage sweeps (Box2D 2.4.1's b2World::SolveTOI skips a
+/// sensor and two ordinary dynamic bodies).
+bool IsSwept(const WorldState& world, const Contact& contact)
+{
+    const Body& bodyA = world.bodies[contact.bodyA];
+    const Body& bodyB = world.bodies[contact.bodyB];
+    const bool sweptA = bodyA.bullet || bodyA.type != BodyType::Dynamic;
+    const bool sweptB = bodyB.bullet || bodyB.type != BodyType::Dynamic;
+    return !contact.IsSensor() && (sweptA || sweptB);
+}
+
 bool CustomFilterAllows(const WorldState& world, std::int32_t a, std::int32_t b)
 {
     return !world.customFilter || world.customFilter(ShapeId{a, world.shapes[a].generation},
@@ -131,6 +142,14 @@ void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t sha
         contact.flags |= Contact::HitEvents;
     }
 
+    contact.serial = ++world.contactSerial;
+    if (IsSwept(world, contact))
+    {
+        contact.flags |= Contact::Swept;
+        contact.sweptSlot = static_cast<std::int32_t>(world.sweptContacts.size());
+        world.sweptContacts.push_back(index);
+    }
+
     world.contactPairs.Insert(ShapePairKey(sA, sB));
     contact.prev = kNullIndex;
     contact.next = world.contactList;
@@ -198,6 +217,15 @@ void DestroyContact(WorldState& world, std::int32_t contactIndex)
     UnlinkEdge(world, world.bodies[contact.bodyA], contactIndex, 0);
     UnlinkEdge(world, world.bodies[contact.bodyB], contactIndex, 1);
     world.contactPairs.Erase(ShapePairKey(contact.shapeA, contact.shapeB));
+    if ((contact.flags & Contact::Swept) != 0)
+    {
+        // The last swept contact takes its slot.
+        const std::int32_t moved = world.sweptContacts.back();
+        world.sweptContacts[static_cast<std::size_t>(contact.sweptSlot)] = moved;
+        world.contacts[moved].sweptSlot = contact.sweptSlot;
+        world.sweptContacts.pop_back();
+        contact.sweptSlot = -1;
+    }
     contact.alive = false;
     contact.flags = 0;
     world.freeContacts.push_back(contactIndex);

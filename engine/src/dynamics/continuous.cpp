@@ -53,7 +53,8 @@ void RestoreSweep(Body& body, const Sweep& backup)
 }
 
 /// Every sweep starts at the beginning of the step, and no contact has a cached impact yet.
-/// Contact::Disabled stays: a contact the pre-solve callback refused is not swept either.
+/// Contact::Disabled stays: a contact the pre-solve callback refused is not swept either. Only
+/// swept contacts ever get an impact, an island mark or an event count: only they are reset.
 void ResetContinuousState(WorldState& world)
 {
     for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
@@ -62,7 +63,7 @@ void ResetContinuousState(WorldState& world)
         body.islandFlag = false;
         body.sweep.alpha0 = 0;
     }
-    for (std::int32_t c = world.contactList; c != kNullIndex; c = world.contacts[c].next)
+    for (const std::int32_t c : world.sweptContacts)
     {
         Contact& contact = world.contacts[c];
         contact.flags &= ~(Contact::Toi | Contact::Island);
@@ -138,7 +139,7 @@ bool ComputeImpact(WorldState& world, Contact& contact, const StepContext& step,
 std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& minAlpha)
 {
     ImpactQueue& queue = world.toiQueue;
-    for (const std::int32_t c : queue.TakeChanged())
+    for (const std::int32_t c : queue.TakeChanged(world))
     {
         Contact& contact = world.contacts[c];
         if ((contact.flags & Contact::Disabled) != 0 || contact.toiCount > kMaxSubSteps)
@@ -154,7 +155,7 @@ std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& m
         {
             continue;
         }
-        queue.Push(c, alpha);
+        queue.Push(world, c, alpha);
     }
     return queue.PopFirst(minAlpha);
 }
@@ -367,9 +368,7 @@ void SolveContinuous(WorldState& world, const StepContext& step)
             SolveImpactIsland(world, island, step, minAlpha);
             SynchronizeImpactIsland(world, island);
             // The moved boxes may overlap new shapes: create those contacts now.
-            const std::int32_t oldHead = world.contactList;
             FindNewContacts(world);
-            world.toiQueue.AddNewContacts(world, oldHead);
         }
         world.toiQueue.EventDone(world, minContact);
     }

@@ -7,16 +7,17 @@
 // smallest alpha wins. Walking 70,000 contacts for each of thousands of events a step made that
 // search nearly all of a churning scene's step. The queue gives the same answer, bit for bit:
 //
-//   - only swept contacts are candidates (not a sensor, one side static, kinematic or a bullet):
-//     the others never have an impact, and body types, bullets and sensors cannot change while
-//     the world steps;
+//   - only swept contacts (Contact::Swept, kept in WorldState::sweptContacts) are candidates:
+//     the others never have an impact;
 //   - an event changes only the contacts around it: the flags and counts of the contacts it
 //     refreshes, the cached impacts of its island's dynamic bodies, whether its bodies and their
-//     neighbours are awake, and the contacts it creates. Those contacts are listed as changed;
-//     every other contact is as the last search left it;
-//   - the listed contacts are examined in contact-list order, so that the impacts computed (and
-//     the sweeps they advance) are the walk's, in the walk's order; each one still valid enters
-//     a heap ordered by (alpha, list position) — the walk's "first smallest";
+//     neighbours are awake, and the contacts it creates (each one of a body it moved). The
+//     contacts of those bodies are listed as changed; every other contact is as the last search
+//     left it;
+//   - the listed contacts are examined in contact-list order (newest first: Contact::serial),
+//     so that the impacts computed (and the sweeps they advance) are the walk's, in the walk's
+//     order; each one still valid enters a heap ordered by alpha, then list order — the walk's
+//     "first smallest";
 //   - an entry goes stale when its contact is listed again (a version per contact).
 //
 // A user callback that can run during the stage (pre-solve, custom filter) may wake any body:
@@ -42,29 +43,25 @@ class ImpactQueue
 
     /// The contacts listed since the last call, in contact-list order. Each one's earlier entry
     /// is stale; Push puts back those that still have an impact.
-    const std::vector<std::int32_t>& TakeChanged();
+    const std::vector<std::int32_t>& TakeChanged(const WorldState& world);
 
     /// A contact's impact at alpha (a fraction of the step). Impacts the stage would not act on
     /// (alpha > 1 − 10ε, as b2World::SolveTOI's stop test, or NaN) are not kept.
-    void Push(std::int32_t contactIndex, Real alpha);
+    void Push(const WorldState& world, std::int32_t contactIndex, Real alpha);
 
     /// The earliest impact (the first in list order among equal alphas), removed from the
     /// queue, or kNullIndex for none.
     std::int32_t PopFirst(Real& alpha);
 
-    /// After an event on contactIndex: lists the contacts it may have changed (see above).
+    /// After an event on contactIndex, and the contacts it created: lists the contacts it may
+    /// have changed (see above).
     void EventDone(const WorldState& world, std::int32_t contactIndex);
-
-    /// After FindNewContacts: places the contacts it created, which went to the front of the
-    /// contact list before oldHead, in the list's order. EventDone lists them: each is a contact
-    /// of a body the event moved.
-    void AddNewContacts(const WorldState& world, std::int32_t oldHead);
 
   private:
     struct Entry
     {
         Real alpha;
-        std::int64_t order; ///< list position: the walk meets smaller ones first
+        std::uint64_t serial; ///< the contact's: the walk meets larger ones first
         std::int32_t contact;
         std::uint32_t version;
     };
@@ -76,18 +73,13 @@ class ImpactQueue
     void Grow(std::size_t contactCount);
 
     std::vector<Entry> m_heap;
-    std::vector<std::int32_t> m_candidates; ///< the swept contacts, in list order
-    std::vector<std::int32_t> m_changed;    ///< listed since the last TakeChanged
-    std::vector<std::int32_t> m_taken;      ///< what TakeChanged returned
-    std::vector<std::int32_t> m_fresh;      ///< AddNewContacts' working list
+    std::vector<std::int32_t> m_changed; ///< listed since the last TakeChanged
+    std::vector<std::int32_t> m_taken;   ///< what TakeChanged returned
     /// By contact index:
-    std::vector<std::int64_t> m_order;     ///< position in the list (new contacts: negative)
     std::vector<std::uint32_t> m_version;  ///< bumped each time the contact is taken
     std::vector<std::uint32_t> m_listedAt; ///< the round that last listed it
-    std::vector<std::uint8_t> m_swept;     ///< a candidate
     std::uint32_t m_round = 0;
-    std::int64_t m_nextFront = 0; ///< the position of the next contact put at the list's front
-    bool m_listAll = false;       ///< a user callback may run: list every candidate each event
+    bool m_listAll = false; ///< a user callback may run: list every candidate each event
 };
 
 } // namespace meff::detail

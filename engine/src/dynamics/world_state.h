@@ -67,6 +67,9 @@ struct WorldState
     std::vector<std::int32_t> freeContacts;
     std::int32_t contactList = kNullIndex; ///< newest first, as b2ContactManager::m_contactList
     int contactCount = 0;
+    std::uint64_t contactSerial = 0; ///< the last contact's Contact::serial
+    /// The contacts with Contact::Swept, in no order: the continuous stage's candidates.
+    std::vector<std::int32_t> sweptContacts;
     /// ShapePairKey of every contact's two shapes (contact_manager.cpp): does a pair have one?
     PairSet contactPairs;
 
