@@ -6,9 +6,18 @@
 # its `benchmark` program outside the project (erincatto/box2d, -DBOX2D_BENCHMARKS=ON) and pass
 # its path.
 #
-# Usage: scripts/bench-against-v3.sh MEFF V3_BENCHMARK ROUNDS SCENE...   (SCENE: large_pyramid ...)
+# The bench scenes and v3's benchmark (-nc) turn continuous collision off; with --continuous
+# both run with it on, as a game's world does by default (meff on copies of the scenes).
+#
+# Usage: scripts/bench-against-v3.sh [--continuous] MEFF V3_BENCHMARK ROUNDS SCENE...
+#        (SCENE: large_pyramid ...)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+continuous=0
+if [ "${1:-}" = --continuous ]; then
+    continuous=1
+    shift
+fi
 meff=$(realpath "$1")
 v3=$(realpath "$2")
 rounds=$3
@@ -17,6 +26,15 @@ bench=$PWD/samples/bench
 work=$(mktemp -d) # v3's benchmark writes files into the working directory
 trap 'rm -rf "$work"' EXIT
 cd "$work"
+v3_continuous=-nc
+if [ "$continuous" = 1 ]; then
+    v3_continuous=
+    for scene in "$@"; do
+        python3 -c "import json, sys; d = json.load(open(sys.argv[1])); d['world']['continuous'] = True; json.dump(d, open(sys.argv[2], 'w'))" \
+            "$bench/$scene.json" "$work/$scene.json"
+    done
+    bench=$work
+fi
 for round in $(seq 1 "$rounds"); do
     for scene in "$@"; do
         steps=$(python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['world']['frames'])" \
@@ -26,7 +44,7 @@ for round in $(seq 1 "$rounds"); do
             kind=${run%%:*}
             threads=${run##*:}
             if [ "$kind" = v3 ]; then
-                total=$("$v3" -b="$scene" -w="$threads" -t=2 -r=1 -nc 2>/dev/null |
+                total=$("$v3" -b="$scene" -w="$threads" -t=2 -r=1 $v3_continuous 2>/dev/null |
                     awk '/^run 0/ {print $4}')
                 ms=$(python3 -c "import sys; print('%.3f' % (float(sys.argv[1]) / int(sys.argv[2])))" \
                     "${total:-nan}" "$steps")
