@@ -84,9 +84,9 @@ TEST_CASE("Impact queue: the smallest alpha first, the list's first among equals
     queue.Begin(q.State());
     // The newest contact heads the list, as b2ContactManager::AddPair puts it.
     REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c3, c2, c1});
-    queue.Push(q.State(), c1, Real(0.5));
-    queue.Push(q.State(), c2, Real(0.5));
-    queue.Push(q.State(), c3, Real(0.5));
+    queue.Set(q.State(), c1, Real(0.5));
+    queue.Set(q.State(), c2, Real(0.5));
+    queue.Set(q.State(), c3, Real(0.5));
     Real alpha = 0;
     // All at 0.5: the walk keeps the first it meets with the smallest alpha, the list's head.
     CHECK(queue.PopFirst(alpha) == c3);
@@ -97,14 +97,14 @@ TEST_CASE("Impact queue: the smallest alpha first, the list's first among equals
 
     queue.Begin(q.State());
     Taken(q.State(), queue);
-    queue.Push(q.State(), c3, Real(0.75));
-    queue.Push(q.State(), c1, Real(0.25));
-    queue.Push(q.State(), c2, Real(0.5));
+    queue.Set(q.State(), c3, Real(0.75));
+    queue.Set(q.State(), c1, Real(0.25));
+    queue.Set(q.State(), c2, Real(0.5));
     CHECK(queue.PopFirst(alpha) == c1); // a smaller alpha wins wherever it is in the list
     CHECK(alpha == Real(0.25));
 }
 
-TEST_CASE("Impact queue: an event's contacts are listed again and their old impacts dropped",
+TEST_CASE("Impact queue: an event's contacts are listed again, their impacts replaced or dropped",
           "[continuous][impact_queue]")
 {
     QueueWorld q;
@@ -113,8 +113,8 @@ TEST_CASE("Impact queue: an event's contacts are listed again and their old impa
     ImpactQueue queue;
     queue.Begin(q.State());
     Taken(q.State(), queue);
-    queue.Push(q.State(), c1, Real(0.5));
-    queue.Push(q.State(), c2, Real(0.25));
+    queue.Set(q.State(), c1, Real(0.5));
+    queue.Set(q.State(), c2, Real(0.25));
     Real alpha = 0;
     REQUIRE(queue.PopFirst(alpha) == c2);
 
@@ -122,10 +122,12 @@ TEST_CASE("Impact queue: an event's contacts are listed again and their old impa
     // other contacts do not change), and c1's entry is still good.
     queue.EventDone(q.State(), c2);
     REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c2});
-    queue.Push(q.State(), c2, Real(0.75));
-    // An event on c1 lists it again: its entry at 0.5, pushed before, is stale.
+    queue.Set(q.State(), c2, Real(0.75));
+    queue.Set(q.State(), c2, Real(0.75)); // the same impact again: its entry stands
+    // An event on c1 lists it again; now it has no impact to act on: its entry at 0.5 goes.
     queue.EventDone(q.State(), c1);
     REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c1});
+    queue.Drop(c1);
     CHECK(queue.PopFirst(alpha) == c2);
     CHECK(alpha == Real(0.75));
     CHECK(queue.PopFirst(alpha) == detail::kNullIndex);
@@ -139,7 +141,7 @@ TEST_CASE("Impact queue: a contact made during the stage goes before the whole l
     ImpactQueue queue;
     queue.Begin(q.State());
     REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c1});
-    queue.Push(q.State(), c1, Real(0.5));
+    queue.Set(q.State(), c1, Real(0.5));
 
     const std::int32_t c2 = q.Contact(q.ground, q.balls[1]);
     const std::int32_t c3 = q.Contact(q.ground, q.balls[2]);
@@ -147,8 +149,8 @@ TEST_CASE("Impact queue: a contact made during the stage goes before the whole l
     queue.EventDone(q.State(), c2);
     queue.EventDone(q.State(), c3);
     REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{c3, c2});
-    queue.Push(q.State(), c2, Real(0.5));
-    queue.Push(q.State(), c3, Real(0.5));
+    queue.Set(q.State(), c2, Real(0.5));
+    queue.Set(q.State(), c3, Real(0.5));
     Real alpha = 0;
     CHECK(queue.PopFirst(alpha) == c3);
     CHECK(queue.PopFirst(alpha) == c2);
@@ -180,6 +182,39 @@ TEST_CASE("Swept contacts: the continuous stage's candidates stay listed as cont
     CHECK(Taken(q.State(), queue) == std::vector<std::int32_t>{c4, c3, c2});
 }
 
+TEST_CASE("Impact queue: a kinematic body's other contacts are listed only when the event woke "
+          "it",
+          "[continuous][impact_queue]")
+{
+    for (const bool asleep : {true, false})
+    {
+        QueueWorld q;
+        detail::Body& paddle = q.state.bodies.emplace_back();
+        paddle.type = BodyType::Kinematic;
+        paddle.awake = !asleep;
+        detail::Shape& shape = q.state.shapes.emplace_back();
+        shape.alive = true;
+        shape.body = 5;
+        shape.type = ShapeType::Circle;
+        shape.circle = Circle{{0, 0}, 1};
+        const std::int32_t hit = q.Contact(5, q.balls[0]);
+        const std::int32_t other = q.Contact(5, q.balls[1]);
+        ImpactQueue queue;
+        queue.Begin(q.State());
+        REQUIRE(Taken(q.State(), queue) == std::vector<std::int32_t>{other, hit});
+
+        queue.BeforeEvent(q.State(), hit);
+        q.state.bodies[5].awake = true; // the event wakes the paddle, as AdvanceToImpact does
+        queue.EventDone(q.State(), hit);
+        INFO("paddle asleep before the event: " << asleep);
+        // Ball 0 is dynamic: its contacts are listed. The paddle's contact with ball 1 changes
+        // only if the paddle woke: its cached impact stays (Box2D invalidates dynamic bodies').
+        const std::vector<std::int32_t> expected =
+            asleep ? std::vector<std::int32_t>{other, hit} : std::vector<std::int32_t>{hit};
+        CHECK(Taken(q.State(), queue) == expected);
+    }
+}
+
 TEST_CASE("Impact queue: impacts the stage would not act on are not kept",
           "[continuous][impact_queue]")
 {
@@ -190,12 +225,12 @@ TEST_CASE("Impact queue: impacts the stage would not act on are not kept",
     Taken(q.State(), queue);
     // b2World::SolveTOI stops when the earliest alpha is above 1 − 10ε.
     const Real last = Real(1) - Real(10) * kEpsilon;
-    queue.Push(q.State(), c1, std::nextafter(last, Real(2)));
-    queue.Push(q.State(), c1, Real(1));
-    queue.Push(q.State(), c1, std::numeric_limits<Real>::quiet_NaN());
+    queue.Set(q.State(), c1, std::nextafter(last, Real(2)));
+    queue.Set(q.State(), c1, Real(1));
+    queue.Set(q.State(), c1, std::numeric_limits<Real>::quiet_NaN());
     Real alpha = 0;
     CHECK(queue.PopFirst(alpha) == detail::kNullIndex);
-    queue.Push(q.State(), c1, last);
+    queue.Set(q.State(), c1, last);
     CHECK(queue.PopFirst(alpha) == c1);
 }
 

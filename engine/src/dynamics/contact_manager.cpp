@@ -16,7 +16,6 @@ namespace meff::detail
 namespace
 {
 
-/// The user's filter (World::SetCustomFilterCallback), asked after the built-in rules.
 /// Contact::Swept: what the continuous stage sweeps (Box2D 2.4.1's b2World::SolveTOI skips a
 /// sensor and two ordinary dynamic bodies).
 bool IsSwept(const WorldState& world, const Contact& contact)
@@ -28,6 +27,7 @@ bool IsSwept(const WorldState& world, const Contact& contact)
     return !contact.IsSensor() && (sweptA || sweptB);
 }
 
+/// The user's filter (World::SetCustomFilterCallback), asked after the built-in rules.
 bool CustomFilterAllows(const WorldState& world, std::int32_t a, std::int32_t b)
 {
     return !world.customFilter || world.customFilter(ShapeId{a, world.shapes[a].generation},

@@ -54,7 +54,8 @@ void RestoreSweep(Body& body, const Sweep& backup)
 
 /// Every sweep starts at the beginning of the step, and no contact has a cached impact yet.
 /// Contact::Disabled stays: a contact the pre-solve callback refused is not swept either. Only
-/// swept contacts ever get an impact, an island mark or an event count: only they are reset.
+/// swept contacts get an impact or an event count, and only theirs are read here for an island
+/// mark (BuildImpactIsland passes over the others, marked by the discrete islands or not).
 void ResetContinuousState(WorldState& world)
 {
     for (std::int32_t b = world.bodyList; b != kNullIndex; b = world.bodies[b].next)
@@ -72,26 +73,15 @@ void ResetContinuousState(WorldState& world)
     }
 }
 
-/// The time of impact of one contact as a fraction of the whole step, or 1 for none; false
-/// when the contact is not swept at all (both sides inactive — asleep or static — or two
-/// non-bullet dynamics).
+/// The time of impact of a swept contact (Contact::Swept) as a fraction of the whole step, or 1
+/// for none; false when neither side is active (asleep or static), and nothing is computed.
 bool ComputeImpact(WorldState& world, Contact& contact, const StepContext& step, Real& alpha)
 {
-    if (contact.IsSensor())
-    {
-        return false;
-    }
     Body& bodyA = world.bodies[contact.bodyA];
     Body& bodyB = world.bodies[contact.bodyB];
     const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
     const bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
     if (!activeA && !activeB)
-    {
-        return false;
-    }
-    const bool sweptA = bodyA.bullet || bodyA.type != BodyType::Dynamic;
-    const bool sweptB = bodyB.bullet || bodyB.type != BodyType::Dynamic;
-    if (!sweptA && !sweptB)
     {
         return false;
     }
@@ -142,20 +132,23 @@ std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& m
     for (const std::int32_t c : queue.TakeChanged(world))
     {
         Contact& contact = world.contacts[c];
+        Real alpha = 1;
         if ((contact.flags & Contact::Disabled) != 0 || contact.toiCount > kMaxSubSteps)
         {
-            continue;
+            queue.Drop(c);
         }
-        Real alpha = 1;
-        if ((contact.flags & Contact::Toi) != 0)
+        else if ((contact.flags & Contact::Toi) != 0)
         {
-            alpha = contact.toi; // still valid: neither body has moved since
+            queue.Set(world, c, contact.toi); // still valid: neither body has moved since
         }
-        else if (!ComputeImpact(world, contact, step, alpha))
+        else if (ComputeImpact(world, contact, step, alpha))
         {
-            continue;
+            queue.Set(world, c, alpha);
         }
-        queue.Push(world, c, alpha);
+        else
+        {
+            queue.Drop(c);
+        }
     }
     return queue.PopFirst(minAlpha);
 }
@@ -232,11 +225,7 @@ void BuildImpactIsland(WorldState& world, std::int32_t contactIndex, Real alpha,
                 continue;
             }
             Body& other = world.bodies[edge.other];
-            if (other.type == BodyType::Dynamic && !body.bullet && !other.bullet)
-            {
-                continue;
-            }
-            if (contact.IsSensor())
+            if (!ImpactIslandMayTake(body, other, contact))
             {
                 continue;
             }
@@ -362,6 +351,7 @@ void SolveContinuous(WorldState& world, const StepContext& step)
         // The event moves bodies and refreshes manifolds: the reports of what was solved so
         // far are built first, at the transforms the solver left.
         BuildContactReports(world);
+        world.toiQueue.BeforeEvent(world, minContact);
         if (AdvanceToImpact(world, minContact, minAlpha))
         {
             BuildImpactIsland(world, minContact, minAlpha, island);

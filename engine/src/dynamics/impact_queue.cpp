@@ -26,6 +26,7 @@ void ImpactQueue::Begin(const WorldState& world)
     m_heap.clear();
     m_changed.clear();
     Grow(world.contacts.size());
+    std::fill(m_live.begin(), m_live.end(), std::uint8_t{0});
     NextRound(); // a step that threw mid-stage may have left contacts listed
     for (const std::int32_t c : world.sweptContacts)
     {
@@ -35,6 +36,7 @@ void ImpactQueue::Begin(const WorldState& world)
 
 const std::vector<std::int32_t>& ImpactQueue::TakeChanged(const WorldState& world)
 {
+    Grow(world.contacts.size()); // the last event may have made contacts
     if (m_listAll)
     {
         m_changed.assign(world.sweptContacts.begin(), world.sweptContacts.end());
@@ -44,23 +46,37 @@ const std::vector<std::int32_t>& ImpactQueue::TakeChanged(const WorldState& worl
               { return world.contacts[a].serial > world.contacts[b].serial; });
     m_taken.swap(m_changed);
     m_changed.clear();
-    for (const std::int32_t c : m_taken)
-    {
-        ++m_version[static_cast<std::size_t>(c)];
-    }
     NextRound(); // a contact listed from now on goes into the next batch
     return m_taken;
 }
 
-void ImpactQueue::Push(const WorldState& world, std::int32_t contactIndex, Real alpha)
+void ImpactQueue::Set(const WorldState& world, std::int32_t contactIndex, Real alpha)
 {
     if (!(alpha <= kLastImpact))
     {
+        Drop(contactIndex);
         return;
     }
     const auto i = static_cast<std::size_t>(contactIndex);
+    if (m_live[i] != 0 && m_liveAlpha[i] == alpha)
+    {
+        return; // its entry stands: same alpha, same place in the list
+    }
+    ++m_version[i];
+    m_live[i] = 1;
+    m_liveAlpha[i] = alpha;
     m_heap.push_back({alpha, world.contacts[i].serial, contactIndex, m_version[i]});
     std::push_heap(m_heap.begin(), m_heap.end(), Later);
+}
+
+void ImpactQueue::Drop(std::int32_t contactIndex)
+{
+    const auto i = static_cast<std::size_t>(contactIndex);
+    if (m_live[i] != 0)
+    {
+        ++m_version[i];
+        m_live[i] = 0;
+    }
 }
 
 std::int32_t ImpactQueue::PopFirst(Real& alpha)
@@ -70,8 +86,10 @@ std::int32_t ImpactQueue::PopFirst(Real& alpha)
         std::pop_heap(m_heap.begin(), m_heap.end(), Later);
         const Entry entry = m_heap.back();
         m_heap.pop_back();
-        if (entry.version == m_version[static_cast<std::size_t>(entry.contact)])
+        const auto i = static_cast<std::size_t>(entry.contact);
+        if (m_live[i] != 0 && entry.version == m_version[i])
         {
+            m_live[i] = 0;
             alpha = entry.alpha;
             return entry.contact;
         }
@@ -80,17 +98,13 @@ std::int32_t ImpactQueue::PopFirst(Real& alpha)
     return kNullIndex;
 }
 
-void ImpactQueue::EventDone(const WorldState& world, std::int32_t contactIndex)
+/// Visits the bodies an event on contactIndex may move, refresh the contacts of or wake: its
+/// two bodies and, for a dynamic one, the neighbours its island may take (static ones left
+/// out: they neither move, wake nor lose cached impacts).
+template <typename Visit>
+void ImpactQueue::ForEachEventBody(const WorldState& world, std::int32_t contactIndex,
+                                   Visit&& visit)
 {
-    if (m_listAll)
-    {
-        return; // TakeChanged takes every candidate
-    }
-    Grow(world.contacts.size()); // the event may have made contacts
-    // The event refreshed and woke its two bodies; for a dynamic one it refreshed (and may have
-    // woken the other side of) each contact its island may take, and the solved island's
-    // dynamic bodies lost their cached impacts and may have made contacts. A static body
-    // neither wakes nor loses them.
     const Contact& contact = world.contacts[contactIndex];
     for (const std::int32_t bodyIndex : {contact.bodyA, contact.bodyB})
     {
@@ -99,10 +113,10 @@ void ImpactQueue::EventDone(const WorldState& world, std::int32_t contactIndex)
         {
             continue;
         }
-        ListSweptContactsOf(world, bodyIndex);
+        visit(bodyIndex);
         if (body.type != BodyType::Dynamic)
         {
-            continue; // the island takes neighbours of dynamic bodies only
+            continue;
         }
         for (std::int32_t key = body.contactList; key != kNullIndex;)
         {
@@ -110,13 +124,54 @@ void ImpactQueue::EventDone(const WorldState& world, std::int32_t contactIndex)
             const Edge& edge = neighbour.edges[EdgeSide(key)];
             key = edge.next;
             const Body& other = world.bodies[edge.other];
-            const bool takenByIsland =
-                !neighbour.IsSensor() && other.type != BodyType::Static &&
-                (other.type != BodyType::Dynamic || body.bullet || other.bullet);
-            if (takenByIsland)
+            if (other.type != BodyType::Static && ImpactIslandMayTake(body, other, neighbour))
             {
-                ListSweptContactsOf(world, edge.other);
+                visit(edge.other);
             }
+        }
+    }
+}
+
+void ImpactQueue::BeforeEvent(const WorldState& world, std::int32_t contactIndex)
+{
+    m_asleep.clear();
+    if (m_listAll)
+    {
+        return;
+    }
+    ForEachEventBody(world, contactIndex,
+                     [&](std::int32_t b)
+                     {
+                         const Body& body = world.bodies[b];
+                         if (body.type == BodyType::Kinematic && !body.awake)
+                         {
+                             m_asleep.push_back(b);
+                         }
+                     });
+}
+
+void ImpactQueue::EventDone(const WorldState& world, std::int32_t contactIndex)
+{
+    Grow(world.contacts.size()); // the event may have made contacts
+    if (m_listAll)
+    {
+        return; // TakeChanged takes every candidate
+    }
+    // A dynamic body's contacts may have been refreshed, lost their cached impacts, gained a
+    // new contact or seen it wake; a kinematic body's other contacts change only if it woke.
+    ForEachEventBody(world, contactIndex,
+                     [&](std::int32_t b)
+                     {
+                         if (world.bodies[b].type == BodyType::Dynamic)
+                         {
+                             ListSweptContactsOf(world, b);
+                         }
+                     });
+    for (const std::int32_t b : m_asleep)
+    {
+        if (world.bodies[b].awake)
+        {
+            ListSweptContactsOf(world, b);
         }
     }
 }
@@ -159,6 +214,8 @@ void ImpactQueue::Grow(std::size_t contactCount)
     if (m_version.size() < contactCount)
     {
         m_version.resize(contactCount);
+        m_liveAlpha.resize(contactCount);
+        m_live.resize(contactCount);
         m_listedAt.resize(contactCount);
     }
 }

@@ -10,21 +10,24 @@
 //   - only swept contacts (Contact::Swept, kept in WorldState::sweptContacts) are candidates:
 //     the others never have an impact;
 //   - an event changes only the contacts around it: the flags and counts of the contacts it
-//     refreshes, the cached impacts of its island's dynamic bodies, whether its bodies and their
-//     neighbours are awake, and the contacts it creates (each one of a body it moved). The
-//     contacts of those bodies are listed as changed; every other contact is as the last search
+//     refreshes (all on its dynamic bodies), the cached impacts of its island's dynamic bodies,
+//     which bodies are awake (its own and their island neighbours'), and the contacts it creates
+//     (each one of a body it moved). The swept contacts of its dynamic bodies, and of a
+//     kinematic one it woke, are listed as changed; every other contact is as the last search
 //     left it;
 //   - the listed contacts are examined in contact-list order (newest first: Contact::serial),
 //     so that the impacts computed (and the sweeps they advance) are the walk's, in the walk's
-//     order; each one still valid enters a heap ordered by alpha, then list order — the walk's
-//     "first smallest";
-//   - an entry goes stale when its contact is listed again (a version per contact).
+//     order; each one's entry in a heap ordered by alpha, then list order (the walk's "first
+//     smallest"), is kept, replaced or dropped;
+//   - an entry goes stale when its contact's is replaced or dropped (a version per contact).
 //
-// A user callback that can run during the stage (pre-solve, custom filter) may wake any body:
-// with one installed every candidate is listed after every event, which is the walk restricted
-// to the candidates.
+// A user callback that can run during the stage (pre-solve, custom filter) may change any
+// body's awake state: with one installed every candidate is listed after every event, which is
+// the walk restricted to the candidates.
 #pragma once
 
+#include "dynamics/body.h"
+#include "dynamics/contact.h"
 #include "meff/math.h"
 
 #include <cstdint>
@@ -35,26 +38,36 @@ namespace meff::detail
 
 struct WorldState;
 
+/// Whether a time-of-impact event's island takes `contact` of its dynamic body `body`, whose
+/// other side is `other` (b2World::SolveTOI): static, kinematic and bullet neighbours, and any
+/// neighbour of a bullet; never a sensor.
+inline bool ImpactIslandMayTake(const Body& body, const Body& other, const Contact& contact)
+{
+    return !contact.IsSensor() && (other.type != BodyType::Dynamic || body.bullet || other.bullet);
+}
+
 class ImpactQueue
 {
   public:
     /// Starts a step's search: every candidate is listed as changed.
     void Begin(const WorldState& world);
 
-    /// The contacts listed since the last call, in contact-list order. Each one's earlier entry
-    /// is stale; Push puts back those that still have an impact.
+    /// The contacts listed since the last call, in contact-list order, for Set or Drop each.
     const std::vector<std::int32_t>& TakeChanged(const WorldState& world);
 
-    /// A contact's impact at alpha (a fraction of the step). Impacts the stage would not act on
-    /// (alpha > 1 − 10ε, as b2World::SolveTOI's stop test, or NaN) are not kept.
-    void Push(const WorldState& world, std::int32_t contactIndex, Real alpha);
+    /// A listed contact's impact at alpha (a fraction of the step). Impacts the stage would not
+    /// act on (alpha > 1 − 10ε, as b2World::SolveTOI's stop test, or NaN) are dropped.
+    void Set(const WorldState& world, std::int32_t contactIndex, Real alpha);
+    /// A listed contact with no impact to act on (not eligible, or not swept now).
+    void Drop(std::int32_t contactIndex);
 
     /// The earliest impact (the first in list order among equal alphas), removed from the
     /// queue, or kNullIndex for none.
     std::int32_t PopFirst(Real& alpha);
 
-    /// After an event on contactIndex, and the contacts it created: lists the contacts it may
-    /// have changed (see above).
+    /// Before an event on contactIndex: notes the kinematic bodies it may wake that sleep.
+    void BeforeEvent(const WorldState& world, std::int32_t contactIndex);
+    /// After the event, and the contacts it created: lists the contacts it may have changed.
     void EventDone(const WorldState& world, std::int32_t contactIndex);
 
   private:
@@ -67,6 +80,8 @@ class ImpactQueue
     };
     static bool Later(const Entry& a, const Entry& b);
 
+    template <typename Visit>
+    static void ForEachEventBody(const WorldState& world, std::int32_t contactIndex, Visit&& visit);
     void NextRound();
     void List(std::int32_t contactIndex);
     void ListSweptContactsOf(const WorldState& world, std::int32_t bodyIndex);
@@ -75,8 +90,11 @@ class ImpactQueue
     std::vector<Entry> m_heap;
     std::vector<std::int32_t> m_changed; ///< listed since the last TakeChanged
     std::vector<std::int32_t> m_taken;   ///< what TakeChanged returned
+    std::vector<std::int32_t> m_asleep;  ///< BeforeEvent's sleeping kinematic bodies
     /// By contact index:
-    std::vector<std::uint32_t> m_version;  ///< bumped each time the contact is taken
+    std::vector<std::uint32_t> m_version;  ///< of its live entry; bumped when it goes stale
+    std::vector<Real> m_liveAlpha;         ///< its live entry's alpha
+    std::vector<std::uint8_t> m_live;      ///< it has a live entry in the heap
     std::vector<std::uint32_t> m_listedAt; ///< the round that last listed it
     std::uint32_t m_round = 0;
     bool m_listAll = false; ///< a user callback may run: list every candidate each event
