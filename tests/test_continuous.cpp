@@ -208,15 +208,31 @@ struct BodySpec
 class PostSolveRecorder : public b2ContactListener
 {
   public:
-    void PostSolve(b2Contact*, const b2ContactImpulse* impulse) override
+    void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override
     {
+        // The world manifold at the transforms the solver left: meff's reports are built at
+        // the same, later (when read, or before a time-of-impact event changes them).
+        b2WorldManifold manifold;
+        contact->GetWorldManifold(&manifold);
         for (int i = 0; i < impulse->count; ++i)
         {
             normalImpulses.push_back(impulse->normalImpulses[i]);
             tangentImpulses.push_back(impulse->tangentImpulses[i]);
+            points.push_back(manifold.points[i]);
+            normals.push_back(manifold.normal);
+            separations.push_back(manifold.separations[i]);
         }
     }
-    std::vector<float> normalImpulses, tangentImpulses;
+    void Clear()
+    {
+        normalImpulses.clear();
+        tangentImpulses.clear();
+        points.clear();
+        normals.clear();
+        separations.clear();
+    }
+    std::vector<float> normalImpulses, tangentImpulses, separations;
+    std::vector<b2Vec2> points, normals;
 };
 
 b2BodyType ToB2(BodyType type)
@@ -314,8 +330,7 @@ struct Lockstep
     {
         for (int step = 0; step < steps; ++step)
         {
-            recorder.normalImpulses.clear();
-            recorder.tangentImpulses.clear();
+            recorder.Clear();
             meff.Step(kDt);
             box2d.Step(kDt, 8, 3);
             INFO("step " << step);
@@ -338,6 +353,11 @@ struct Lockstep
             {
                 REQUIRE(reports[i].normalImpulse == recorder.normalImpulses[i]);
                 REQUIRE(reports[i].tangentImpulse == recorder.tangentImpulses[i]);
+                REQUIRE(reports[i].point.x == recorder.points[i].x);
+                REQUIRE(reports[i].point.y == recorder.points[i].y);
+                REQUIRE(reports[i].normal.x == recorder.normals[i].x);
+                REQUIRE(reports[i].normal.y == recorder.normals[i].y);
+                REQUIRE(reports[i].separation == recorder.separations[i]);
             }
             REQUIRE(meff.GetContactCount() == box2d.GetContactCount());
             // A contact point reported again within one step comes from a time-of-impact
@@ -421,6 +441,46 @@ TEST_CASE("Lockstep with Box2D 2.4.1, continuous on: bullets and a kinematic bod
     CHECK(lockstep.repeatedReports > 0);
     // The low bullet hit the bottom thin box (rather than tunnelling) and knocked it away.
     CHECK(lockstep.meff.GetPosition(lockstep.meffBodies[1]).x > 3);
+}
+
+TEST_CASE("Lockstep with Box2D 2.4.1, continuous on: a bullet strikes a box on a kinematic "
+          "platform that carries another",
+          "[continuous][box2d][lockstep][bullet]")
+{
+    // The bullet's event takes the platform (a kinematic neighbour of the box it strikes) into
+    // its island and moves it back to the impact. The platform's report with the other box,
+    // solved before, must still be the one at the transforms the discrete solver left (Box2D's
+    // PostSolve): the reports an event could change are built before it.
+    std::vector<BodySpec> specs;
+    specs.push_back({BodyType::Kinematic,
+                     {0, 2},
+                     0,
+                     {Real(0.37), Real(0.13)},
+                     Real(0.05),
+                     false,
+                     Kind::Box,
+                     3,
+                     Real(0.2)});
+    specs.push_back({BodyType::Dynamic, {-1, Real(2.7)}, 0, {}, 0, false, Kind::Box, 0.5f, 0.5f});
+    specs.push_back({BodyType::Dynamic, {1.5f, Real(2.7)}, 0, {}, 0, false, Kind::Box, 0.5f, 0.5f});
+    for (int i = 0; i < 3; ++i)
+    {
+        specs.push_back({BodyType::Dynamic,
+                         {Real(-14 - 7 * i), Real(2.8) + Real(0.1) * Real(i)},
+                         0,
+                         {120, 0},
+                         0,
+                         true,
+                         Kind::Circle,
+                         0.08f});
+    }
+    Lockstep lockstep(specs);
+    lockstep.Run(30);
+    CHECK(lockstep.repeatedReports > 0);
+    // The bullet struck the first box rather than passing through it: it is still short of the
+    // second box, and the first was knocked along the platform faster than the platform moves.
+    CHECK(lockstep.meff.GetPosition(lockstep.meffBodies[3]).x < Real(0.5));
+    CHECK(lockstep.meff.GetLinearVelocity(lockstep.meffBodies[1]).x > Real(0.5));
 }
 
 #endif // MEFF_DOUBLE

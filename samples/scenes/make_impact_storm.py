@@ -12,7 +12,8 @@ DESCRIPTION = (
     "(1 m) settles on the ground; five bullets (circles of radius 0.12 m, no gravity) cross it at "
     "100 m/s from frame 117 on, and a kinematic paddle at 50 m/s ploughs through it at about "
     "frame 174. Ten darts (0.3 x 0.6 m) fall at 70 m/s onto a thin static shelf at y = 6 m and "
-    "twelve hailstones (radius 0.1 m) at 80 m/s onto the ground, bouncing off. Six light boxes "
+    "twelve hailstones (radius 0.1 m) at 80 m/s onto the ground, bouncing off. A kinematic piston "
+    "at 0.6 m/s pushes a row of four boxes along the ground from frame 5. Six light boxes "
     "asleep on static ledges beside a wall are shot by bullets at 110 m/s (frames 180 to 281); "
     "one struck early in its step meets the wall in the same step, through a contact created "
     "during the continuous stage. Validation compares every body, contact impulse and awake "
@@ -53,6 +54,11 @@ for k in range(10):
 for k in range(12):
     body(f"hail{k}", "dynamic", [-20 + k * 1.3, 30 + 11 * k],
          [circle(0.1, density=1, restitution=0.6)], linear_velocity=[3, -80])
+# A kinematic piston pushes a row of boxes along the ground (a kinematic neighbour for the
+# events of the boxes' contacts with the ground).
+body("piston", "kinematic", [-32.05, 1], [box(0.3, 1)], linear_velocity=[0.6, 0])
+for k in range(4):
+    body(f"pushed{k}", "dynamic", [-31.2 + 1.02 * k, 0.5], [box(0.5, 0.5, density=1, friction=0.4)])
 # The wall's face is at x = 30.5; ledge k's box starts 0.22 + 0.1 k m from it, each a bullet's
 # path, the bullets' starts spread so that they strike at different fractions of a step.
 body("wall", "static", [31, 10], [box(0.5, 12)])

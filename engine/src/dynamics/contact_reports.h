@@ -2,20 +2,39 @@
 // they are read. A step only records which contacts it solved and their impulses; the world
 // points, normals and separations — a world manifold per contact — are computed on the first
 // read, or before anything that would change what they describe (a body moved or destroyed, a
-// shape destroyed, a time-of-impact event moving bodies within the step). A game that never
-// reads them pays a few bytes per contact per step, as Box2D without a contact listener pays
-// nothing.
+// shape destroyed). A time-of-impact event within the step changes a few bodies and their
+// contacts: only the reports it could change are built before it. A game that never reads them
+// pays a few bytes per contact per step, as Box2D without a contact listener pays nothing.
 #pragma once
 
+#include "solvers/box2d/contact_constraint.h"
 #include "solvers/solver.h"
+#include "meff/world.h"
 
+#include <cstdint>
 #include <span>
+#include <vector>
 
 namespace meff::detail
 {
 
 struct WorldState;
-struct SolvedContact;
+
+/// The contacts solved this step whose reports are not built yet, in the reports' order; some
+/// may have theirs built early (BuildContactReportsOf).
+struct RecordedContacts
+{
+    std::vector<SolvedContact> solved;
+    std::vector<std::int32_t> builtAt;     ///< per solved: its first report in `built`, or -1
+    std::vector<ContactPointReport> built; ///< reports built early
+    std::size_t mapped = 0;                ///< solved[0, mapped) found by Contact::recordIndex
+    bool mapping = false;                  ///< `mapped` is set (since the last build)
+    std::size_t lateBuilt = 0;             ///< solved[mapped, lateBuilt) are built early
+    std::vector<std::uint32_t> bodyBuilt;  ///< per body: the round its reports were built in
+    std::uint32_t round = 1;
+
+    void Clear();
+};
 
 /// The report stage of an island or a time-of-impact sub-step: records the contacts a solver
 /// has just solved.
@@ -35,7 +54,14 @@ class WorldContactSink final : public SolvedContactSink
 };
 
 /// Turns the recorded contacts into ContactPointReports at the bodies' current transforms
-/// (those the step left them at, as long as every change to them calls this first).
+/// (those the step left them at, as long as every change to them calls this, or
+/// BuildContactReportsOf for the bodies it changes, first).
 void BuildContactReports(WorldState& world);
+
+/// Before a time-of-impact event moves body `bodyIndex` or refreshes one of its contacts: builds
+/// now, and keeps in place, the reports of its recorded contacts, and of every contact recorded
+/// since the first call (the events' own, which any later event may change). The others are
+/// still built when read.
+void BuildContactReportsOf(WorldState& world, std::int32_t bodyIndex);
 
 } // namespace meff::detail

@@ -19,6 +19,7 @@
 #include "collision/distance.h"
 #include "dynamics/contact_reports.h"
 #include "dynamics/events.h"
+#include "dynamics/impact_event.h"
 #include "dynamics/world_state.h"
 #include "solvers/box2d/island_step.h"
 
@@ -348,9 +349,10 @@ void SolveContinuous(WorldState& world, const StepContext& step)
         {
             break; // no impact left in this step
         }
-        // The event moves bodies and refreshes manifolds: the reports of what was solved so
-        // far are built first, at the transforms the solver left.
-        BuildContactReports(world);
+        // The event moves bodies and refreshes manifolds: the reports it could change, of what
+        // was solved so far, are built first, at the transforms the solver left.
+        ForEachImpactEventBody(world, minContact,
+                               [&world](std::int32_t b) { BuildContactReportsOf(world, b); });
         world.toiQueue.BeforeEvent(world, minContact);
         if (AdvanceToImpact(world, minContact, minAlpha))
         {

@@ -37,7 +37,7 @@ SensorEvent MakeSensorEvent(const WorldState& world, const Contact& contact)
 void ClearEvents(WorldState& world)
 {
     world.contactReports.clear();
-    world.solvedContacts.clear();
+    world.recorded.Clear();
     world.beginEvents.clear();
     world.sensorBeginEvents.clear();
     world.hitEvents.clear();

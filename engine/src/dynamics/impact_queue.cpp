@@ -1,5 +1,6 @@
 #include "dynamics/impact_queue.h"
 
+#include "dynamics/impact_event.h"
 #include "dynamics/world_state.h"
 
 #include <algorithm>
@@ -98,40 +99,6 @@ std::int32_t ImpactQueue::PopFirst(Real& alpha)
     return kNullIndex;
 }
 
-/// Visits the bodies an event on contactIndex may move, refresh the contacts of or wake: its
-/// two bodies and, for a dynamic one, the neighbours its island may take (static ones left
-/// out: they neither move, wake nor lose cached impacts).
-template <typename Visit>
-void ImpactQueue::ForEachEventBody(const WorldState& world, std::int32_t contactIndex,
-                                   Visit&& visit)
-{
-    const Contact& contact = world.contacts[contactIndex];
-    for (const std::int32_t bodyIndex : {contact.bodyA, contact.bodyB})
-    {
-        const Body& body = world.bodies[bodyIndex];
-        if (body.type == BodyType::Static)
-        {
-            continue;
-        }
-        visit(bodyIndex);
-        if (body.type != BodyType::Dynamic)
-        {
-            continue;
-        }
-        for (std::int32_t key = body.contactList; key != kNullIndex;)
-        {
-            const Contact& neighbour = world.contacts[EdgeOwner(key)];
-            const Edge& edge = neighbour.edges[EdgeSide(key)];
-            key = edge.next;
-            const Body& other = world.bodies[edge.other];
-            if (other.type != BodyType::Static && ImpactIslandMayTake(body, other, neighbour))
-            {
-                visit(edge.other);
-            }
-        }
-    }
-}
-
 void ImpactQueue::BeforeEvent(const WorldState& world, std::int32_t contactIndex)
 {
     m_asleep.clear();
@@ -139,15 +106,15 @@ void ImpactQueue::BeforeEvent(const WorldState& world, std::int32_t contactIndex
     {
         return;
     }
-    ForEachEventBody(world, contactIndex,
-                     [&](std::int32_t b)
-                     {
-                         const Body& body = world.bodies[b];
-                         if (body.type == BodyType::Kinematic && !body.awake)
-                         {
-                             m_asleep.push_back(b);
-                         }
-                     });
+    ForEachImpactEventBody(world, contactIndex,
+                           [&](std::int32_t b)
+                           {
+                               const Body& body = world.bodies[b];
+                               if (body.type == BodyType::Kinematic && !body.awake)
+                               {
+                                   m_asleep.push_back(b);
+                               }
+                           });
 }
 
 void ImpactQueue::EventDone(const WorldState& world, std::int32_t contactIndex)
@@ -159,14 +126,14 @@ void ImpactQueue::EventDone(const WorldState& world, std::int32_t contactIndex)
     }
     // A dynamic body's contacts may have been refreshed, lost their cached impacts, gained a
     // new contact or seen it wake; a kinematic body's other contacts change only if it woke.
-    ForEachEventBody(world, contactIndex,
-                     [&](std::int32_t b)
-                     {
-                         if (world.bodies[b].type == BodyType::Dynamic)
-                         {
-                             ListSweptContactsOf(world, b);
-                         }
-                     });
+    ForEachImpactEventBody(world, contactIndex,
+                           [&](std::int32_t b)
+                           {
+                               if (world.bodies[b].type == BodyType::Dynamic)
+                               {
+                                   ListSweptContactsOf(world, b);
+                               }
+                           });
     for (const std::int32_t b : m_asleep)
     {
         if (world.bodies[b].awake)

@@ -26,8 +26,6 @@
 // the walk restricted to the candidates.
 #pragma once
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
 #include "meff/math.h"
 
 #include <cstdint>
@@ -37,14 +35,6 @@ namespace meff::detail
 {
 
 struct WorldState;
-
-/// Whether a time-of-impact event's island takes `contact` of its dynamic body `body`, whose
-/// other side is `other` (b2World::SolveTOI): static, kinematic and bullet neighbours, and any
-/// neighbour of a bullet; never a sensor.
-inline bool ImpactIslandMayTake(const Body& body, const Body& other, const Contact& contact)
-{
-    return !contact.IsSensor() && (other.type != BodyType::Dynamic || body.bullet || other.bullet);
-}
 
 class ImpactQueue
 {
@@ -80,8 +70,6 @@ class ImpactQueue
     };
     static bool Later(const Entry& a, const Entry& b);
 
-    template <typename Visit>
-    static void ForEachEventBody(const WorldState& world, std::int32_t contactIndex, Visit&& visit);
     void NextRound();
     void List(std::int32_t contactIndex);
     void ListSweptContactsOf(const WorldState& world, std::int32_t bodyIndex);

@@ -86,7 +86,7 @@ struct WorldState
     ImpactQueue toiQueue;    ///< the candidate impacts of the continuous stage (not state)
 
     std::vector<ContactPointReport> contactReports; ///< built when read (contact_reports.h)
-    std::vector<SolvedContact> solvedContacts;      ///< recorded, not yet in contactReports
+    RecordedContacts recorded;                      ///< solved, not yet in contactReports
     std::vector<ContactEvent> beginEvents;
     std::vector<ContactEvent> endEvents;
     std::vector<SensorEvent> sensorBeginEvents;
