@@ -42,6 +42,10 @@ void AppendReports(const WorldState& world, const SolvedContact& solved,
 void BuildEarly(WorldState& world, std::size_t i)
 {
     RecordedContacts& recorded = world.recorded;
+    if (recorded.builtAt.size() < recorded.solved.size())
+    {
+        recorded.builtAt.resize(recorded.solved.size(), -1); // only once something is built early
+    }
     if (recorded.builtAt[i] < 0)
     {
         recorded.builtAt[i] = static_cast<std::int32_t>(recorded.built.size());
@@ -91,7 +95,6 @@ void RecordContactReports(WorldState& world, std::span<const SolvedContact> solv
 {
     RecordedContacts& recorded = world.recorded;
     recorded.solved.insert(recorded.solved.end(), solved.begin(), solved.end());
-    recorded.builtAt.resize(recorded.solved.size(), -1);
 }
 
 void WorldContactSink::Record(std::span<const SolvedContact> solved, bool anyHitEvents,
@@ -109,7 +112,7 @@ void BuildContactReports(WorldState& world)
     RecordedContacts& recorded = world.recorded;
     for (std::size_t i = 0; i < recorded.solved.size(); ++i)
     {
-        const std::int32_t at = recorded.builtAt[i];
+        const std::int32_t at = i < recorded.builtAt.size() ? recorded.builtAt[i] : -1;
         if (at < 0)
         {
             AppendReports(world, recorded.solved[i], world.contactReports);

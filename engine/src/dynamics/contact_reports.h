@@ -25,7 +25,9 @@ struct WorldState;
 struct RecordedContacts
 {
     std::vector<SolvedContact> solved;
-    std::vector<std::int32_t> builtAt;     ///< per solved: its first report in `built`, or -1
+    /// Per solved: its first report in `built`, or -1; shorter than `solved` (the rest -1)
+    /// until a report is built early.
+    std::vector<std::int32_t> builtAt;
     std::vector<ContactPointReport> built; ///< reports built early
     std::size_t mapped = 0;                ///< solved[0, mapped) found by Contact::recordIndex
     bool mapping = false;                  ///< `mapped` is set (since the last build)
