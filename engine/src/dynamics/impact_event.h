@@ -1,7 +1,7 @@
 // Who a time-of-impact event touches (continuous.cpp): the island it may take, and the bodies
-// it may move, refresh the contacts of or wake. The impact queue lists the contacts of those
-// bodies again after the event, and the contact reports of what was solved before it are built
-// for them first.
+// it may move, refresh the contacts of or wake. The contact reports of what was solved before
+// the event are built for those bodies first; after it, the impact queue lists again the
+// contacts of the dynamic ones, and of a kinematic one the event woke.
 #pragma once
 
 #include "dynamics/world_state.h"

@@ -11,7 +11,8 @@
 //     the others never have an impact;
 //   - an event changes only the contacts around it: the flags and counts of the contacts it
 //     refreshes (all on its dynamic bodies), the cached impacts of its island's dynamic bodies,
-//     which bodies are awake (its own and their island neighbours'), and the contacts it creates
+//     which bodies are awake (its own, and the neighbours its island may take), and the contacts
+//     it creates
 //     (each one of a body it moved). The swept contacts of its dynamic bodies, and of a
 //     kinematic one it woke, are listed as changed; every other contact is as the last search
 //     left it;
@@ -19,7 +20,8 @@
 //     so that the impacts computed (and the sweeps they advance) are the walk's, in the walk's
 //     order; each one's entry in a heap ordered by alpha, then list order (the walk's "first
 //     smallest"), is kept, replaced or dropped;
-//   - an entry goes stale when its contact's is replaced or dropped (a version per contact).
+//   - an entry goes stale when a new one replaces it or its contact is dropped (a version per
+//     contact).
 //
 // A user callback that can run during the stage (pre-solve, custom filter) may change any
 // body's awake state: with one installed every candidate is listed after every event, which is
