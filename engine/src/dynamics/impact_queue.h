@@ -12,9 +12,8 @@
 //   - an event changes only the contacts around it: the flags and counts of the contacts it
 //     refreshes (all on its dynamic bodies), the cached impacts of its island's dynamic bodies,
 //     which bodies are awake (its own, and the neighbours its island may take), and the contacts
-//     it creates
-//     (each one of a body it moved). The swept contacts of its dynamic bodies, and of a
-//     kinematic one it woke, are listed as changed; every other contact is as the last search
+//     it creates (each one of a body it moved). The swept contacts of its dynamic bodies, and of
+//     a kinematic one it woke, are listed as changed; every other contact is as the last search
 //     left it;
 //   - the listed contacts are examined in contact-list order (newest first: Contact::serial),
 //     so that the impacts computed (and the sweeps they advance) are the walk's, in the walk's
