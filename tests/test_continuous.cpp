@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 using namespace meff;
@@ -221,6 +222,7 @@ class PostSolveRecorder : public b2ContactListener
             points.push_back(manifold.points[i]);
             normals.push_back(manifold.normal);
             separations.push_back(manifold.separations[i]);
+            featureKeys.push_back(contact->GetManifold()->points[i].id.key);
         }
     }
     void Clear()
@@ -230,9 +232,11 @@ class PostSolveRecorder : public b2ContactListener
         points.clear();
         normals.clear();
         separations.clear();
+        featureKeys.clear();
     }
     std::vector<float> normalImpulses, tangentImpulses, separations;
     std::vector<b2Vec2> points, normals;
+    std::vector<std::uint32_t> featureKeys;
 };
 
 b2BodyType ToB2(BodyType type)
@@ -358,6 +362,7 @@ struct Lockstep
                 REQUIRE(reports[i].normal.x == recorder.normals[i].x);
                 REQUIRE(reports[i].normal.y == recorder.normals[i].y);
                 REQUIRE(reports[i].separation == recorder.separations[i]);
+                REQUIRE(reports[i].featureKey == recorder.featureKeys[i]);
             }
             REQUIRE(meff.GetContactCount() == box2d.GetContactCount());
             // A contact point reported again within one step comes from a time-of-impact

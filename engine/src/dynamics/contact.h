@@ -81,13 +81,10 @@ struct Contact
     /// Creation order (WorldState::contactSerial): the list holds newer contacts first.
     std::uint64_t serial = 0;
     std::int32_t sweptSlot = -1; ///< with Swept: its index in WorldState::sweptContacts
-    /// Where the step recorded it for the reports (RecordedContacts::solved), once the
-    /// continuous stage has looked; stale otherwise: check the record names this contact.
-    std::int32_t recordIndex = -1;
-    int toiCount = 0;           ///< time-of-impact events this step
-    Real toi = 1;               ///< cached time of impact (fraction of the step)
-    std::uint64_t hitStep = 0;  ///< 1 + the step count when hitEvent was last written
-    std::int32_t hitEvent = -1; ///< its index in WorldState::hitEvents during that step
+    int toiCount = 0;            ///< time-of-impact events this step
+    Real toi = 1;                ///< cached time of impact (fraction of the step)
+    std::uint64_t hitStep = 0;   ///< 1 + the step count when hitEvent was last written
+    std::int32_t hitEvent = -1;  ///< its index in WorldState::hitEvents during that step
     /// Two sharp polygons apart at the last update: the face that separated them, tested first
     /// at the next (UpdateManifold; exact, so Box2D's back end uses it too).
     SeparatingFace separatingFace;

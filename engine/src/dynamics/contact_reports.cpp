@@ -9,17 +9,15 @@ namespace meff::detail
 namespace
 {
 
-/// Appends the reports of one recorded contact, at the bodies' current transforms.
+/// Appends the reports of one recorded contact from its geometry.
 void AppendReports(const WorldState& world, const SolvedContact& solved,
-                   std::vector<ContactPointReport>& out)
+                   const ContactGeometry& geometry, std::vector<ContactPointReport>& out)
 {
     const Contact& contact = world.contacts[solved.contactIndex];
     const Shape& shapeA = world.shapes[contact.shapeA];
     const Shape& shapeB = world.shapes[contact.shapeB];
     const Body& bodyA = world.bodies[contact.bodyA];
     const Body& bodyB = world.bodies[contact.bodyB];
-    WorldManifold wm;
-    wm.Initialize(contact.manifold, bodyA.xf, contact.radiusA, bodyB.xf, contact.radiusB);
     for (int j = 0; j < solved.pointCount; ++j)
     {
         ContactPointReport report;
@@ -27,51 +25,28 @@ void AppendReports(const WorldState& world, const SolvedContact& solved,
         report.bodyB = {contact.bodyB, bodyB.generation};
         report.shapeA = {contact.shapeA, shapeA.generation};
         report.shapeB = {contact.shapeB, shapeB.generation};
-        report.point = wm.points[j];
-        report.normal = wm.normal;
-        report.separation = wm.separations[j];
+        report.point = geometry.world.points[j];
+        report.normal = geometry.world.normal;
+        report.separation = geometry.world.separations[j];
         report.normalImpulse = solved.normalImpulse[j];
         report.tangentImpulse = solved.tangentImpulse[j];
-        report.featureKey = contact.manifold.points[j].id.Key();
+        report.featureKey = geometry.featureKeys[j];
         report.pointIndex = j;
         out.push_back(report);
     }
 }
 
-/// Builds recorded contact `i`'s reports now, into RecordedContacts::built.
-void BuildEarly(WorldState& world, std::size_t i)
+/// A contact's geometry now: its manifold at the bodies' current transforms.
+ContactGeometry GeometryOf(const WorldState& world, const Contact& contact)
 {
-    RecordedContacts& recorded = world.recorded;
-    if (recorded.builtAt.size() < recorded.solved.size())
+    ContactGeometry geometry;
+    geometry.world.Initialize(contact.manifold, world.bodies[contact.bodyA].xf, contact.radiusA,
+                              world.bodies[contact.bodyB].xf, contact.radiusB);
+    for (int j = 0; j < contact.manifold.pointCount; ++j)
     {
-        recorded.builtAt.resize(recorded.solved.size(), -1); // only once something is built early
+        geometry.featureKeys[j] = contact.manifold.points[j].id.Key();
     }
-    if (recorded.builtAt[i] < 0)
-    {
-        recorded.builtAt[i] = static_cast<std::int32_t>(recorded.built.size());
-        AppendReports(world, recorded.solved[i], recorded.built);
-    }
-}
-
-/// Makes the contacts recorded so far findable from their contacts (Contact::recordIndex). A
-/// contact recorded twice (not done by any back end today) has its earlier record built now.
-void MapRecords(WorldState& world)
-{
-    RecordedContacts& recorded = world.recorded;
-    for (std::size_t i = 0; i < recorded.solved.size(); ++i)
-    {
-        Contact& contact = world.contacts[recorded.solved[i].contactIndex];
-        const auto earlier = static_cast<std::size_t>(contact.recordIndex);
-        if (earlier < i && recorded.solved[earlier].contactIndex == recorded.solved[i].contactIndex)
-        {
-            BuildEarly(world, earlier);
-        }
-        contact.recordIndex = static_cast<std::int32_t>(i);
-    }
-    recorded.mapped = recorded.solved.size();
-    recorded.lateBuilt = recorded.mapped;
-    recorded.mapping = true;
-    recorded.bodyBuilt.resize(world.bodies.size());
+    return geometry;
 }
 
 } // namespace
@@ -79,14 +54,15 @@ void MapRecords(WorldState& world)
 void RecordedContacts::Clear()
 {
     solved.clear();
+    discrete = 0;
+    eventsBegan = false;
     builtAt.clear();
     built.clear();
-    mapped = 0;
-    mapping = false;
     lateBuilt = 0;
-    if (++round == 0) // wrapped: no body may look built in the new round
+    if (++round == 0) // wrapped: nothing may look kept in the new round
     {
-        std::fill(bodyBuilt.begin(), bodyBuilt.end(), 0U);
+        std::fill(keptIn.begin(), keptIn.end(), 0U);
+        std::fill(bodyKeptIn.begin(), bodyKeptIn.end(), 0U);
         round = 1;
     }
 }
@@ -112,15 +88,23 @@ void BuildContactReports(WorldState& world)
     RecordedContacts& recorded = world.recorded;
     for (std::size_t i = 0; i < recorded.solved.size(); ++i)
     {
-        const std::int32_t at = i < recorded.builtAt.size() ? recorded.builtAt[i] : -1;
-        if (at < 0)
+        const SolvedContact& solved = recorded.solved[i];
+        const auto c = static_cast<std::size_t>(solved.contactIndex);
+        if (i < recorded.discrete && c < recorded.keptIn.size() &&
+            recorded.keptIn[c] == recorded.round)
         {
-            AppendReports(world, recorded.solved[i], world.contactReports);
+            AppendReports(world, solved, recorded.kept[c], world.contactReports);
             continue;
         }
-        const auto first = recorded.built.begin() + at;
-        world.contactReports.insert(world.contactReports.end(), first,
-                                    first + recorded.solved[i].pointCount);
+        const std::size_t late = i - recorded.discrete;
+        if (i >= recorded.discrete && late < recorded.builtAt.size() && recorded.builtAt[late] >= 0)
+        {
+            const auto first = recorded.built.begin() + recorded.builtAt[late];
+            world.contactReports.insert(world.contactReports.end(), first,
+                                        first + solved.pointCount);
+            continue;
+        }
+        AppendReports(world, solved, GeometryOf(world, world.contacts[c]), world.contactReports);
     }
     recorded.Clear();
 }
@@ -128,30 +112,42 @@ void BuildContactReports(WorldState& world)
 void BuildContactReportsOf(WorldState& world, std::int32_t bodyIndex)
 {
     RecordedContacts& recorded = world.recorded;
-    if (!recorded.mapping)
+    if (!recorded.eventsBegan)
     {
-        MapRecords(world);
+        recorded.eventsBegan = true;
+        recorded.discrete = recorded.solved.size();
+        recorded.lateBuilt = recorded.discrete;
+        recorded.bodyKeptIn.resize(world.bodies.size());
+        recorded.kept.resize(world.contacts.size());
+        recorded.keptIn.resize(world.contacts.size());
     }
-    // Recorded since the mapping (by earlier events): built before any other event.
+    // The events' own records, made since the last call: their reports now, before this event.
     for (; recorded.lateBuilt < recorded.solved.size(); ++recorded.lateBuilt)
     {
-        BuildEarly(world, recorded.lateBuilt);
+        const SolvedContact& solved = recorded.solved[recorded.lateBuilt];
+        recorded.builtAt.push_back(static_cast<std::int32_t>(recorded.built.size()));
+        AppendReports(world, solved, GeometryOf(world, world.contacts[solved.contactIndex]),
+                      recorded.built);
     }
     const auto b = static_cast<std::size_t>(bodyIndex);
-    if (recorded.bodyBuilt[b] == recorded.round)
+    if (recorded.bodyKeptIn[b] == recorded.round)
     {
         return;
     }
-    recorded.bodyBuilt[b] = recorded.round;
+    recorded.bodyKeptIn[b] = recorded.round;
+    // The body's touching contacts (those the discrete solve recorded among them) as they are
+    // before any event changes them: a contact changes only when one of its bodies is touched.
+    // Contacts made during the stage have no discrete record.
     for (std::int32_t key = world.bodies[b].contactList; key != kNullIndex;)
     {
-        const std::int32_t c = EdgeOwner(key);
+        const auto c = static_cast<std::size_t>(EdgeOwner(key));
         const Contact& contact = world.contacts[c];
         key = contact.edges[EdgeSide(key)].next;
-        const auto i = static_cast<std::size_t>(contact.recordIndex);
-        if (i < recorded.mapped && recorded.solved[i].contactIndex == c)
+        if (c < recorded.keptIn.size() && recorded.keptIn[c] != recorded.round &&
+            contact.IsTouching() && !contact.IsSensor())
         {
-            BuildEarly(world, i);
+            recorded.kept[c] = GeometryOf(world, contact);
+            recorded.keptIn[c] = recorded.round;
         }
     }
 }

@@ -22,19 +22,31 @@ namespace meff::detail
 
 struct WorldState;
 
-/// The contacts solved this step whose reports are not built yet, in the reports' order; some
-/// may have theirs built early (BuildContactReportsOf).
+/// What a contact's reports read from it: its world manifold and its points' feature keys.
+struct ContactGeometry
+{
+    WorldManifold world;
+    std::uint32_t featureKeys[2]{};
+};
+
+/// The contacts solved this step whose reports are not built yet, in the reports' order. Before
+/// a time-of-impact event, what it could change is kept (BuildContactReportsOf): the geometry
+/// of the touched bodies' contacts, and the reports of the events' own records.
 struct RecordedContacts
 {
     std::vector<SolvedContact> solved;
-    /// Per solved: its first report in `built`, or -1; shorter than `solved` (the rest -1)
-    /// until a report is built early.
+    /// solved[0, discrete) were recorded before the first event of the step (by the discrete
+    /// solve: one record per contact); set by the first BuildContactReportsOf.
+    std::size_t discrete = 0;
+    bool eventsBegan = false;
+    /// Per solved from `discrete` on: its first report in `built`, or -1 (shorter: the rest -1).
     std::vector<std::int32_t> builtAt;
-    std::vector<ContactPointReport> built; ///< reports built early
-    std::size_t mapped = 0;                ///< solved[0, mapped) found by Contact::recordIndex
-    bool mapping = false;                  ///< `mapped` is set (since the last build)
-    std::size_t lateBuilt = 0;             ///< solved[mapped, lateBuilt) are built early
-    std::vector<std::uint32_t> bodyBuilt;  ///< per body: the round its reports were built in
+    std::vector<ContactPointReport> built; ///< reports of the events' own records, built early
+    std::size_t lateBuilt = 0;             ///< solved[discrete, lateBuilt) are built early
+    /// Per contact: its geometry, kept in round `keptIn` (before an event changed it).
+    std::vector<ContactGeometry> kept;
+    std::vector<std::uint32_t> keptIn;
+    std::vector<std::uint32_t> bodyKeptIn; ///< per body: the round its contacts were kept in
     std::uint32_t round = 1;
 
     void Clear();
@@ -62,10 +74,10 @@ class WorldContactSink final : public SolvedContactSink
 /// BuildContactReportsOf for the bodies it changes, first).
 void BuildContactReports(WorldState& world);
 
-/// Before a time-of-impact event moves body `bodyIndex` or refreshes one of its contacts: builds
-/// now, and keeps in place, the reports of its recorded contacts, and of every contact recorded
-/// since the first call (the events' own, which any later event may change). The others are
-/// still built when read.
+/// Before a time-of-impact event moves body `bodyIndex` or refreshes one of its contacts: keeps
+/// the geometry of its touching contacts as it is now (the first time in the step),
+/// and builds the reports of every contact recorded since the events began (the events' own,
+/// which any later event may change). The other reports are still built when read.
 void BuildContactReportsOf(WorldState& world, std::int32_t bodyIndex);
 
 } // namespace meff::detail
