@@ -29,6 +29,8 @@ void ImpactQueue::Begin(const WorldState& world)
     Grow(world.contacts.size());
     std::fill(m_live.begin(), m_live.end(), std::uint8_t{0});
     NextRound(); // a step that threw mid-stage may have left contacts listed
+    m_all.clear();
+    m_allCount = 0;
     for (const std::int32_t c : world.sweptContacts)
     {
         List(c);
@@ -38,13 +40,23 @@ void ImpactQueue::Begin(const WorldState& world)
 const std::vector<std::int32_t>& ImpactQueue::TakeChanged(const WorldState& world)
 {
     Grow(world.contacts.size()); // the last event may have made contacts
+    const auto newestFirst = [&world](std::int32_t a, std::int32_t b)
+    { return world.contacts[a].serial > world.contacts[b].serial; };
     if (m_listAll)
     {
-        m_changed.assign(world.sweptContacts.begin(), world.sweptContacts.end());
+        // Every candidate, in list order. No contact is destroyed during the stage, and those
+        // it makes are appended to sweptContacts and are newer than all before: sorted, they
+        // go in front of the order kept from the last call.
+        const auto fresh = world.sweptContacts.begin() + static_cast<std::ptrdiff_t>(m_allCount);
+        m_changed.assign(fresh, world.sweptContacts.end());
+        std::sort(m_changed.begin(), m_changed.end(), newestFirst);
+        m_all.insert(m_all.begin(), m_changed.begin(), m_changed.end());
+        m_allCount = world.sweptContacts.size();
+        m_changed.clear();
+        NextRound();
+        return m_all;
     }
-    std::sort(m_changed.begin(), m_changed.end(),
-              [&world](std::int32_t a, std::int32_t b)
-              { return world.contacts[a].serial > world.contacts[b].serial; });
+    std::sort(m_changed.begin(), m_changed.end(), newestFirst);
     m_taken.swap(m_changed);
     m_changed.clear();
     NextRound(); // a contact listed from now on goes into the next batch

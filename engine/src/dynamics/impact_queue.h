@@ -80,6 +80,9 @@ class ImpactQueue
     std::vector<std::int32_t> m_changed; ///< listed since the last TakeChanged
     std::vector<std::int32_t> m_taken;   ///< what TakeChanged returned
     std::vector<std::int32_t> m_asleep;  ///< BeforeEvent's sleeping kinematic bodies
+    /// With m_listAll: every candidate in list order, and how many of sweptContacts it holds.
+    std::vector<std::int32_t> m_all;
+    std::size_t m_allCount = 0;
     /// By contact index:
     std::vector<std::uint32_t> m_version;  ///< of its live entry; bumped when it goes stale
     std::vector<Real> m_liveAlpha;         ///< its live entry's alpha
