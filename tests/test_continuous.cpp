@@ -204,6 +204,7 @@ struct BodySpec
     Kind kind = Kind::Box;
     Real a = Real(0.5), b = Real(0.5); ///< radius, or half-extents, or segment half-length
     Real restitution = 0;
+    bool awake = true;
 };
 
 class PostSolveRecorder : public b2ContactListener
@@ -261,9 +262,10 @@ struct Lockstep
     std::vector<BodyId> meffBodies;
     std::vector<b2Body*> box2dBodies;
 
-    explicit Lockstep(const std::vector<BodySpec>& specs)
+    explicit Lockstep(const std::vector<BodySpec>& specs, bool allowSleep = false)
     {
-        box2d.SetAllowSleeping(false);
+        meff.SetAllowSleeping(allowSleep);
+        box2d.SetAllowSleeping(allowSleep);
         box2d.SetContinuousPhysics(true);
         box2d.SetContactListener(&recorder);
         for (const BodySpec& spec : specs)
@@ -275,6 +277,7 @@ struct Lockstep
             def.linearVelocity = spec.velocity;
             def.angularVelocity = spec.angularVelocity;
             def.bullet = spec.bullet;
+            def.awake = spec.awake;
             const BodyId id = meff.CreateBody(def);
             meffBodies.push_back(id);
 
@@ -285,6 +288,7 @@ struct Lockstep
             bdef.linearVelocity.Set(spec.velocity.x, spec.velocity.y);
             bdef.angularVelocity = spec.angularVelocity;
             bdef.bullet = spec.bullet;
+            bdef.awake = spec.awake;
             b2Body* body = box2d.CreateBody(&bdef);
             box2dBodies.push_back(body);
 
@@ -350,6 +354,7 @@ struct Lockstep
                 REQUIRE(v.x == body->GetLinearVelocity().x);
                 REQUIRE(v.y == body->GetLinearVelocity().y);
                 REQUIRE(meff.GetAngularVelocity(meffBodies[i]) == body->GetAngularVelocity());
+                REQUIRE(meff.IsAwake(meffBodies[i]) == body->IsAwake());
             }
             const auto reports = meff.GetContactReports();
             REQUIRE(reports.size() == recorder.normalImpulses.size());
@@ -486,6 +491,33 @@ TEST_CASE("Lockstep with Box2D 2.4.1, continuous on: a bullet strikes a box on a
     // second box, and the first was knocked along the platform faster than the platform moves.
     CHECK(lockstep.meff.GetPosition(lockstep.meffBodies[3]).x < Real(0.5));
     CHECK(lockstep.meff.GetLinearVelocity(lockstep.meffBodies[1]).x > Real(0.5));
+}
+
+TEST_CASE("Lockstep with Box2D 2.4.1, continuous on: a bullet wakes a sleeping kinematic "
+          "platform whose contact with a sleeping box then has an impact",
+          "[continuous][box2d][lockstep][bullet]")
+{
+    // The platform and the box on it start asleep, their polygons 0.003 m apart (their skins
+    // overlapping): their contact is never updated while both sleep. The bullet's event wakes
+    // the platform; Box2D's walk then sweeps the platform and the box and finds them already
+    // within the impact distance (closer than the target separation, not overlapping), an
+    // event at once. The impact queue lists a kinematic body's contacts after an event only
+    // when the event woke it, which is this case.
+    std::vector<BodySpec> specs;
+    BodySpec platform{BodyType::Kinematic, {0, 0}, 0, {}, 0, false, Kind::Box, 2, Real(0.2)};
+    platform.awake = false;
+    specs.push_back(platform);
+    BodySpec box{BodyType::Dynamic, {0, Real(0.703)}, 0, {}, 0, false, Kind::Box, 0.5f, 0.5f};
+    box.awake = false;
+    specs.push_back(box);
+    // Low on the platform's face: the bullet's box never reaches the box's (no contact between
+    // them, which would list the box's contacts after the bullet's event anyway).
+    specs.push_back(
+        {BodyType::Dynamic, {-10, Real(-0.12)}, 0, {100, 0}, 0, true, Kind::Circle, 0.05f});
+    Lockstep lockstep(specs, true);
+    lockstep.Run(20);
+    CHECK(lockstep.meff.IsAwake(lockstep.meffBodies[0]));
+    CHECK(lockstep.meff.IsAwake(lockstep.meffBodies[1]));
 }
 
 #endif // MEFF_DOUBLE
