@@ -56,7 +56,6 @@ void RecordedContacts::Clear()
     solved.clear();
     discrete = 0;
     eventsBegan = false;
-    builtAt.clear();
     built.clear();
     lateBuilt = 0;
     if (++round == 0) // wrapped: nothing may look kept in the new round
@@ -86,6 +85,7 @@ void WorldContactSink::Record(std::span<const SolvedContact> solved, bool anyHit
 void BuildContactReports(WorldState& world)
 {
     RecordedContacts& recorded = world.recorded;
+    auto early = recorded.built.begin(); // solved[discrete, lateBuilt)'s reports, in order
     for (std::size_t i = 0; i < recorded.solved.size(); ++i)
     {
         const SolvedContact& solved = recorded.solved[i];
@@ -96,12 +96,11 @@ void BuildContactReports(WorldState& world)
             AppendReports(world, solved, recorded.kept[c], world.contactReports);
             continue;
         }
-        const std::size_t late = i - recorded.discrete;
-        if (i >= recorded.discrete && late < recorded.builtAt.size() && recorded.builtAt[late] >= 0)
+        if (i >= recorded.discrete && i < recorded.lateBuilt)
         {
-            const auto first = recorded.built.begin() + recorded.builtAt[late];
-            world.contactReports.insert(world.contactReports.end(), first,
-                                        first + solved.pointCount);
+            world.contactReports.insert(world.contactReports.end(), early,
+                                        early + solved.pointCount);
+            early += solved.pointCount;
             continue;
         }
         AppendReports(world, solved, GeometryOf(world, world.contacts[c]), world.contactReports);
@@ -125,7 +124,6 @@ void BuildContactReportsOf(WorldState& world, std::int32_t bodyIndex)
     for (; recorded.lateBuilt < recorded.solved.size(); ++recorded.lateBuilt)
     {
         const SolvedContact& solved = recorded.solved[recorded.lateBuilt];
-        recorded.builtAt.push_back(static_cast<std::int32_t>(recorded.built.size()));
         AppendReports(world, solved, GeometryOf(world, world.contacts[solved.contactIndex]),
                       recorded.built);
     }

@@ -39,10 +39,10 @@ struct RecordedContacts
     /// solve: one record per contact); set by the first BuildContactReportsOf.
     std::size_t discrete = 0;
     bool eventsBegan = false;
-    /// Per solved from `discrete` on: its first report in `built`, or -1 (shorter: the rest -1).
-    std::vector<std::int32_t> builtAt;
-    std::vector<ContactPointReport> built; ///< reports of the events' own records, built early
-    std::size_t lateBuilt = 0;             ///< solved[discrete, lateBuilt) are built early
+    /// The reports of solved[discrete, lateBuilt) (the events' own records), built early, in
+    /// order.
+    std::vector<ContactPointReport> built;
+    std::size_t lateBuilt = 0;
     /// Per contact: its geometry, kept in round `keptIn` (before an event changed it).
     std::vector<ContactGeometry> kept;
     std::vector<std::uint32_t> keptIn;

@@ -31,9 +31,12 @@ void ImpactQueue::Begin(const WorldState& world)
     NextRound(); // a step that threw mid-stage may have left contacts listed
     m_all.clear();
     m_allCount = 0;
-    for (const std::int32_t c : world.sweptContacts)
+    if (!m_listAll) // else TakeChanged takes every candidate
     {
-        List(c);
+        for (const std::int32_t c : world.sweptContacts)
+        {
+            List(c);
+        }
     }
 }
 
@@ -167,7 +170,7 @@ void ImpactQueue::NextRound()
 void ImpactQueue::List(std::int32_t contactIndex)
 {
     const auto i = static_cast<std::size_t>(contactIndex);
-    if (!m_listAll && m_listedAt[i] != m_round)
+    if (m_listedAt[i] != m_round)
     {
         m_listedAt[i] = m_round;
         m_changed.push_back(contactIndex);

@@ -72,7 +72,7 @@ class ImpactQueue
     static bool Later(const Entry& a, const Entry& b);
 
     void NextRound();
-    void List(std::int32_t contactIndex);
+    void List(std::int32_t contactIndex); ///< not with m_listAll: every candidate is taken then
     void ListSweptContactsOf(const WorldState& world, std::int32_t bodyIndex);
     void Grow(std::size_t contactCount);
 
