@@ -4,6 +4,7 @@
 // one thread, every step.
 #include <catch2/catch.hpp>
 
+#include "tasks/parallel_ranges.h"
 #include "world_fixtures.h"
 #include "meff/scene.h"
 #include "meff/task_system.h"
@@ -269,6 +270,44 @@ TEST_CASE("The thread pool runs every index of a job exactly once, in ranges of 
         }
     }
     CHECK_THROWS_AS(MakeThreadPool(0), InvalidArgument);
+}
+
+TEST_CASE("ForRangesBeside runs the serial piece once and every index once, on any thread count",
+          "[threads]")
+{
+    std::vector<std::unique_ptr<TaskSystem>> pools;
+    pools.push_back(nullptr); // no task system: everything on the calling thread
+    for (const int threads : {1, 2, 3, 8})
+    {
+        pools.push_back(MakeThreadPool(threads));
+    }
+    for (const std::unique_ptr<TaskSystem>& pool : pools)
+    {
+        for (const int count : {0, 1, 63, 64, 129, 4097})
+        {
+            std::vector<std::atomic<int>> visits(static_cast<std::size_t>(count));
+            std::atomic<int> alone{0}, badRanges{0};
+            detail::ForRangesBeside(
+                pool.get(), count, 64, [&] { alone.fetch_add(1); },
+                [&](int begin, int end, int)
+                {
+                    if (begin < 0 || end > count || begin >= end)
+                    {
+                        badRanges.fetch_add(1);
+                        return;
+                    }
+                    for (int i = begin; i < end; ++i)
+                    {
+                        visits[static_cast<std::size_t>(i)].fetch_add(1);
+                    }
+                });
+            INFO((pool ? pool->ThreadCount() : 0) << " threads, count " << count);
+            CHECK(alone.load() == 1);
+            CHECK(badRanges.load() == 0);
+            CHECK(std::all_of(visits.begin(), visits.end(),
+                              [](const std::atomic<int>& v) { return v.load() == 1; }));
+        }
+    }
 }
 
 TEST_CASE("large_pyramid by colour has the same state hash every step on 1, 2, 3 and 8 "

@@ -25,6 +25,28 @@ void ForRanges(TaskSystem* tasks, int count, int minRange, F&& f)
     tasks->ParallelFor(count, minRange, f);
 }
 
+/// Runs alone() once and f(begin, end, worker) over ranges covering [0, count) exactly once
+/// (ForRanges), at the same time on `tasks`: a serial piece of work done beside independent
+/// ranges, so that the other threads need not wait for it. The thread that takes the first range
+/// runs alone() before it. alone must not touch what f writes, nor f what alone writes.
+template <typename Alone, typename F>
+void ForRangesBeside(TaskSystem* tasks, int count, int minRange, Alone&& alone, F&& f)
+{
+    ForRanges(tasks, count + 1, minRange,
+              [&](int begin, int end, int worker)
+              {
+                  if (begin == 0)
+                  {
+                      alone();
+                      begin = 1;
+                  }
+                  if (begin < end)
+                  {
+                      f(begin - 1, end - 1, worker);
+                  }
+              });
+}
+
 /// Runs f(i) for each i of [0, count) on `tasks` (ForRanges): for loops whose every index writes
 /// only its own memory.
 template <typename F>

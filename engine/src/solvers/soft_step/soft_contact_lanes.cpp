@@ -322,18 +322,9 @@ void PackLane(SoftContactGroup& g, int l, std::int32_t source, const SoftContact
 
 } // namespace
 
-void SoftContactLanes::Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount,
-                               TaskSystem* tasks)
+void SoftContactLanes::Pack(std::span<const SoftContact> contacts, std::int32_t bodyCount,
+                            TaskSystem* tasks)
 {
-    ColourSoftRows(
-        contacts.size(), bodyCount,
-        [&](std::size_t i)
-        {
-            const SoftContact& c = contacts[i];
-            return ConstraintBodies{c.indexA, c.indexB, SolverMoves(c.mA, c.iA),
-                                    SolverMoves(c.mB, c.iB)};
-        },
-        m_colouring);
     m_errorsKnown = false;
     m_groups.resize(static_cast<std::size_t>(m_groupsOfColour.Cut(m_colouring, tasks, bodyCount)));
     m_groupsOfColour.ForEachGroup([&](std::int32_t i) { PackGroup(i, contacts); });

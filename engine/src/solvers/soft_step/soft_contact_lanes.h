@@ -92,10 +92,18 @@ struct SoftGroupImpulses
 class SoftContactLanes
 {
   public:
-    /// Colours the island's prepared contacts (island order) and packs the coloured ones into
-    /// groups. `bodyCount` is the island's; its discard slots are bodyCount + each worker of
-    /// `tasks` (the world's threads, or null), on which every pass below runs.
-    void Prepare(std::span<const SoftContact> contacts, std::int32_t bodyCount, TaskSystem* tasks);
+    /// Colours the island's `count` contacts (island order), contact i's bodies given by
+    /// `bodiesOf(i)`; `bodyCount` is the island's. Needs nothing SoftContactSolver prepares, so
+    /// it may run while the contacts are prepared.
+    template <typename BodiesOf>
+    void Colour(std::size_t count, std::int32_t bodyCount, BodiesOf&& bodiesOf)
+    {
+        ColourSoftRows(count, bodyCount, bodiesOf, m_colouring);
+    }
+    /// Packs the prepared contacts (island order) into groups by Colour's colours. The island's
+    /// discard slots are bodyCount + each worker of `tasks` (the world's threads, or null), on
+    /// which every pass below runs.
+    void Pack(std::span<const SoftContact> contacts, std::int32_t bodyCount, TaskSystem* tasks);
     /// Island positions of the contacts no colour had room for, in island order.
     std::span<const std::int32_t> Overflow() const { return m_colouring.overflow; }
 

@@ -41,10 +41,29 @@ void Turn(SoftDelta& d, Real angle)
     d.dq = Mul(SmallRotation(angle), d.dq);
 }
 
-/// The rows of island contact k at the bodies' poses of the step's start; returns whether the
-/// contact asked for hit events.
-bool PrepareContact(const IslandContacts& island, std::size_t k, Real warmScale,
-                    const SoftStepContext& context, SoftContact& c)
+/// What a prepared contact asks of the step after its sub-steps (bits of
+/// SoftContactSolver::m_needsOfWorker).
+enum ContactNeeds : std::uint8_t
+{
+    kNeedsHitEvents = 1,   ///< it asked for hit events
+    kNeedsRestitution = 2, ///< its restitution is not zero
+};
+
+/// The bodies of island contact k, as the colouring sees them (the values PrepareContact copies
+/// into the contact's rows).
+ConstraintBodies BodiesOfContact(const IslandContacts& island, std::size_t k)
+{
+    const Contact& contact = island.contacts[island.contactIndices[k]];
+    const Body& bodyA = island.bodies[contact.bodyA];
+    const Body& bodyB = island.bodies[contact.bodyB];
+    return {bodyA.islandIndex, bodyB.islandIndex, SolverMoves(bodyA.invMass, bodyA.invI),
+            SolverMoves(bodyB.invMass, bodyB.invI)};
+}
+
+/// The rows of island contact k at the bodies' poses of the step's start; returns what the
+/// contact needs after the sub-steps (ContactNeeds).
+std::uint8_t PrepareContact(const IslandContacts& island, std::size_t k, Real warmScale,
+                            const SoftStepContext& context, SoftContact& c)
 {
     const std::int32_t contactIndex = island.contactIndices[k];
     const Contact& contact = island.contacts[contactIndex];
@@ -115,7 +134,9 @@ bool PrepareContact(const IslandContacts& island, std::size_t k, Real warmScale,
             c.block = true;
         }
     }
-    return (contact.flags & Contact::HitEvents) != 0;
+    return static_cast<std::uint8_t>(
+        ((contact.flags & Contact::HitEvents) != 0 ? kNeedsHitEvents : 0) |
+        (c.restitution != 0 ? kNeedsRestitution : 0));
 }
 
 } // namespace
@@ -128,23 +149,34 @@ void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepCont
     // Stored impulses are per step; the rows work per sub-step.
     const Real warmScale =
         step.solver.warmStarting ? step.dtRatio / Real(context.substeps) : Real(0);
-    // Each contact's rows are its own: any thread may take any range of them.
-    m_hitEventsOfWorker.assign(static_cast<std::size_t>(WorkerCount(context.tasks)), 0);
-    ForRanges(context.tasks, static_cast<int>(count), kMinSoftContactsPerTask,
-              [&](int begin, int end, int worker)
-              {
-                  bool hitEvents = false;
-                  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end);
-                       ++k)
-                  {
-                      hitEvents =
-                          PrepareContact(island, k, warmScale, context, m_contacts[k]) || hitEvents;
-                  }
-                  m_hitEventsOfWorker[static_cast<std::size_t>(worker)] |= hitEvents ? 1 : 0;
-              });
-    m_anyHitEvents =
-        std::ranges::any_of(m_hitEventsOfWorker, [](std::uint8_t h) { return h != 0; });
-    m_lanes.Prepare(m_contacts, context.bodies->DiscardIndex(), context.tasks);
+    const std::int32_t bodyCount = context.bodies->DiscardIndex();
+    // Each contact's rows are its own: any thread may take any range of them. The colouring
+    // reads only the island, so one thread colours while the others prepare.
+    m_needsOfWorker.assign(static_cast<std::size_t>(WorkerCount(context.tasks)), 0);
+    ForRangesBeside(
+        context.tasks, static_cast<int>(count), kMinSoftContactsPerTask,
+        [&]
+        {
+            m_lanes.Colour(count, bodyCount,
+                           [&island](std::size_t k) { return BodiesOfContact(island, k); });
+        },
+        [&](int begin, int end, int worker)
+        {
+            std::uint8_t needs = 0;
+            for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k)
+            {
+                needs |= PrepareContact(island, k, warmScale, context, m_contacts[k]);
+            }
+            m_needsOfWorker[static_cast<std::size_t>(worker)] |= needs;
+        });
+    std::uint8_t needs = 0;
+    for (const std::uint8_t n : m_needsOfWorker)
+    {
+        needs |= n;
+    }
+    m_anyHitEvents = (needs & kNeedsHitEvents) != 0;
+    m_anyRestitution = (needs & kNeedsRestitution) != 0;
+    m_lanes.Pack(m_contacts, bodyCount, context.tasks);
 }
 
 void SoftContactSolver::WarmStart(const SoftStepContext& context)
@@ -303,6 +335,10 @@ void SoftContactSolver::CorrectContact(const SoftContact& c, const SoftStepConte
 
 void SoftContactSolver::Restitution(const SoftStepContext& context)
 {
+    if (!m_anyRestitution)
+    {
+        return;
+    }
     for (SoftContact& c : m_contacts)
     {
         if (c.restitution == 0)

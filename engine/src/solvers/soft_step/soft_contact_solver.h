@@ -118,7 +118,8 @@ class SoftContactSolver
     std::vector<Vec2> m_saved;
     std::vector<Real> m_savedRolling;
     bool m_anyHitEvents = false;
-    std::vector<std::uint8_t> m_hitEventsOfWorker; ///< Prepare: per worker, whether any has them
+    bool m_anyRestitution = false;             ///< whether a contact's restitution is not zero
+    std::vector<std::uint8_t> m_needsOfWorker; ///< Prepare: per worker, its contacts' ContactNeeds
 };
 
 } // namespace meff::detail
