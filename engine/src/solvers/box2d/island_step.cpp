@@ -74,11 +74,13 @@ void IntegratePosition(Position& position, Velocity& velocity, const StepContext
 void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
                  ContactStage& contacts, JointStage& joints)
 {
-    IntegrateVelocities(world, island, step);
+    const IslandContacts islandContacts{island.contacts, world.contacts, world.bodies};
+    IntegrateVelocities(world, island, step,
+                        [&] { contacts.Arrange(islandContacts, island.bodies.size()); });
     SolverData data{step, island.positions.data(), island.velocities.data(),
                     static_cast<std::int32_t>(island.bodies.size()), world.tasks};
 
-    contacts.Prepare({island.contacts, world.contacts, world.bodies}, data);
+    contacts.Prepare(islandContacts, data);
     if (step.solver.warmStarting)
     {
         contacts.WarmStart(data);
@@ -104,7 +106,8 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
     }
 }
 
-void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step)
+void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step,
+                         FunctionRef<void()> beside)
 {
     const std::size_t count = island.bodies.size();
     // A slot more than the island's bodies for each worker: SolverData::discardIndex.
@@ -113,14 +116,17 @@ void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& 
     island.velocities.resize(count + discardSlots);
     const Real h = step.dt;
     // Each body is its own: any thread may take any range of them.
-    ForEachIndex(world.tasks, static_cast<int>(count), kMinBodiesPerTask,
-                 [&](int b)
-                 {
-                     const auto i = static_cast<std::size_t>(b);
-                     Body& body = world.bodies[island.bodies[i]];
-                     island.positions[i] = {body.sweep.c, body.sweep.a};
-                     island.velocities[i] = IntegrateVelocity(body, world.gravity, h);
-                 });
+    ForRangesBeside(world.tasks, static_cast<int>(count), kMinBodiesPerTask, beside,
+                    [&](int begin, int end, int)
+                    {
+                        for (auto i = static_cast<std::size_t>(begin);
+                             i < static_cast<std::size_t>(end); ++i)
+                        {
+                            Body& body = world.bodies[island.bodies[i]];
+                            island.positions[i] = {body.sweep.c, body.sweep.a};
+                            island.velocities[i] = IntegrateVelocity(body, world.gravity, h);
+                        }
+                    });
 }
 
 void IntegratePositions(Island& island, const StepContext& step, TaskSystem* tasks)

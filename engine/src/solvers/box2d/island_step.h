@@ -12,7 +12,9 @@
 #include "solvers/box2d/contact_constraint.h"
 #include "solvers/island.h"
 #include "solvers/solver.h"
+#include "meff/function_ref.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -26,7 +28,15 @@ struct JointSlot;
 class ContactStage
 {
   public:
-    /// Builds the rows of the island's contacts. Bodies' islandIndex must be set.
+    /// What Prepare needs of the island alone, not of its velocities (the colour back end's
+    /// colouring): SolveIsland runs it on one thread while the others integrate the velocities.
+    /// Bodies' islandIndex must be set; `bodyCount` is the island's.
+    virtual void Arrange(const IslandContacts& island, std::size_t bodyCount)
+    {
+        static_cast<void>(island);
+        static_cast<void>(bodyCount);
+    }
+    /// Builds the rows of the island's contacts, after Arrange. Bodies' islandIndex must be set.
     virtual void Prepare(const IslandContacts& island, SolverData& data) = 0;
     /// Applies last step's accumulated impulses (scaled in Prepare).
     virtual void WarmStart(SolverData& data) = 0;
@@ -70,8 +80,10 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
 
 /// Copies the island's bodies into island.positions/velocities (a slot more per worker of
 /// world.tasks for the lanes' discard, SolverData::discardIndex) and adds gravity, forces and
-/// damping to the velocities, bodies spread over world.tasks.
-void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step);
+/// damping to the velocities, bodies spread over world.tasks; `beside` runs meanwhile on one of
+/// them (ForRangesBeside), and must not touch the island's positions and velocities.
+void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step,
+                         FunctionRef<void()> beside);
 /// Moves every body of the island by h·v (its motion clamped to Tolerances::maxTranslation
 /// and maxRotation per step), bodies spread over `tasks` (null: the calling thread alone).
 void IntegratePositions(Island& island, const StepContext& step, TaskSystem* tasks = nullptr);

@@ -16,6 +16,10 @@ namespace meff::detail
 class ColourContactSolver final : public ContactStage
 {
   public:
+    void Arrange(const IslandContacts& island, std::size_t bodyCount) override
+    {
+        m_lanes.Colour(island, bodyCount);
+    }
     void Prepare(const IslandContacts& island, SolverData& data) override;
     void WarmStart(SolverData& data) override;
     void SolveVelocities(SolverData& data) override;

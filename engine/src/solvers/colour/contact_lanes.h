@@ -64,7 +64,9 @@ struct ContactPositionGroup
 class ContactLanes
 {
   public:
-    /// Colours the island's contacts and prepares the coloured ones kLanes at a time, in lanes
+    /// Colours the island's contacts (ColourContacts); `bodyCount` is the island's.
+    void Colour(const IslandContacts& island, std::size_t bodyCount);
+    /// Prepares the contacts Colour coloured kLanes at a time, in lanes
     /// (contact_lanes_prepare.cpp): the same world manifold, lever arms, effective masses,
     /// restitution bias and block K as ContactSolver's scalar preparation, which the overflow
     /// gets instead. A coloured contact's rows live in the lanes; its `solved[k]` gets the

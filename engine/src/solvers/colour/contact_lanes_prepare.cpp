@@ -312,20 +312,28 @@ bool ContactLanes::PrepareGroup(std::int32_t i, int colour, const IslandContacts
     return in.hitEvents;
 }
 
-bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
-                           const SolverData& data)
+void ContactLanes::Colour(const IslandContacts& island, std::size_t bodyCount)
 {
     if (island.contactIndices.empty())
     {
         // A body in free fall: skip the colouring's fixed cost (its per-body scratch).
         m_colouring.overflow.clear();
+        return;
+    }
+    ColourContacts(island, bodyCount, m_colouring);
+}
+
+bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact> solved,
+                           const SolverData& data)
+{
+    if (island.contactIndices.empty())
+    {
         m_groupStarts.assign(1, 0);
         m_velocityGroups.clear();
         m_positionGroups.clear();
         m_groupMinSeparation.clear();
         return false;
     }
-    ColourContacts(island, static_cast<std::size_t>(data.discardIndex), m_colouring);
     // Each colour's contacts kLanes to a group, colour after colour.
     const std::int32_t groups = GroupStartsOf(m_colouring, m_groupStarts);
     m_velocityGroups.resize(static_cast<std::size_t>(groups));

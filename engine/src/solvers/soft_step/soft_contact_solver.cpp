@@ -2,6 +2,7 @@
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
+#include "solvers/colour/contact_colouring.h"
 #include "tasks/parallel_ranges.h"
 
 #include <algorithm>
@@ -48,17 +49,6 @@ enum ContactNeeds : std::uint8_t
     kNeedsHitEvents = 1,   ///< it asked for hit events
     kNeedsRestitution = 2, ///< its restitution is not zero
 };
-
-/// The bodies of island contact k, as the colouring sees them (the values PrepareContact copies
-/// into the contact's rows).
-ConstraintBodies BodiesOfContact(const IslandContacts& island, std::size_t k)
-{
-    const Contact& contact = island.contacts[island.contactIndices[k]];
-    const Body& bodyA = island.bodies[contact.bodyA];
-    const Body& bodyB = island.bodies[contact.bodyB];
-    return {bodyA.islandIndex, bodyB.islandIndex, SolverMoves(bodyA.invMass, bodyA.invI),
-            SolverMoves(bodyB.invMass, bodyB.invI)};
-}
 
 /// The rows of island contact k at the bodies' poses of the step's start; returns what the
 /// contact needs after the sub-steps (ContactNeeds).
@@ -158,7 +148,7 @@ void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepCont
         [&]
         {
             m_lanes.Colour(count, bodyCount,
-                           [&island](std::size_t k) { return BodiesOfContact(island, k); });
+                           [&island](std::size_t k) { return IslandContactBodies(island, k); });
         },
         [&](int begin, int end, int worker)
         {
