@@ -511,7 +511,7 @@ void ApplyListedWork(WorldState& world, const std::vector<CollideEntry>& entries
 /// code, called in list order on the stepping thread, between the manifolds).
 bool CollidesOnThreads(const WorldState& world)
 {
-    return world.tasks != nullptr && world.solver.kind != SolverKind::Box2D && !world.preSolve;
+    return world.StageTasks() != nullptr && !world.preSolve;
 }
 
 } // namespace

@@ -22,6 +22,7 @@
 #include "dynamics/impact_event.h"
 #include "dynamics/world_state.h"
 #include "solvers/box2d/island_step.h"
+#include "tasks/parallel_ranges.h"
 
 namespace meff::detail
 {
@@ -31,6 +32,9 @@ namespace
 
 /// A contact that has had more events than this in one step is not swept again (b2_maxSubSteps).
 constexpr int kMaxSubSteps = 8;
+/// The fewest impacts a thread is handed at once: a time of impact costs a few microseconds,
+/// about what handing a range to a thread does.
+constexpr int kMinImpactsPerTask = 16;
 /// Capacity of an event's mini-island (b2_maxTOIContacts, and twice that for bodies).
 constexpr std::size_t kMaxToiContacts = 32;
 constexpr std::size_t kMaxToiBodies = 2 * kMaxToiContacts;
@@ -124,6 +128,32 @@ bool ComputeImpact(WorldState& world, Contact& contact, const StepContext& step,
     return true;
 }
 
+/// Whether the search may compute an impact for the contact (b2World::SolveTOI's first tests).
+bool MayHaveImpact(const Contact& contact)
+{
+    return (contact.flags & Contact::Disabled) == 0 && contact.toiCount <= kMaxSubSteps;
+}
+
+/// The impacts the step's first search asks for, computed at once on the threads (colour and
+/// soft step). Every sweep still starts at alpha0 = 0 (ResetContinuousState), so ComputeImpact
+/// advances no sweep: each call reads the bodies and writes only its own contact, and gives
+/// what the search, which lists every candidate first (ImpactQueue::Begin), would compute in
+/// list order. The search then finds them cached (Contact::Toi).
+void ComputeFirstImpacts(WorldState& world, const StepContext& step)
+{
+    ForEachIndex(world.StageTasks(), static_cast<int>(world.sweptContacts.size()),
+                 kMinImpactsPerTask,
+                 [&world, &step](int i)
+                 {
+                     Contact& contact = world.contacts[world.sweptContacts[i]];
+                     Real alpha = 1;
+                     if (MayHaveImpact(contact))
+                     {
+                         ComputeImpact(world, contact, step, alpha);
+                     }
+                 });
+}
+
 /// The contact with the earliest impact in the step (kNullIndex for none), and its alpha: what
 /// b2World::SolveTOI's walk of the contact list finds, from the contacts the last event may
 /// have changed (impact_queue.h).
@@ -134,7 +164,7 @@ std::int32_t FindFirstImpact(WorldState& world, const StepContext& step, Real& m
     {
         Contact& contact = world.contacts[c];
         Real alpha = 1;
-        if ((contact.flags & Contact::Disabled) != 0 || contact.toiCount > kMaxSubSteps)
+        if (!MayHaveImpact(contact))
         {
             queue.Drop(c);
         }
@@ -340,6 +370,10 @@ void SolveContinuous(WorldState& world, const StepContext& step)
 {
     ResetContinuousState(world);
     world.toiQueue.Begin(world);
+    if (world.StageTasks() != nullptr)
+    {
+        ComputeFirstImpacts(world, step);
+    }
     Island& island = world.toiIsland;
     for (;;)
     {

@@ -264,7 +264,7 @@ void SynchronizeShapesOnThreads(WorldState& world)
 void SynchronizeShapes(WorldState& world)
 {
     // Box2D's back end stays on one thread, its walk Box2D 2.4.1's.
-    if (world.tasks != nullptr && world.solver.kind != SolverKind::Box2D)
+    if (world.StageTasks() != nullptr)
     {
         SynchronizeShapesOnThreads(world);
         return;

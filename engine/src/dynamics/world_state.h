@@ -101,6 +101,9 @@ struct WorldState
     /// The user's threads (World::SetTaskSystem), not owned, or null; configuration, not state:
     /// kept across RestoreSnapshot, outside snapshots and the state hash.
     TaskSystem* tasks = nullptr;
+    /// The threads the shared stages may use: the user's, except in Box2D's back end, which
+    /// steps on one thread, bit for bit Box2D 2.4.1.
+    TaskSystem* StageTasks() const { return solver.kind == SolverKind::Box2D ? nullptr : tasks; }
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;
