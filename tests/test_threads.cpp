@@ -15,6 +15,7 @@
 #include <memory>
 #include <mutex>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -307,6 +308,21 @@ TEST_CASE("ForRangesBeside runs the serial piece once and every index once, on a
             CHECK(std::all_of(visits.begin(), visits.end(),
                               [](const std::atomic<int>& v) { return v.load() == 1; }));
         }
+        // A serial piece that throws (it may allocate): every range still runs, and the
+        // exception reaches the caller after them, not through a pool thread.
+        std::vector<std::atomic<int>> visits(4097);
+        CHECK_THROWS_AS(detail::ForRangesBeside(
+                            pool.get(), 4097, 64, [] { throw std::runtime_error("alone"); },
+                            [&](int begin, int end, int)
+                            {
+                                for (int i = begin; i < end; ++i)
+                                {
+                                    visits[static_cast<std::size_t>(i)].fetch_add(1);
+                                }
+                            }),
+                        std::runtime_error);
+        CHECK(std::all_of(visits.begin(), visits.end(),
+                          [](const std::atomic<int>& v) { return v.load() == 1; }));
     }
 }
 

@@ -24,6 +24,8 @@
 #include "solvers/box2d/island_step.h"
 #include "tasks/parallel_ranges.h"
 
+#include <cassert>
+
 namespace meff::detail
 {
 
@@ -146,6 +148,9 @@ void ComputeFirstImpacts(WorldState& world, const StepContext& step)
                  [&world, &step](int i)
                  {
                      Contact& contact = world.contacts[world.sweptContacts[i]];
+                     // What makes the computations independent (ResetContinuousState).
+                     assert(world.bodies[contact.bodyA].sweep.alpha0 == 0 &&
+                            world.bodies[contact.bodyB].sweep.alpha0 == 0);
                      Real alpha = 1;
                      if (MayHaveImpact(contact))
                      {

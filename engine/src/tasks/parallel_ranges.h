@@ -3,6 +3,8 @@
 
 #include "meff/task_system.h"
 
+#include <exception>
+
 namespace meff::detail
 {
 
@@ -28,16 +30,26 @@ void ForRanges(TaskSystem* tasks, int count, int minRange, F&& f)
 /// Runs alone() once and f(begin, end, worker) over ranges covering [0, count) exactly once
 /// (ForRanges), at the same time on `tasks`: a serial piece of work done beside independent
 /// ranges, so that the other threads need not wait for it. The thread that takes the first range
-/// runs alone() before it. alone must not touch what f writes, nor f what alone writes.
+/// runs alone() before it, perhaps a pool thread, so alone must not hand work to `tasks` itself.
+/// alone must not touch what f writes, nor f what alone writes. alone may throw (it may
+/// allocate); its exception is rethrown here once every range is done (a task must not throw).
 template <typename Alone, typename F>
 void ForRangesBeside(TaskSystem* tasks, int count, int minRange, Alone&& alone, F&& f)
 {
+    std::exception_ptr failure;
     ForRanges(tasks, count + 1, minRange,
               [&](int begin, int end, int worker)
               {
                   if (begin == 0)
                   {
-                      alone();
+                      try
+                      {
+                          alone();
+                      }
+                      catch (...)
+                      {
+                          failure = std::current_exception();
+                      }
                       begin = 1;
                   }
                   if (begin < end)
@@ -45,6 +57,10 @@ void ForRangesBeside(TaskSystem* tasks, int count, int minRange, Alone&& alone, 
                       f(begin - 1, end - 1, worker);
                   }
               });
+    if (failure)
+    {
+        std::rethrow_exception(failure);
+    }
 }
 
 /// Runs f(i) for each i of [0, count) on `tasks` (ForRanges): for loops whose every index writes

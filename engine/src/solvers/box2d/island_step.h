@@ -29,8 +29,9 @@ class ContactStage
 {
   public:
     /// What Prepare needs of the island alone, not of its velocities (the colour back end's
-    /// colouring): SolveIsland runs it on one thread while the others integrate the velocities.
-    /// Bodies' islandIndex must be set; `bodyCount` is the island's.
+    /// colouring): SolveIsland runs it on one thread, perhaps a pool thread, while the others
+    /// integrate the velocities (IntegrateVelocities' `beside`). Bodies' islandIndex must be set;
+    /// `bodyCount` is the island's.
     virtual void Arrange(const IslandContacts& island, std::size_t bodyCount)
     {
         static_cast<void>(island);
@@ -81,7 +82,9 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
 /// Copies the island's bodies into island.positions/velocities (a slot more per worker of
 /// world.tasks for the lanes' discard, SolverData::discardIndex) and adds gravity, forces and
 /// damping to the velocities, bodies spread over world.tasks; `beside` runs meanwhile on one of
-/// them (ForRangesBeside), and must not touch the island's positions and velocities.
+/// them (ForRangesBeside), so it must not touch the island's positions and velocities nor the
+/// bodies' sweeps (which IntegrateVelocity writes), must not write any body field
+/// IntegrateVelocity reads, and must not hand work to world.tasks.
 void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& step,
                          FunctionRef<void()> beside);
 /// Moves every body of the island by h·v (its motion clamped to Tolerances::maxTranslation
