@@ -1,6 +1,7 @@
 #include "solvers/soft_step/soft_contact_lanes.h"
 
 #include "solvers/box2d/contact_constraint.h"
+#include "solvers/colour/contact_colouring.h"
 #include "solvers/lanes/block_lanes.h"
 #include "solvers/lanes/lane_bodies.h"
 #include "solvers/lanes/rolling_lanes.h"
@@ -321,6 +322,13 @@ void PackLane(SoftContactGroup& g, int l, std::int32_t source, const SoftContact
 }
 
 } // namespace
+
+void SoftContactLanes::Colour(const IslandContacts& island, std::int32_t bodyCount)
+{
+    ColourSoftRows(
+        island.contactIndices.size(), bodyCount,
+        [&island](std::size_t i) { return IslandContactBodies(island, i); }, m_colouring);
+}
 
 void SoftContactLanes::Pack(std::span<const SoftContact> contacts, std::int32_t bodyCount,
                             TaskSystem* tasks)

@@ -26,6 +26,7 @@
 namespace meff::detail
 {
 
+struct IslandContacts;
 struct SoftContact;
 
 /// An island with fewer rows of a kind (contacts; plain revolute joints) than this keeps them
@@ -92,14 +93,10 @@ struct SoftGroupImpulses
 class SoftContactLanes
 {
   public:
-    /// Colours the island's `count` contacts (island order), contact i's bodies given by
-    /// `bodiesOf(i)`; `bodyCount` is the island's. Needs nothing SoftContactSolver prepares, so
-    /// it may run while the contacts are prepared.
-    template <typename BodiesOf>
-    void Colour(std::size_t count, std::int32_t bodyCount, BodiesOf&& bodiesOf)
-    {
-        ColourSoftRows(count, bodyCount, bodiesOf, m_colouring);
-    }
+    /// Colours the island's contacts (island order; ColourSoftRows); `bodyCount` is the
+    /// island's. Reads only the island, nothing SoftContactSolver prepares, so it may run while
+    /// the contacts are prepared.
+    void Colour(const IslandContacts& island, std::int32_t bodyCount);
     /// Packs the prepared contacts (island order) into groups by Colour's colours. The island's
     /// discard slots are bodyCount + each worker of `tasks` (the world's threads, or null), on
     /// which every pass below runs.

@@ -2,10 +2,7 @@
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
-#include "solvers/colour/contact_colouring.h"
 #include "tasks/parallel_ranges.h"
-
-#include <algorithm>
 
 namespace meff::detail
 {
@@ -145,11 +142,7 @@ void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepCont
     m_needsOfWorker.assign(static_cast<std::size_t>(WorkerCount(context.tasks)), 0);
     ForRangesBeside(
         context.tasks, static_cast<int>(count), kMinSoftContactsPerTask,
-        [&]
-        {
-            m_lanes.Colour(count, bodyCount,
-                           [&island](std::size_t k) { return IslandContactBodies(island, k); });
-        },
+        [&] { m_lanes.Colour(island, bodyCount); },
         [&](int begin, int end, int worker)
         {
             std::uint8_t needs = 0;
