@@ -1,13 +1,16 @@
 # `cmake --install BUILD [--prefix DIR]`: the libraries that were built, their headers, the
 # CMake package (find_package(meff CONFIG): meffConfig.cmake, meffConfigVersion.cmake and the
 # targets meff::engine, and meff::scene, meff::validation, meff::render when built) and a
-# pkg-config file for the engine (meff.pc).
+# pkg-config file for the engine (meff.pc), and the licence files (LICENSE, THIRD_PARTY_NOTICES:
+# Box2D 2.4.1's MIT notice) into the documentation folder, share/doc/meff by default.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(MEFF_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/meff)
 set(MEFF_INSTALLED_TARGETS meff_engine)
 install(DIRECTORY engine/include/meff DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/THIRD_PARTY_NOTICES
+    DESTINATION ${CMAKE_INSTALL_DOCDIR})
 # The optional libraries and their one or two headers each, when they were built.
 foreach(component IN ITEMS scene validation render)
     if(TARGET meff_${component})

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # meff used from outside its repository, as games use it (what CI runs after the test suite):
-#   1. `cmake --install` of the build directory (default: build, already built) into a prefix;
+#   1. `cmake --install` of the build directory (default: build, already built) into a prefix,
+#      with the licence files (LICENSE, THIRD_PARTY_NOTICES) in share/doc/meff;
 #   2. a game configured against that prefix with find_package(meff CONFIG REQUIRED), built
 #      and run, its sources compiled with -ffp-contract=off (meff::engine's usage requirement);
 #   3. the same game built with pkg-config's flags for meff;
@@ -31,6 +32,14 @@ check_contract_off() {
 echo "== 1. cmake --install $BUILD --prefix $WORK/prefix =="
 cmake --install "$BUILD" --prefix "$WORK/prefix" >/dev/null
 ls "$WORK/prefix/lib/cmake/meff" "$WORK/prefix/lib/pkgconfig"
+# The licence and Box2D 2.4.1's notice travel with every installation.
+for file in LICENSE THIRD_PARTY_NOTICES; do
+    if ! cmp -s "$file" "$WORK/prefix/share/doc/meff/$file"; then
+        echo "FAIL: $file is not installed as share/doc/meff/$file" >&2
+        exit 1
+    fi
+done
+grep -q "Copyright (c) 2019 Erin Catto" "$WORK/prefix/share/doc/meff/THIRD_PARTY_NOTICES"
 
 echo "== 2. find_package(meff CONFIG REQUIRED COMPONENTS scene) =="
 cmake -S tests/consumers/find_package -B "$WORK/find_package" \
