@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The main job: installs what is needed, builds, runs every bundled sample scene, validates each
+# The main job: installs what is needed, builds the meff tool (only it and the libraries it
+# links: the test suite is scripts/test.sh's), runs every bundled sample scene, validates each
 # against Box2D 2.4.1, and renders one sample to PNG frames. Everything is written under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh
+MEFF_BUILD_TARGET=meff scripts/build.sh
 MEFF=build/tools/meff/meff
 mkdir -p out/trajectories
 for scene in samples/scenes/*.json; do
