@@ -53,6 +53,15 @@ echo "== 3. pkg-config --cflags --libs meff =="
 flags=$(PKG_CONFIG_PATH="$WORK/prefix/lib/pkgconfig" pkg-config --cflags --libs meff)
 echo "$flags"
 case " $flags " in *" -ffp-contract=off "*) ;; *) echo "FAIL: no -ffp-contract=off" >&2; exit 1 ;; esac
+# pkg-config and the CMake package carry the project's version.
+project_version=$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$BUILD/CMakeCache.txt")
+pc_version=$(PKG_CONFIG_PATH="$WORK/prefix/lib/pkgconfig" pkg-config --modversion meff)
+if [ -z "$project_version" ] || [ "$pc_version" != "$project_version" ] ||
+    ! grep -q "set(PACKAGE_VERSION \"$project_version\")" "$WORK/prefix/lib/cmake/meff/meffConfigVersion.cmake"; then
+    echo "FAIL: version: project '$project_version', meff.pc '$pc_version'" >&2
+    exit 1
+fi
+echo "version $pc_version"
 # An AVX2 build (MEFF_AVX2) needs its users compiled for AVX2 too, as meff::engine says.
 if grep -q '^MEFF_AVX2:BOOL=ON$' "$BUILD/CMakeCache.txt"; then
     case " $flags " in *" -mavx2 "*) ;; *) echo "FAIL: an AVX2 build without -mavx2" >&2; exit 1 ;; esac
