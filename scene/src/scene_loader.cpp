@@ -2,6 +2,7 @@
 // found without guessing, each once, and never let a bad value reach the engine.
 #include "engine_shapes.h"
 #include "json_document.h"
+#include "plausibility_fields.h"
 
 #include "meff/collision.h"
 #include "meff/scene.h"
@@ -1412,6 +1413,8 @@ Scene ReadScene(const Json& document, const std::string& sourcePath, Diagnostics
                                 { ReadSettle(reader, scene.validation.settle.emplace()); });
                     validate.Finish();
                 });
+    ReadSection(top, "plausibility",
+                [&](ObjectReader& reader) { ReadPlausibility(reader, scene.plausibility); });
     ReadSection(top, "render",
                 [&](ObjectReader& render)
                 {

@@ -241,6 +241,44 @@ struct SceneValidation
     friend bool operator==(const SceneValidation&, const SceneValidation&) = default;
 };
 
+/// "plausibility.rest": the scene comes to rest, so that its last frames are checked for it.
+struct ScenePlausibilityRest
+{
+    double after = 0;    ///< s: from this time on, every dynamic body is checked (≥ 0)
+    double speed = 0.05; ///< m/s: the most any point of a dynamic body may move then (≥ 0)
+
+    friend bool operator==(const ScenePlausibilityRest&, const ScenePlausibilityRest&) = default;
+};
+
+/// "plausibility": the thresholds of the physics checks every back end is held to (no NaN,
+/// energy, rebound, joint gaps, penetration, speed, rest), meff::validation::CheckPlausibility
+/// and docs/validation.md. Each field has a default; a scene sets the ones it needs.
+struct ScenePlausibility
+{
+    /// Energy may grow beyond the work done on the scene by at most this fraction of the
+    /// largest kinetic energy of the run ("energy_gain") ...
+    double energyGain = 0.05;
+    /// ... plus every dynamic body lifted this far against gravity, and moving at
+    /// `energySpeed` ("energy_lift", m; "energy_speed", m/s).
+    double energyLift = 0.02;
+    double energySpeed = 0.05;
+    /// A body that hits a static body faster than `reboundApproach` (m/s) where restitution
+    /// is 0 may leave it at most this fast (m/s) ("rebound_speed", "rebound_approach").
+    double reboundSpeed = 0.25;
+    double reboundApproach = 1.0;
+    /// The deepest overlap any contact may report (m) ("penetration").
+    double penetration = 0.05;
+    /// The largest joint gap (anchors apart, or a rod off its length) over the last second
+    /// of the run (m) ("joint_gap").
+    double jointGap = 0.05;
+    /// The fastest any point of a dynamic body may move (m/s), unchecked when absent
+    /// ("max_speed").
+    std::optional<double> maxSpeed;
+    std::optional<ScenePlausibilityRest> rest; ///< "rest": absent, not checked
+
+    friend bool operator==(const ScenePlausibility&, const ScenePlausibility&) = default;
+};
+
 /// "render.camera": what the renderer shows.
 struct SceneCamera
 {
@@ -309,6 +347,7 @@ struct Scene
     SceneValidation validation;
     std::optional<SceneCamera> camera;     ///< absent: the renderer chooses
     std::optional<SceneAnalytic> analytic; ///< absent: no exact answer is known
+    ScenePlausibility plausibility;        ///< "plausibility": the checks' thresholds
     /// What was accepted but does nothing, as Box2D accepts it (a joint between two bodies
     /// that cannot move): "FILE: FIELD.PATH: warning: MESSAGE", for the user to see.
     std::vector<std::string> warnings;
