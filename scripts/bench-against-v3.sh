@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Times meff beside Box2D v3 on samples/bench/ scenes, paired and alternating (README,
-# Performance): per scene and round, v3 on 1 worker, meff by colour and by the soft step on 1
+# Times meff beside Box2D v3 on samples/bench/ scenes, paired and alternating (docs/
+# performance.md): per scene and round, v3 on 1 worker, meff by colour and by the soft step on 1
 # thread, v3 on 2 workers, meff by colour and by the soft step on 2 threads. Prints ms/step per
 # run, one line per scene and round, with the load average. Box2D v3 is not a dependency: build
 # its `benchmark` program outside the project (erincatto/box2d, -DBOX2D_BENCHMARKS=ON) and pass

@@ -40,9 +40,9 @@ ENGINES = ("meff", "box2d")
 MEFF_ONLY = [("meff_colour", "colour", 4), ("meff_soft_step", "soft_step", 1),
              ("meff_soft_step", "soft_step", 4)]
 # The soft step at its defaults (4 substeps, 60 Hz) must beat Box2D's step at 60 Hz on the
-# pendulum by at least this factor: over 10 s the rod is 1.9 mm off against 1.36 m (README,
-# docs/soft-step.md), a factor of 700; over the quick sweep's 2 s the first-order step's error
-# has had less time to grow, so the bar is set well below the 10 s figure. A soft step that
+# pendulum by at least this factor: over 10 s the rod is 1.9 mm off against 1.36 m
+# (docs/api-guide.md, docs/soft-step.md), a factor of 700; over the quick sweep's 2 s the
+# first-order step's error has had less time to grow, so the bar is set well below the 10 s figure. A soft step that
 # loses its second-order kicks (plain sub-stepped Euler) errs by O(dt/4) and fails it.
 SOFT_GAIN = 20
 MAX_RATIO = 0.75

@@ -7,8 +7,8 @@ Passes when, on the given scenes:
     byte (summary.json, divergence.csv) and the same JUnit XML apart from its time attributes
     (wall clock, which differs between any two runs);
   * --shard 1/3, 2/3, 3/3 together validate every scene exactly once, each shard's JUnit file
-    is well-formed, and the shards' <testsuite> blocks merged as README's "Regression runs" says
-    hold every scene once;
+    is well-formed, and the shards' <testsuite> blocks merged as docs/validation.md's
+    "Regression runs" says hold every scene once;
   * a scene made to diverge (meff at 4 velocity iterations against Box2D's 8) is a JUnit
     <failure> naming the divergence frame, the quantity, where, and both engines' values, and
     the scene's summary.json lists the same details;

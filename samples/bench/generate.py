@@ -51,8 +51,8 @@ def write_pyramid(rows, name, path=None):
 
 
 if len(sys.argv) == 4 and sys.argv[1] == "--pyramid":
-    # generate.py --pyramid ROWS OUT.json: one pyramid of any size (the README's cost per body
-    # from 55 to 20,100 boxes; the large ones are not bundled), and nothing else.
+    # generate.py --pyramid ROWS OUT.json: one pyramid of any size (docs/performance.md's cost
+    # per body from 55 to 20,100 boxes; the large ones are not bundled), and nothing else.
     write_pyramid(int(sys.argv[2]), f"pyramid{sys.argv[2]}", sys.argv[3])
     sys.exit(0)
 

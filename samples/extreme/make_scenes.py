@@ -121,7 +121,7 @@ write(scene(
     "on its top box: 100 times a light box, 4.8 times the whole pyramid. What must hold: no box "
     "passes through another or the ground, the pyramid does not collapse, and it stands for "
     "30 s. With Box2D's default 8 velocity iterations it does not (in meff as in Box2D 2.4.1): "
-    "see the README's stability table for the iterations it needs.",
+    "see docs/stability.md's table for the iterations it needs.",
     world(STAND),
     [ground(10)] + pyramid(rows) + [box("heavy", 0, heavy_y, 0.5, 0.5, density=100)],
     camera=((0, 3.5), 9)))

@@ -4,7 +4,7 @@
     check_cli.py MEFF SOURCE_DIR WORK_DIR CASE
 
 Each CASE (a function below named case_CASE) runs the tool as a user would and passes when it
-does what the README promises:
+does what the documentation (docs/cli.md, docs/validation.md) promises:
 
 * regular output files appear whole or not at all, through a temporary file renamed into
   place; anything else is written through, in place: "-", /dev/stdout, a FIFO, a device; a

@@ -1,6 +1,6 @@
 // Running one extreme scene (samples/extreme/) in meff and, through the validation mirror, in
 // Box2D 2.4.1, and measuring both the same way. The tests assert what must hold for meff; they
-// also measure Box2D on the same scene, so the README's stability table states both engines'
+// also measure Box2D on the same scene, so docs/stability.md's table states both engines'
 // results from one place, and where a claim about Box2D is made, a CHECK pins it.
 //
 // The two engines are not compared frame by frame here (these scenes are chaotic or long, and
@@ -211,7 +211,7 @@ inline std::vector<std::size_t> DynamicBodies(const Scene& scene)
     return indices;
 }
 
-/// A line for the README's stability table, printed with the test's output (ctest -V).
+/// A line for docs/stability.md's table, printed with the test's output (ctest -V).
 inline void Report(const std::string& scene, const Engine& engine, const std::string& result)
 {
     std::printf("STABILITY | %s | %s | %s%s%s\n", scene.c_str(), engine.Name(), result.c_str(),

@@ -1,6 +1,6 @@
 // The extreme scenes of samples/extreme/ (issue 7): each scene, what must hold for meff, and
-// Box2D 2.4.1's result on the same scene through the validation mirror. The README's stability
-// table is made from the STABILITY lines these tests print (`ctest -R extreme -V`).
+// Box2D 2.4.1's result on the same scene through the validation mirror. docs/stability.md's
+// stability table is made from the STABILITY lines these tests print (`ctest -R extreme -V`).
 //
 // Tolerances are argued next to each check. Three lengths recur:
 //   linear slop 0.005 m — the overlap the position solver leaves at rest (Box2D's constant);
@@ -167,7 +167,7 @@ TEST_CASE("mass ratio 100:1: the heavy box stays on the light box for 30 s (8 it
     const BoxOnBox b = RunBoxOnBox(box2d, scene);
     REQUIRE(meff.failure.empty());
     CheckBoxOnBoxStands(m);
-    CheckBoxOnBoxStands(b); // the README says Box2D holds too
+    CheckBoxOnBoxStands(b); // docs/stability.md says Box2D holds too
 }
 
 TEST_CASE("mass ratio 1000:1: crushed through the ground at 8 iterations (known limit, as "
@@ -262,9 +262,9 @@ TEST_CASE("chain of 20 light links holding a 100x weight: stretch bounded", "[ex
     const Scene scene = LoadExtreme("chain_heavy_weight");
     {
         // 8 iterations: the weight falls before the links take up its pull (each iteration
-        // carries it one link further). Stated bounds, from the measured run (README: 5.46 m
-        // and 0.296 m): worst stretch below 6 m (60 % of the chain!) in the first second,
-        // below 0.5 m after 30 s.
+        // carries it one link further). Stated bounds, from the measured run
+        // (docs/stability.md: 5.46 m and 0.296 m): worst stretch below 6 m (60 % of the chain!) in
+        // the first second, below 0.5 m after 30 s.
         MeffEngine meff(scene);
         Box2DEngine box2d(scene);
         const Stretch m = RunChain(meff, scene);
@@ -803,7 +803,7 @@ TEST_CASE("at dt = 1/30 s the 10-box column collapses (known limit, as Box2D)", 
 {
     // 8 iterations at 30 Hz cannot hold 10 boxes: the first steps sink the column by more
     // than position correction recovers and it bursts. Stated so a change is noticed; a
-    // column of 8 stands at 30 Hz (README).
+    // column of 8 stands at 30 Hz (docs/stability.md).
     Scene scene = LoadExtreme("dt_sweep_stack");
     scene.world.dt = 1.0 / 30;
     scene.world.frames = 30 * 30;

@@ -1,8 +1,8 @@
 // The soft step at its defaults against the targets of issue 16 (60 Hz, 10 s of simulated
 // time): each figure is measured as tests/extreme/soft_step_measures.h describes and printed
-// (ctest -V) for the README. A met target is asserted as the target; a missed one (said so in
-// the README and the test's comment) is asserted at what the soft step reaches, so that a
-// regression still fails.
+// (ctest -V) for the documentation (docs/api-guide.md). A met target is asserted as the target; a
+// missed one (said so in the documentation and the test's comment) is asserted at what the soft
+// step reaches, so that a regression still fails.
 #include "soft_step_measures.h"
 
 #include <catch2/catch.hpp>

@@ -1,8 +1,8 @@
 // JUnit XML, which every CI shows natively (GitLab's test report, GitHub Actions' test
 // reporters, Jenkins): one <testsuite> per file inside <testsuites>, one <testcase> per item.
 // The <testsuite> element and its end tag stand on lines of their own, so the files of several
-// shards merge into one by taking their <testsuite> blocks into one <testsuites> (README:
-// "Regression runs").
+// shards merge into one by taking their <testsuite> blocks into one <testsuites>
+// (docs/validation.md: "Regression runs").
 #pragma once
 
 #include <string>

@@ -1370,8 +1370,8 @@ Command AddSweepCommand(CLI::App& parent)
         "Measure what each solver setting costs and how accurate it is, in meff and in Box2D "
         "2.4.1, over a grid of velocity iterations, position iterations, time steps, block "
         "solver and warm starting, with meff's colour back end and its soft step (substeps × "
-        "time step × joint stiffness) beside them (see the README's \"Speed versus "
-        "accuracy\").\n"
+        "time step × joint stiffness) beside them (see docs/performance.md, \"Speed "
+        "versus accuracy\").\n"
         "Writes DIR/sweep.csv, one row per engine and setting, and DIR/pareto.png (error "
         "against cost, if python3 with matplotlib is present).");
     app->add_option("scene", options->scenePath, "Scene file (JSON)")

@@ -1,5 +1,5 @@
-// meff_strip: puts PNG frames side by side into one PNG, for documentation (the README's strip
-// of frames made by `meff render`). The frames are copied pixel for pixel, never redrawn.
+// meff_strip: puts PNG frames side by side into one PNG, for documentation (docs/rendering.md's
+// strip of frames made by `meff render`). The frames are copied pixel for pixel, never redrawn.
 //
 //   meff_strip OUT.png FRAME.png... [--gap N]
 #include "meff/render.h"

@@ -1,4 +1,4 @@
-// Micro-benchmarks of the pieces a step spends its time in (see README, "Performance").
+// Micro-benchmarks of the pieces a step spends its time in (see docs/performance.md).
 #include "collision/broad_phase.h"
 #include "dynamics/body.h"
 #include "dynamics/contact.h"

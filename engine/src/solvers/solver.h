@@ -85,7 +85,7 @@ CollisionPolicy Box2DCollision(const Tolerances& tolerances);
 /// (TreeUpdate::EnlargeAndRebuild); touching manifolds kept while their shapes move less than the
 /// linear slop relative to each other (Collide). Against Box2D's rule: fewer candidate pairs, so
 /// fewer contacts to walk and solve (spinner 127,000 → 34,000 by the soft step), and cheap tree
-/// updates for the proxies that leave their smaller boxes more often (README, Performance). Which
+/// updates for the proxies that leave their smaller boxes more often (docs/performance.md). Which
 /// contacts exist, and so their order, changes; a kept manifold is within the slop of the exact
 /// one.
 CollisionPolicy ThroughputCollision(const Tolerances& tolerances);

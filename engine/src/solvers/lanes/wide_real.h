@@ -18,7 +18,7 @@ namespace meff::detail
 // The lane count is fixed per build: MEFF_SIMD_LANES=8 comes with -mavx2 (engine/CMakeLists.txt,
 // option MEFF_AVX2), and 4 is the default. The colouring does not depend on it, and lanes never
 // share a body the solver moves, so both builds solve each constraint with the same operations
-// (see README, "Build options", for where they can still differ).
+// (see docs/api-guide.md, "SIMD lanes", for where they can still differ).
 #ifndef MEFF_SIMD_LANES
 #define MEFF_SIMD_LANES 4
 #endif
