@@ -81,10 +81,10 @@ struct Chain
 /// A convex polygon with counter-clockwise vertices and outward unit normals.
 struct Polygon
 {
-    Vec2 vertices[kMaxPolygonVertices]{};
-    Vec2 normals[kMaxPolygonVertices]{};
-    Vec2 centroid{}; ///< area centroid in body coordinates (m)
-    int count = 0;   ///< number of vertices, 3..kMaxPolygonVertices
+    Vec2 vertices[kMaxPolygonVertices]{}; ///< counter-clockwise, body coordinates (m)
+    Vec2 normals[kMaxPolygonVertices]{};  ///< outward unit normal of edge i (vertex i to i + 1)
+    Vec2 centroid{};                      ///< area centroid in body coordinates (m)
+    int count = 0;                        ///< number of vertices, 3..kMaxPolygonVertices
     /// Collision radius (m). Up to Tolerances::polygonSkin (MakePolygon and MakeBox give 0) the
     /// polygon is sharp and the world sets it to the skin, as Box2D 2.4.1 does; above it the
     /// polygon is rounded (Box2D v3's rounded polygon): its surface is every point within
@@ -149,10 +149,11 @@ AABB ComputeAABB(const Capsule& capsule, const Transform& xf);
 /// b2ContactFeature so that feature keys agree between the engines.
 struct ContactFeature
 {
+    /// What kind of feature an index names.
     enum Type : std::uint8_t
     {
-        Vertex = 0,
-        Face = 1,
+        Vertex = 0, ///< a vertex
+        Face = 1,   ///< a face (edge)
     };
     std::uint8_t indexA = 0; ///< feature index on shape A
     std::uint8_t indexB = 0; ///< feature index on shape B
@@ -180,17 +181,18 @@ struct ManifoldPoint
 /// that the position solver can re-evaluate them as the bodies move.
 struct Manifold
 {
+    /// Which frame the manifold is stored in.
     enum class Type : std::uint8_t
     {
-        Circles,
-        FaceA,
-        FaceB,
+        Circles, ///< two circles: localPoint is A's centre
+        FaceA,   ///< a face of A: localNormal and localPoint are on it
+        FaceB,   ///< a face of B: localNormal and localPoint are on it
     };
-    ManifoldPoint points[2]{};
+    ManifoldPoint points[2]{}; ///< the first pointCount are used
     Vec2 localNormal{}; ///< FaceA: normal of A's face; FaceB: normal of B's face; Circles: unused
     Vec2 localPoint{};  ///< Circles: centre of A; FaceA: point on A's face; FaceB: on B's face
-    Type type = Type::Circles;
-    int pointCount = 0;
+    Type type = Type::Circles; ///< the frame of localNormal and localPoint
+    int pointCount = 0;        ///< 0, 1 or 2
 };
 
 /// A manifold evaluated in world coordinates.
@@ -200,6 +202,8 @@ struct WorldManifold
     Vec2 points[2]{};    ///< contact points, midway between the two surfaces (m)
     Real separations[2]; ///< negative when overlapping (m)
 
+    /// Evaluates `manifold` at the two shapes' transforms and radii (Box2D 2.4.1's
+    /// b2WorldManifold::Initialize).
     void Initialize(const Manifold& manifold, const Transform& xfA, Real radiusA,
                     const Transform& xfB, Real radiusB);
 };

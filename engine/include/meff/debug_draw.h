@@ -14,12 +14,13 @@ namespace meff
 /// A colour with components in [0, 1].
 struct DrawColor
 {
-    float r = 1;
-    float g = 1;
-    float b = 1;
+    float r = 1; ///< red
+    float g = 1; ///< green
+    float b = 1; ///< blue
     float a = 1; ///< opacity
 
     constexpr DrawColor() = default;
+    /// The colour (r_, g_, b_) with opacity a_.
     constexpr DrawColor(float r_, float g_, float b_, float a_ = 1) : r(r_), g(g_), b(b_), a(a_) {}
 };
 
@@ -27,17 +28,17 @@ struct DrawColor
 /// they read on a light background.
 struct DrawPalette
 {
-    DrawColor staticBody{0.35f, 0.65f, 0.35f};
-    DrawColor kinematicBody{0.40f, 0.45f, 0.85f};
-    DrawColor dynamicBody{0.90f, 0.55f, 0.45f};
+    DrawColor staticBody{0.35f, 0.65f, 0.35f};    ///< static bodies' shapes
+    DrawColor kinematicBody{0.40f, 0.45f, 0.85f}; ///< kinematic bodies' shapes
+    DrawColor dynamicBody{0.90f, 0.55f, 0.45f};   ///< awake dynamic bodies' shapes
     /// Dynamic bodies that are asleep.
     DrawColor sleepingBody{0.60f, 0.60f, 0.60f};
-    DrawColor joint{0.25f, 0.60f, 0.75f};
-    DrawColor contactPoint{0.85f, 0.10f, 0.10f};
-    DrawColor contactNormal{0.10f, 0.55f, 0.15f};
-    DrawColor contactImpulse{0.80f, 0.15f, 0.60f};
-    DrawColor jointReaction{0.95f, 0.55f, 0.00f};
-    DrawColor aabb{0.80f, 0.40f, 0.85f};
+    DrawColor joint{0.25f, 0.60f, 0.75f};          ///< joints, anchors and their lines
+    DrawColor contactPoint{0.85f, 0.10f, 0.10f};   ///< contact points
+    DrawColor contactNormal{0.10f, 0.55f, 0.15f};  ///< contact normals
+    DrawColor contactImpulse{0.80f, 0.15f, 0.60f}; ///< contact impulse arrows
+    DrawColor jointReaction{0.95f, 0.55f, 0.00f};  ///< joint reaction arrows
+    DrawColor aabb{0.80f, 0.40f, 0.85f};           ///< broad-phase boxes
 };
 
 /// What World::Draw draws, and how big. Designated initializers read well here:
@@ -59,7 +60,7 @@ struct DrawFlags
     Real normalLength = Real(0.3); ///< length of a contact normal (m)
     Real arrowHead = Real(0.1);    ///< length of an arrow's head (m)
     Real pointSize = 4;            ///< contact and anchor points, in pixels (as b2Draw)
-    DrawPalette colors{};
+    DrawPalette colors{};          ///< the colours of everything drawn
 };
 
 /// Implement this to see a world: World::Draw calls it once per primitive, in a fixed order
@@ -74,10 +75,12 @@ class DebugDraw
     virtual void DrawPolygon(std::span<const Vec2> vertices, const DrawColor& color) = 0;
     /// A filled convex polygon (counter-clockwise vertices) with its outline.
     virtual void DrawSolidPolygon(std::span<const Vec2> vertices, const DrawColor& color) = 0;
+    /// A circle's outline (centre and radius in m).
     virtual void DrawCircle(Vec2 center, Real radius, const DrawColor& color) = 0;
     /// A filled circle with its outline and a line from the centre along `axis` (a unit
     /// vector), which shows how the body has turned.
     virtual void DrawSolidCircle(Vec2 center, Real radius, Vec2 axis, const DrawColor& color) = 0;
+    /// A line from p1 to p2 (m).
     virtual void DrawSegment(Vec2 p1, Vec2 p2, const DrawColor& color) = 0;
     /// A frame: its x axis in red and y axis in green (Box2D's convention).
     virtual void DrawTransform(const Transform& xf) = 0;

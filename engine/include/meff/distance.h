@@ -19,9 +19,9 @@ namespace meff
 /// skin of a polygon or segment.
 struct DistanceProxy
 {
-    Vec2 vertices[kMaxPolygonVertices]{};
-    int count = 0;
-    Real radius = 0;
+    Vec2 vertices[kMaxPolygonVertices]{}; ///< the points, in the shape's frame (m)
+    int count = 0;                        ///< how many of vertices are used
+    Real radius = 0;                      ///< added around the points' hull (m)
 
     /// Index of the vertex furthest along direction d (the first one on ties).
     int GetSupport(Vec2 d) const
@@ -39,6 +39,7 @@ struct DistanceProxy
         }
         return bestIndex;
     }
+    /// vertices[index].
     Vec2 GetVertex(int index) const { return vertices[index]; }
 };
 
@@ -54,27 +55,29 @@ DistanceProxy MakeProxy(const ChainSegment& segment);
 /// proxies (as the time-of-impact loop does). Start with count = 0.
 struct SimplexCache
 {
-    Real metric = 0;         ///< length or area of the simplex
-    std::uint16_t count = 0; ///< 0 (empty) to 3
-    std::uint8_t indexA[3] = {0, 0, 0};
-    std::uint8_t indexB[3] = {0, 0, 0};
+    Real metric = 0;                    ///< length or area of the simplex
+    std::uint16_t count = 0;            ///< 0 (empty) to 3
+    std::uint8_t indexA[3] = {0, 0, 0}; ///< the simplex's vertices on proxy A
+    std::uint8_t indexB[3] = {0, 0, 0}; ///< the simplex's vertices on proxy B
 };
 
+/// The two proxies and where they are, for ShapeDistance.
 struct DistanceInput
 {
-    DistanceProxy proxyA;
-    DistanceProxy proxyB;
-    Transform transformA{};
-    Transform transformB{};
-    bool useRadii = false; ///< measure between the rounded surfaces, not the cores
+    DistanceProxy proxyA;   ///< the first shape
+    DistanceProxy proxyB;   ///< the second shape
+    Transform transformA{}; ///< where proxy A is
+    Transform transformB{}; ///< where proxy B is
+    bool useRadii = false;  ///< measure between the rounded surfaces, not the cores
 };
 
+/// What ShapeDistance finds.
 struct DistanceOutput
 {
-    Vec2 pointA{};     ///< closest point on A (m)
-    Vec2 pointB{};     ///< closest point on B (m)
-    Real distance = 0; ///< 0 when overlapping (m)
-    int iterations = 0;
+    Vec2 pointA{};      ///< closest point on A (m)
+    Vec2 pointB{};      ///< closest point on B (m)
+    Real distance = 0;  ///< 0 when overlapping (m)
+    int iterations = 0; ///< GJK iterations taken
 };
 
 /// Closest points of two convex proxies by GJK. `cache` is read (count 0: cold start) and
@@ -85,51 +88,56 @@ DistanceOutput ShapeDistance(const DistanceInput& input, SimplexCache& cache);
 bool TestOverlap(const DistanceProxy& proxyA, const Transform& xfA, const DistanceProxy& proxyB,
                  const Transform& xfB);
 
+/// The two proxies, where they start and how B moves, for ShapeCast.
 struct ShapeCastInput
 {
-    DistanceProxy proxyA;
-    DistanceProxy proxyB;
-    Transform transformA{};
-    Transform transformB{};
+    DistanceProxy proxyA;          ///< the shape that stays
+    DistanceProxy proxyB;          ///< the shape that moves
+    Transform transformA{};        ///< where proxy A is
+    Transform transformB{};        ///< where proxy B starts
     Vec2 translationB{};           ///< B moves by this over the cast; A stays (m)
     Real polygonSkin = Real(0.01); ///< Tolerances::polygonSkin: smallest radius a proxy is given
     Real linearSlop = Real(0.005); ///< Tolerances::linearSlop: half of it is the tolerance
 };
 
+/// What ShapeCast finds.
 struct ShapeCastOutput
 {
-    Vec2 point{};    ///< contact point on A at the hit (m)
-    Vec2 normal{};   ///< unit normal at the hit
-    Real lambda = 1; ///< fraction of translationB travelled to the hit
-    int iterations = 0;
+    Vec2 point{};       ///< contact point on A at the hit (m)
+    Vec2 normal{};      ///< unit normal at the hit
+    Real lambda = 1;    ///< fraction of translationB travelled to the hit
+    int iterations = 0; ///< iterations taken
 };
 
 /// Casts B along translationB against A (GJK ray cast). Returns false when they never touch
 /// within the translation, or already overlap at the start.
 bool ShapeCast(const ShapeCastInput& input, ShapeCastOutput& output);
 
+/// Two proxies and their motions over a step, for TimeOfImpact.
 struct TOIInput
 {
-    DistanceProxy proxyA;
-    DistanceProxy proxyB;
-    Sweep sweepA{};
-    Sweep sweepB{};
+    DistanceProxy proxyA;          ///< the first shape, in its body's frame
+    DistanceProxy proxyB;          ///< the second shape, in its body's frame
+    Sweep sweepA{};                ///< how A's body moves
+    Sweep sweepB{};                ///< how B's body moves
     Real tMax = 1;                 ///< end of the sweep interval to search, in [0, 1]
     Real linearSlop = Real(0.005); ///< Tolerances::linearSlop
 };
 
+/// What TimeOfImpact finds.
 struct TOIOutput
 {
+    /// How the search ended.
     enum class State : std::uint8_t
     {
-        Unknown,
+        Unknown,    ///< not searched
         Failed,     ///< the root finder ran out of iterations; t is the last safe time
         Overlapped, ///< the cores already overlap at the start; t = 0
         Touching,   ///< t is the time of impact
         Separated,  ///< no impact before tMax; t = tMax
     };
-    State state = State::Unknown;
-    Real t = 0;
+    State state = State::Unknown; ///< how the search ended
+    Real t = 0;                   ///< the time found, a fraction of the step (see state)
 };
 
 /// The first time in [0, tMax] at which the two sweeps bring the cores of the shapes within

@@ -28,6 +28,7 @@ class InvalidArgument : public Error
 class SimulationError : public Error
 {
   public:
+    /// The message, the failed step and the body's index.
     SimulationError(const std::string& what, std::uint64_t step_, std::int32_t bodyIndex_)
         : Error(what), step(step_), bodyIndex(bodyIndex_)
     {

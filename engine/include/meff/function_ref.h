@@ -15,10 +15,13 @@ namespace meff
 template <typename Signature>
 class FunctionRef;
 
+/// A non-owning reference to a callable (R(Args...)): what the world's queries and the task
+/// system take, without allocating. The callable must outlive the call it is passed to.
 template <typename R, typename... Args>
 class FunctionRef<R(Args...)>
 {
   public:
+    /// Refers to `callable` (a lambda converts implicitly).
     template <typename F>
     requires(!std::is_same_v<std::remove_cvref_t<F>, FunctionRef> &&
              std::is_invocable_r_v<R, F&, Args...>) FunctionRef(F&& callable)
@@ -28,6 +31,7 @@ class FunctionRef<R(Args...)>
     {
     }
 
+    /// Calls the callable.
     R operator()(Args... args) const { return m_call(m_object, std::forward<Args>(args)...); }
 
   private:

@@ -29,17 +29,17 @@ enum class JointType : std::uint8_t
 /// as two scalar rows, each with the scalar effective mass.
 struct RevoluteJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
-    Vec2 localAnchorA{};     ///< anchor in bodyA's frame (m)
-    Vec2 localAnchorB{};     ///< anchor in bodyB's frame (m)
-    Real referenceAngle = 0; ///< angleB − angleA at which the joint angle is zero (rad)
-    bool enableLimit = false;
-    Real lowerAngle = 0; ///< rad, ≤ upperAngle
-    Real upperAngle = 0; ///< rad
-    bool enableMotor = false;
-    Real motorSpeed = 0;     ///< target relative angular speed (rad/s)
-    Real maxMotorTorque = 0; ///< N·m, ≥ 0
+    BodyId bodyA{};           ///< the first body (A)
+    BodyId bodyB{};           ///< the second body (B)
+    Vec2 localAnchorA{};      ///< anchor in bodyA's frame (m)
+    Vec2 localAnchorB{};      ///< anchor in bodyB's frame (m)
+    Real referenceAngle = 0;  ///< angleB − angleA at which the joint angle is zero (rad)
+    bool enableLimit = false; ///< keep the joint angle in [lowerAngle, upperAngle]
+    Real lowerAngle = 0;      ///< rad, ≤ upperAngle
+    Real upperAngle = 0;      ///< rad
+    bool enableMotor = false; ///< drive the joint at motorSpeed with at most maxMotorTorque
+    Real motorSpeed = 0;      ///< target relative angular speed (rad/s)
+    Real maxMotorTorque = 0;  ///< N·m, ≥ 0
     /// A torsional spring on the joint angle (Box2D v3's): it pulls angleB − angleA −
     /// referenceAngle towards targetAngle. Off by default; with it off the joint is Box2D
     /// 2.4.1's exactly. Solved before the motor and the limits, which bound it.
@@ -57,8 +57,8 @@ struct RevoluteJointDef
 /// hertz = 0, a spring when hertz > 0 (then min/max act as limits).
 struct DistanceJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
+    BodyId bodyA{};                ///< the first body (A)
+    BodyId bodyB{};                ///< the second body (B)
     Vec2 localAnchorA{};           ///< anchor in bodyA's frame (m)
     Vec2 localAnchorB{};           ///< anchor in bodyB's frame (m)
     Real length = 1;               ///< rest length (m), clamped to ≥ linear slop
@@ -76,8 +76,8 @@ struct DistanceJointDef
 /// mass; the motor and the two limits act along the axis.
 struct PrismaticJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
+    BodyId bodyA{};            ///< the first body (A)
+    BodyId bodyB{};            ///< the second body (B)
     Vec2 localAnchorA{};       ///< anchor in bodyA's frame (m); default (0, 0)
     Vec2 localAnchorB{};       ///< anchor in bodyB's frame (m); default (0, 0)
     Vec2 localAxisA{1, 0};     ///< slide direction in bodyA's frame, non-zero; normalized at
@@ -120,8 +120,8 @@ struct JointSpring
 /// scalar in Box2D already, each with the scalar effective mass.
 struct WheelJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
+    BodyId bodyA{};            ///< the first body (A)
+    BodyId bodyB{};            ///< the second body (B)
     Vec2 localAnchorA{};       ///< anchor in bodyA's frame (m); default (0, 0)
     Vec2 localAnchorB{};       ///< anchor in bodyB's frame (m); default (0, 0)
     Vec2 localAxisA{1, 0};     ///< suspension direction in bodyA's frame, non-zero; normalized at
@@ -146,8 +146,8 @@ struct WheelJointDef
 /// mass. With hertz > 0 the angle is a torsional spring (the point stays rigid).
 struct WeldJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
+    BodyId bodyA{};          ///< the first body (A)
+    BodyId bodyB{};          ///< the second body (B)
     Vec2 localAnchorA{};     ///< anchor in bodyA's frame (m)
     Vec2 localAnchorB{};     ///< anchor in bodyB's frame (m)
     Real referenceAngle = 0; ///< angleB − angleA that the joint holds (rad)
@@ -166,8 +166,8 @@ struct WeldJointDef
 /// correctionFactor feeds the pose error into the velocity rows instead.
 struct MotorJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
+    BodyId bodyA{};                    ///< the first body (A)
+    BodyId bodyB{};                    ///< the second body (B)
     Vec2 linearOffset{};               ///< target position of bodyB's origin in bodyA's frame (m)
     Real angularOffset = 0;            ///< target angleB − angleA (rad)
     Real maxForce = 1;                 ///< N, ≥ 0 (Box2D's default)
@@ -183,7 +183,7 @@ struct MotorJointDef
 /// 0.98 each step, so the dragged body's spin decays; mirrored.
 struct MouseJointDef
 {
-    BodyId bodyA{};
+    BodyId bodyA{}; ///< normally a static ground body (takes no part in the solve)
     BodyId bodyB{}; ///< dynamic
     /// World point (m) that grabs bodyB at creation and is its first target; move the target
     /// with World::SetMouseTarget.
@@ -202,8 +202,8 @@ struct MouseJointDef
 /// effective mass; the angular row is scalar.
 struct FrictionJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
+    BodyId bodyA{};                ///< the first body (A)
+    BodyId bodyB{};                ///< the second body (B)
     Vec2 localAnchorA{};           ///< anchor in bodyA's frame (m); default (0, 0)
     Vec2 localAnchorB{};           ///< anchor in bodyB's frame (m); default (0, 0)
     Real maxForce = 0;             ///< N, ≥ 0; default 0 (Box2D's: no friction)
@@ -220,8 +220,8 @@ struct FrictionJointDef
 /// taut (the lengths well above 10 linear slops, where the rope's direction is defined).
 struct PulleyJointDef
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
+    BodyId bodyA{};               ///< the first body (A)
+    BodyId bodyB{};               ///< the second body (B)
     Vec2 groundAnchorA{-1, 1};    ///< fixed world point body A hangs from (m); Box2D's default
     Vec2 groundAnchorB{1, 1};     ///< fixed world point body B hangs from (m)
     Vec2 localAnchorA{-1, 0};     ///< rope end in bodyA's frame (m)

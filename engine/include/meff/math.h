@@ -16,7 +16,7 @@ namespace meff
 using Real = double;
 #else
 /// The engine's scalar. float by default, as Box2D 2.4.1, so that the two engines can agree
-/// frame by frame; build with -DMEFF_DOUBLE=ON for double (see README, "Scalar type").
+/// frame by frame; build with -DMEFF_DOUBLE=ON for double (see docs/api-guide.md, "Scalar type").
 using Real = float;
 #endif
 
@@ -29,36 +29,45 @@ inline bool IsValid(Real x)
     return std::isfinite(x);
 }
 
+/// A 2D vector: a point or a direction (m, m/s, N, ... as the use says).
 struct Vec2
 {
-    Real x = 0;
-    Real y = 0;
+    Real x = 0; ///< first component
+    Real y = 0; ///< second component
 
     constexpr Vec2() = default;
+    /// The vector (x_, y_).
     constexpr Vec2(Real x_, Real y_) : x(x_), y(y_) {}
 
+    /// The opposite vector.
     Vec2 operator-() const { return {-x, -y}; }
+    /// Adds v.
     Vec2& operator+=(Vec2 v)
     {
         x += v.x;
         y += v.y;
         return *this;
     }
+    /// Subtracts v.
     Vec2& operator-=(Vec2 v)
     {
         x -= v.x;
         y -= v.y;
         return *this;
     }
+    /// Scales by s.
     Vec2& operator*=(Real s)
     {
         x *= s;
         y *= s;
         return *this;
     }
+    /// x for i = 0, y otherwise.
     Real operator[](int i) const { return i == 0 ? x : y; }
 
+    /// Euclidean length.
     Real Length() const { return std::sqrt(x * x + y * y); }
+    /// Squared length (no square root).
     Real LengthSquared() const { return x * x + y * y; }
     /// Normalizes in place and returns the old length; leaves a near-zero vector unchanged and
     /// returns 0.
@@ -76,6 +85,7 @@ struct Vec2
     }
     /// The vector turned a quarter turn counter-clockwise: (-y, x).
     Vec2 Skew() const { return {-y, x}; }
+    /// Both components finite.
     bool IsValid() const { return meff::IsValid(x) && meff::IsValid(y); }
 };
 
@@ -159,9 +169,10 @@ inline Real Clamp(Real a, Real low, Real high)
 /// A 2×2 matrix stored by columns.
 struct Mat22
 {
-    Vec2 ex{1, 0};
-    Vec2 ey{0, 1};
+    Vec2 ex{1, 0}; ///< first column
+    Vec2 ey{0, 1}; ///< second column
 
+    /// The inverse; the zero matrix when this one is singular (as Box2D's b2Mat22).
     Mat22 GetInverse() const
     {
         const Real a = ex.x, b = ey.x, c = ex.y, d = ey.y;
@@ -198,18 +209,23 @@ inline Vec2 Mul(const Mat22& A, Vec2 v)
 /// A rotation stored as its sine and cosine.
 struct Rot
 {
-    Real s = 0;
-    Real c = 1;
+    Real s = 0; ///< sine of the angle
+    Real c = 1; ///< cosine of the angle
 
     Rot() = default;
+    /// The rotation by `angle` (rad, counter-clockwise).
     explicit Rot(Real angle) : s(std::sin(angle)), c(std::cos(angle)) {}
+    /// Becomes the rotation by `angle` (rad).
     void Set(Real angle)
     {
         s = std::sin(angle);
         c = std::cos(angle);
     }
+    /// The angle in (−π, π] (rad).
     Real GetAngle() const { return std::atan2(s, c); }
+    /// The rotated x axis (c, s).
     Vec2 GetXAxis() const { return {c, s}; }
+    /// The rotated y axis (−s, c).
     Vec2 GetYAxis() const { return {-s, c}; }
 };
 
@@ -243,11 +259,13 @@ inline Rot MulT(Rot q, Rot r)
 /// A rigid transform: rotation q then translation p.
 struct Transform
 {
-    Vec2 p{0, 0};
-    Rot q{};
+    Vec2 p{0, 0}; ///< translation (m)
+    Rot q{};      ///< rotation
 
     Transform() = default;
+    /// Rotation `rotation`, then translation `position`.
     Transform(Vec2 position, Rot rotation) : p(position), q(rotation) {}
+    /// Becomes the translation `position` (m) and rotation by `angle` (rad).
     void Set(Vec2 position, Real angle)
     {
         p = position;
@@ -284,8 +302,10 @@ inline Transform MulT(const Transform& A, const Transform& B)
 struct Sweep
 {
     Vec2 localCenter{}; ///< centre of mass in body coordinates (m)
-    Vec2 c0{}, c{};     ///< centre of mass in world coordinates at t0 and now (m)
-    Real a0 = 0, a = 0; ///< angle at t0 and now (rad)
+    Vec2 c0{};          ///< centre of mass in world coordinates at t0 (m)
+    Vec2 c{};           ///< centre of mass in world coordinates now (m)
+    Real a0 = 0;        ///< angle at t0 (rad)
+    Real a = 0;         ///< angle now (rad)
     Real alpha0 = 0;    ///< fraction of the step already advanced, in [0,1)
 
     /// The body transform at fraction beta of the step.
@@ -323,22 +343,27 @@ struct Sweep
 /// An axis-aligned bounding box.
 struct AABB
 {
-    Vec2 lowerBound{};
-    Vec2 upperBound{};
+    Vec2 lowerBound{}; ///< smallest x and y (m)
+    Vec2 upperBound{}; ///< largest x and y (m)
 
+    /// The centre (m).
     Vec2 GetCenter() const { return Real(0.5) * (lowerBound + upperBound); }
+    /// Half the size along each axis (m).
     Vec2 GetExtents() const { return Real(0.5) * (upperBound - lowerBound); }
+    /// Perimeter (m), the broad phase's cost measure.
     Real GetPerimeter() const
     {
         const Real wx = upperBound.x - lowerBound.x;
         const Real wy = upperBound.y - lowerBound.y;
         return Real(2) * (wx + wy);
     }
+    /// Whether `aabb` lies inside this box (borders included).
     bool Contains(const AABB& aabb) const
     {
         return lowerBound.x <= aabb.lowerBound.x && lowerBound.y <= aabb.lowerBound.y &&
                aabb.upperBound.x <= upperBound.x && aabb.upperBound.y <= upperBound.y;
     }
+    /// Finite bounds, upper not below lower.
     bool IsValid() const
     {
         const Vec2 d = upperBound - lowerBound;

@@ -35,6 +35,7 @@ struct CollisionPlane
     Real push = 0;             ///< out: how far SolvePlanes pushed along the normal (m)
 };
 
+/// What SolvePlanes finds.
 struct PlaneSolverResult
 {
     Vec2 translation{}; ///< where to move from where the mover was collided (m)

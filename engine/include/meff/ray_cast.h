@@ -14,6 +14,7 @@
 namespace meff
 {
 
+/// A ray from p1 towards p2, for the shapes' ray casts.
 struct RayCastInput
 {
     Vec2 p1{};            ///< start of the ray, world coordinates (m)
@@ -21,6 +22,7 @@ struct RayCastInput
     Real maxFraction = 1; ///< hits beyond p1 + maxFraction·(p2 − p1) are not reported
 };
 
+/// Where a ray hit a shape.
 struct RayCastOutput
 {
     Vec2 normal{};     ///< unit surface normal at the hit, world coordinates

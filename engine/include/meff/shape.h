@@ -12,9 +12,9 @@ namespace meff
 /// mask, unless they share a non-zero group (positive: always collide, negative: never).
 struct Filter
 {
-    std::uint16_t categoryBits = 0x0001;
-    std::uint16_t maskBits = 0xFFFF;
-    std::int16_t groupIndex = 0;
+    std::uint16_t categoryBits = 0x0001; ///< what this shape is (usually one bit)
+    std::uint16_t maskBits = 0xFFFF;     ///< the categories it collides with
+    std::int16_t groupIndex = 0;         ///< non-zero: a group that always/never collides
 };
 
 /// Everything but the geometry needed to create a shape.
@@ -36,7 +36,7 @@ struct ShapeDef
     /// roll). A disc rolling on flat ground then slows at
     /// (2/3)·c·g and stops. Mixed as max(cA, cB). Box2D 2.4.1 has none (meff validate refuses it).
     Real rollingResistance = 0;
-    Filter filter{};
+    Filter filter{}; ///< which shapes it collides with
     /// Detects overlap, never collides (Box2D 2.4.1's sensor fixture): its contacts are never
     /// solved; they touch while the shapes overlap (GJK distance < 10·epsilon, radii included)
     /// and are reported by World::GetSensorBeginEvents/GetSensorEndEvents, not among the

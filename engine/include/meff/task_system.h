@@ -15,6 +15,8 @@
 namespace meff
 {
 
+/// Threads a world may use for its steps (World::SetTaskSystem): a game routes the two calls
+/// to its own job system, or takes MakeThreadPool's.
 class TaskSystem
 {
   public:
@@ -35,7 +37,9 @@ class TaskSystem
 
   protected:
     TaskSystem() = default;
+    /// Copyable by the classes that implement it.
     TaskSystem(const TaskSystem&) = default;
+    /// Copyable by the classes that implement it.
     TaskSystem& operator=(const TaskSystem&) = default;
 };
 

@@ -37,10 +37,12 @@ struct Refusal
 class RefusedArgument : public InvalidArgument
 {
   public:
+    /// The message and the refusal it reports.
     RefusedArgument(const std::string& what, Refusal refusal)
         : InvalidArgument(what), m_refusal(std::move(refusal))
     {
     }
+    /// Which field was refused, and why.
     const Refusal& refusal() const { return m_refusal; }
 
   private:

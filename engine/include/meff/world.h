@@ -81,7 +81,7 @@ enum class SolverKind
     /// impulses applied, every row solved once with a soft position bias, positions integrated,
     /// contacts corrected and the rows relaxed without bias. Far more accurate for joints
     /// (pendulums, chains, ragdolls) than Box2D's step at about its cost, as stiff for stacks;
-    /// see the README for the measured trade.
+    /// see docs/performance.md for the measured trade.
     SoftStep,
 };
 
@@ -111,26 +111,27 @@ struct SoftStepSettings
     /// which takes back the velocity the bias added. Friction is solved in these sweeps (in the
     /// biased sweep when there are none).
     int relaxIterations = 1;
-    SoftContactModel contacts = SoftContactModel::Rigid;
+    SoftContactModel contacts = SoftContactModel::Rigid; ///< rigid or soft contacts
     /// Rigid contacts: fraction of the overlap beyond linearSlop removed per sub-step, in (0, 1].
     Real contactCorrection = Real(0.1);
     /// Soft contacts: stiffness (Hz, > 0) and damping ratio (≥ 0). The stiffness is capped at a
     /// quarter of the sub-step rate, and doubled against a body that cannot move.
     Real contactHertz = 30;
-    Real contactDampingRatio = 10;
+    Real contactDampingRatio = 10; ///< soft contacts' damping ratio (≥ 0)
     /// Largest speed at which overlapping shapes are pushed apart (m/s, > 0): the soft contacts'
     /// bias, and the rigid contacts' correction per sub-step (at most this × h).
     Real maxPushOutSpeed = 3;
     /// Stiffness (Hz, > 0) and damping ratio (≥ 0) of the joints' rigid rows (points, angles,
     /// limits) while solving, capped at 0.3 of the sub-step rate (72 Hz at 60 Hz × 4).
     Real jointHertz = 72;
-    Real jointDampingRatio = 0;
+    Real jointDampingRatio = 0; ///< the joints' rows' damping ratio (≥ 0)
     /// Solve the point rows of revolute joints that join bodies as a tree (a chain, a ragdoll,
     /// hanging from at most one fixed pivot) together, exactly, rather than joint by joint: a
     /// load then passes through the whole tree at once, so light links holding a heavy body do
     /// not stretch (docs/soft-step.md, "Joint trees").
     bool jointTrees = true;
 
+    /// Every member equal.
     friend bool operator==(const SoftStepSettings&, const SoftStepSettings&) = default;
 };
 
@@ -157,6 +158,7 @@ struct SolverSettings
     bool restitutionFromStepStart = false;
     SoftStepSettings softStep{}; ///< SoftStep only
 
+    /// Every member equal.
     friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 
@@ -167,9 +169,9 @@ const char* SolverKindName(SolverKind kind);
 /// Everything needed to create a world.
 struct WorldDef
 {
-    Vec2 gravity{0, -10}; ///< m/s²
-    SolverSettings solver{};
-    Tolerances tolerances{};
+    Vec2 gravity{0, -10};    ///< m/s²
+    SolverSettings solver{}; ///< the back end and its settings
+    Tolerances tolerances{}; ///< Box2D's constants (see TolerancesForLengthUnits)
     /// Let resting islands fall asleep (Box2D 2.4.1's rules, see Tolerances::timeToSleep): a
     /// sleeping body is not integrated, solved, collided or moved in the broad phase until
     /// something wakes it. Off by default (Box2D's default is on); World::SetAllowSleeping
@@ -188,10 +190,10 @@ struct WorldDef
 /// One contact point after a step: Box2D's PostSolve data plus where the point is.
 struct ContactPointReport
 {
-    BodyId bodyA{};
-    BodyId bodyB{};
-    ShapeId shapeA{};
-    ShapeId shapeB{};
+    BodyId bodyA{};               ///< shapeA's body
+    BodyId bodyB{};               ///< shapeB's body
+    ShapeId shapeA{};             ///< the contact's first shape
+    ShapeId shapeB{};             ///< the contact's second shape
     Vec2 point{};                 ///< world point midway between the surfaces (m)
     Vec2 normal{};                ///< unit normal from A to B
     Real separation = 0;          ///< m, negative when overlapping
@@ -204,24 +206,24 @@ struct ContactPointReport
 /// Two shapes started or stopped touching during the last step.
 struct ContactEvent
 {
-    ShapeId shapeA{};
-    ShapeId shapeB{};
+    ShapeId shapeA{}; ///< the contact's first shape
+    ShapeId shapeB{}; ///< the contact's second shape
 };
 
 /// A shape started or stopped overlapping a sensor during the last step. When both shapes are
 /// sensors, the event is reported once, with the contact's first shape as `sensorShape`.
 struct SensorEvent
 {
-    ShapeId sensorShape{};
-    ShapeId visitorShape{};
+    ShapeId sensorShape{};  ///< the sensor
+    ShapeId visitorShape{}; ///< the shape that entered or left it
 };
 
 /// A contact that hit faster than Tolerances::hitEventThreshold in the last step (Box2D v3's
 /// b2ContactHitEvent): its fastest point, measured before the solver's impulses.
 struct ContactHitEvent
 {
-    ShapeId shapeA{};
-    ShapeId shapeB{};
+    ShapeId shapeA{};       ///< the contact's first shape
+    ShapeId shapeB{};       ///< the contact's second shape
     Vec2 point{};           ///< world point of the fastest approaching point, after the step (m)
     Vec2 normal{};          ///< unit normal from A to B
     Real approachSpeed = 0; ///< −(relative normal velocity) before impulses (m/s), > threshold
@@ -230,10 +232,10 @@ struct ContactHitEvent
 /// What a pre-solve callback sees of one touching contact (Box2D 2.4.1's PreSolve).
 struct PreSolveContact
 {
-    ShapeId shapeA{};
-    ShapeId shapeB{};
-    BodyId bodyA{};
-    BodyId bodyB{};
+    ShapeId shapeA{};                   ///< the contact's first shape
+    ShapeId shapeB{};                   ///< the contact's second shape
+    BodyId bodyA{};                     ///< shapeA's body
+    BodyId bodyB{};                     ///< shapeB's body
     const Manifold* manifold = nullptr; ///< the fresh manifold (≥ 1 point), body frames
     WorldManifold worldManifold{};      ///< its normal (A to B), points and separations (world)
 };
@@ -288,7 +290,7 @@ struct RayResult
     /// Of the translation travelled to the hit, in [0, 1] (a CastRay callback that returns
     /// more than 1 lengthens the ray, as in Box2D, and can report fractions beyond 1).
     Real fraction = 0;
-    bool hit = false;
+    bool hit = false; ///< false when nothing was hit
 };
 
 /// Called for each shape a ray or shape cast hits, in broad-phase order (not sorted by
@@ -330,6 +332,7 @@ class WorldSnapshot
 {
   public:
     WorldSnapshot() = default;
+    /// A default-constructed snapshot, which holds no world.
     bool IsEmpty() const { return m_state == nullptr; }
 
   private:
@@ -337,9 +340,12 @@ class WorldSnapshot
     std::shared_ptr<const detail::WorldState> m_state;
 };
 
+/// A physics world: its bodies, shapes, joints and contacts, stepped by World::Step. Every
+/// object in it is named by an id and reached through the world's calls.
 class World
 {
   public:
+    /// An empty world with `def`'s settings.
     explicit World(const WorldDef& def = {});
     ~World();
     World(const World&) = delete;
@@ -347,18 +353,24 @@ class World
     /// Moving leaves the source empty: every call on it but destruction and assignment throws
     /// InvalidArgument ("this World was moved from").
     World(World&&) noexcept;
+    /// Moves `other`'s world here (see the move constructor).
     World& operator=(World&&) noexcept;
 
     // Bodies
+    /// A new body (see BodyDef); throws InvalidArgument for a non-finite position, angle or
+    /// velocity, or a negative damping.
     BodyId CreateBody(const BodyDef& def);
     /// Also destroys its shapes, joints and contacts, and wakes the bodies it touched or was
     /// jointed to (as Box2D 2.4.1, whose contact destruction wakes both bodies of a touching
     /// contact).
     void DestroyBody(BodyId id);
+    /// Whether `id` names a live body of this world.
     bool IsValid(BodyId id) const;
+    /// Static, kinematic or dynamic.
     BodyType GetType(BodyId id) const;
     Vec2 GetPosition(BodyId id) const; ///< world position of the body origin (m)
     Real GetAngle(BodyId id) const;    ///< rad
+    /// The body origin's position and rotation.
     Transform GetTransform(BodyId id) const;
     Vec2 GetWorldCenter(BodyId id) const;       ///< centre of mass (m)
     Vec2 GetLocalCenter(BodyId id) const;       ///< centre of mass in body coordinates (m)
@@ -366,8 +378,10 @@ class World
     Real GetAngularVelocity(BodyId id) const;   ///< rad/s
     Real GetMass(BodyId id) const;              ///< kg
     Real GetRotationalInertia(BodyId id) const; ///< about the centre of mass (kg·m²)
-    std::uint64_t GetUserData(BodyId id) const;
+    std::uint64_t GetUserData(BodyId id) const; ///< BodyDef::userData
+    /// A point in the body's frame, in world coordinates (m).
     Vec2 GetWorldPoint(BodyId id, Vec2 localPoint) const;
+    /// A world point in the body's frame (m).
     Vec2 GetLocalPoint(BodyId id, Vec2 worldPoint) const;
     /// Moves the body and wakes it and the bodies it touches. (Box2D 2.4.1 does not wake here;
     /// meff does, so that a body the user moves is never left asleep in mid-air.)
@@ -396,6 +410,7 @@ class World
     /// Box2D's SetAwake: true wakes the body and restarts its rest time; false puts it to
     /// sleep now, zeroing its velocity, force, torque and rest time. No effect on static bodies.
     void SetAwake(BodyId id, bool awake);
+    /// BodyDef::allowSleep, or the last SetSleepingAllowed.
     bool IsSleepingAllowed(BodyId id) const;
     /// false also wakes the body (Box2D's SetSleepingAllowed).
     void SetSleepingAllowed(BodyId id, bool allowed);
@@ -408,11 +423,14 @@ class World
     std::vector<BodyId> GetBodies() const;
 
     // Shapes
+    /// Gives `body` a shape (see ShapeDef); a dynamic body's mass is recomputed. Throws
+    /// InvalidArgument for what validity.h refuses.
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Circle& circle);
     /// A polygon whose radius is above Tolerances::polygonSkin is rounded (see Polygon).
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     /// Box2D v3's capsule (see Capsule; CheckCapsule says what is refused).
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
+    /// A two-sided segment (Box2D 2.4.1's b2EdgeShape); it has no mass.
     ShapeId CreateShape(BodyId body, const ShapeDef& def, const Segment& segment);
     /// A one-sided segment with ghost vertices, alone (Box2D 2.4.1's b2EdgeShape after
     /// SetOneSided; see ChainSegment). Throws InvalidArgument for non-finite points, or ends
@@ -422,8 +440,11 @@ class World
     /// Wakes the bodies of the contacts it was touching in (as Box2D 2.4.1 does). Throws
     /// InvalidArgument for a segment of a chain (destroy the chain with DestroyChain).
     void DestroyShape(ShapeId id);
+    /// Whether `id` names a live shape of this world.
     bool IsValid(ShapeId id) const;
+    /// The body the shape belongs to.
     BodyId GetBody(ShapeId id) const;
+    /// Which geometry the shape has (GetCircle, GetPolygon, ... read it).
     ShapeType GetShapeType(ShapeId id) const;
     const Circle& GetCircle(ShapeId id) const;   ///< throws unless a circle
     const Polygon& GetPolygon(ShapeId id) const; ///< throws unless a polygon
@@ -431,6 +452,7 @@ class World
     const Capsule& GetCapsule(ShapeId id) const; ///< throws unless a capsule
     /// Throws unless a chain segment (of a chain, or made alone).
     const ChainSegment& GetChainSegment(ShapeId id) const;
+    /// The definition the shape was created with.
     const ShapeDef& GetShapeDef(ShapeId id) const;
     /// A body's shapes, newest first (Box2D's fixture-list order); a chain's segments are
     /// listed together, in order along the chain. A copy, so destroying them while walking it
@@ -452,6 +474,7 @@ class World
     /// DestroyShape) and their broad-phase proxies, in order along the chain (as
     /// b2Body::DestroyFixture does for a chain).
     void DestroyChain(ChainId id);
+    /// Whether `id` names a live chain of this world.
     bool IsValid(ChainId id) const;
     /// The chain's segment shapes in order along the chain (for a loop, the closing segment,
     /// last point to first, is the last).
@@ -462,15 +485,22 @@ class World
 
     // Joints. Creating or destroying a joint wakes both bodies (Box2D 2.4.1 wakes them only
     // on destruction; meff also on creation, so a new joint acts at once).
+    /// A revolute joint (see RevoluteJointDef; the Make...JointDef helpers fill one in).
     JointId CreateJoint(const RevoluteJointDef& def);
+    /// A distance joint: a rod, a rope or a spring (see DistanceJointDef).
     JointId CreateJoint(const DistanceJointDef& def);
+    /// A prismatic joint (see PrismaticJointDef).
     JointId CreateJoint(const PrismaticJointDef& def);
     /// The suspension spring's stiffness comes from hertz and both bodies' masses now.
     JointId CreateJoint(const WheelJointDef& def);
+    /// A weld joint (see WeldJointDef).
     JointId CreateJoint(const WeldJointDef& def);
+    /// A motor joint (see MotorJointDef).
     JointId CreateJoint(const MotorJointDef& def);
     JointId CreateJoint(const MouseJointDef& def); ///< throws unless bodyB is dynamic
+    /// A friction joint (see FrictionJointDef).
     JointId CreateJoint(const FrictionJointDef& def);
+    /// A pulley joint (see PulleyJointDef).
     JointId CreateJoint(const PulleyJointDef& def);
     /// Throws InvalidArgument unless joint1 and joint2 are two different live revolute or
     /// prismatic joints whose bodies B are dynamic, and the ratio is finite. The gear's bodies
@@ -478,9 +508,13 @@ class World
     JointId CreateJoint(const GearJointDef& def);
     /// Destroys the joint, and first every gear joint that couples it.
     void DestroyJoint(JointId id);
+    /// Whether `id` names a live joint of this world.
     bool IsValid(JointId id) const;
+    /// Which kind of joint it is.
     JointType GetJointType(JointId id) const;
+    /// The joint's body A.
     BodyId GetBodyA(JointId id) const;
+    /// The joint's body B.
     BodyId GetBodyB(JointId id) const;
     /// World point (m); a motor joint's anchors are the bodies' origins, a mouse joint's
     /// anchor A is its target.
@@ -502,15 +536,16 @@ class World
     /// A revolute or prismatic joint's spring; throws InvalidArgument for other joint types.
     JointSpring GetJointSpring(JointId id) const;
     /// Where body B's anchor is along a prismatic or wheel joint's axis, measured from body
-    /// A's anchor (m), as b2PrismaticJoint/b2WheelJoint::GetJointTranslation. Throws
+    /// A's anchor (m), as b2PrismaticJoint's and b2WheelJoint's GetJointTranslation. Throws
     /// InvalidArgument for other joint types.
     Real GetJointTranslation(JointId id) const;
     /// Relative speed of a joint: along the axis for prismatic and wheel joints (m/s, as
     /// b2PrismaticJoint::GetJointSpeed and b2WheelJoint::GetJointLinearSpeed), wB − wA for
     /// revolute joints (rad/s). Throws InvalidArgument for other joint types.
     Real GetJointSpeed(JointId id) const;
-    /// Definition helpers from world points, as Box2D's b2*JointDef::Initialize.
+    /// Definition helpers from world points, as Box2D's b2*JointDef Initialize.
     RevoluteJointDef MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const;
+    /// Anchors at the two world points; the length is their distance (rigid: min = max).
     DistanceJointDef MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAnchorA,
                                           Vec2 worldAnchorB) const;
     /// Slides along worldAxis through worldAnchor; the current relative angle is kept.
@@ -530,6 +565,7 @@ class World
                                       Vec2 anchorA, Vec2 anchorB, Real ratio) const;
     /// Moves a mouse joint's target (the pointer moved). Throws unless id is a mouse joint.
     void SetMouseTarget(JointId id, Vec2 target);
+    /// A mouse joint's target (m). Throws unless id is a mouse joint.
     Vec2 GetMouseTarget(JointId id) const;
     /// Changes a motor joint's target pose of B relative to A (m in A's frame, rad). Throws
     /// unless id is a motor joint.
@@ -542,17 +578,25 @@ class World
     /// exception that leaves a step half done (thrown by the callback) also freezes the world.
     /// RestoreSnapshot thaws a frozen world.
     void Step(Real dt);
+    /// How many steps the world has taken.
     std::uint64_t GetStepCount() const;
     /// Where the last step's time went, stage by stage (see StepProfile); zeros before the
     /// first step.
     const StepProfile& GetProfile() const;
+    /// The back end and its settings.
     const SolverSettings& GetSolverSettings() const;
+    /// Changes the back end or its settings from the next step; throws InvalidArgument for an
+    /// out-of-range value.
     void SetSolverSettings(const SolverSettings& settings);
-    Vec2 GetGravity() const;
+    Vec2 GetGravity() const; ///< m/s²
+    /// Changes gravity (m/s²) from the next step.
     void SetGravity(Vec2 gravity);
+    /// The world's tolerances (WorldDef::tolerances).
     const Tolerances& GetTolerances() const;
+    /// Whether continuous collision is on.
     bool GetContinuous() const;
     void SetContinuous(bool continuous); ///< takes effect from the next step
+    /// Whether islands may fall asleep.
     bool GetAllowSleeping() const;
     /// Turning sleeping off wakes every body (Box2D's SetAllowSleeping).
     void SetAllowSleeping(bool allow);
@@ -583,6 +627,7 @@ class World
     /// snapshots and the state hash. Throws InvalidArgument during a step or when its
     /// ThreadCount() is below 1.
     void SetTaskSystem(TaskSystem* tasks);
+    /// The task system the world steps on; null: the calling thread.
     TaskSystem* GetTaskSystem() const;
 
     // Reports of the last step
@@ -595,6 +640,7 @@ class World
     /// contacts of each time-of-impact sub-step are appended after the step's own, as Box2D calls
     /// PostSolve again for them, so a contact can appear more than once in one step.
     std::span<const ContactPointReport> GetContactReports() const;
+    /// Contacts that started touching in the last step.
     std::span<const ContactEvent> GetContactBeginEvents() const;
     /// Contacts that stopped touching in the last step. Destroying a touching shape or body
     /// between steps adds its end events at once, and they stay, first in the list, through
@@ -605,6 +651,7 @@ class World
     /// BeginContact/EndContact for sensor fixtures. Sensor contacts never appear among the
     /// contact begin/end events or the contact reports (as in Box2D v3).
     std::span<const SensorEvent> GetSensorBeginEvents() const;
+    /// Shapes that stopped overlapping a sensor (see GetSensorBeginEvents).
     std::span<const SensorEvent> GetSensorEndEvents() const;
     /// One event per contact that hit faster than Tolerances::hitEventThreshold (its fastest
     /// point), for contacts with a shape that has ShapeDef::enableHitEvents; in solver order.
@@ -652,6 +699,7 @@ class World
     /// overlaps at `start` are not reported.
     void CastShape(const Circle& shape, const Transform& start, Vec2 translation,
                    QueryFilter filter, CastCallback callback) const;
+    /// A polygon, as the circle above.
     void CastShape(const Polygon& shape, const Transform& start, Vec2 translation,
                    QueryFilter filter, CastCallback callback) const;
     /// A capsule (Box2D v3's; the character mover's shape, meff/mover.h).
@@ -678,8 +726,10 @@ class World
     /// The closest hit of CastShape.
     RayResult CastShapeClosest(const Capsule& shape, const Transform& start, Vec2 translation,
                                QueryFilter filter = {}) const;
+    /// The closest hit of CastShape, for a circle.
     RayResult CastShapeClosest(const Circle& shape, const Transform& start, Vec2 translation,
                                QueryFilter filter = {}) const;
+    /// The closest hit of CastShape, for a polygon.
     RayResult CastShapeClosest(const Polygon& shape, const Transform& start, Vec2 translation,
                                QueryFilter filter = {}) const;
 
@@ -702,6 +752,7 @@ class World
     /// Returns the world to a snapshot of itself. Ids saved with the snapshot are valid again;
     /// ids created later are not. Throws InvalidArgument for an empty snapshot.
     void RestoreSnapshot(const WorldSnapshot& snapshot);
+    /// Contacts whose shapes touch (a subset of GetContactCount's).
     int GetTouchingContactCount() const;
 
     // Drawing
