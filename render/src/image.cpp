@@ -33,20 +33,49 @@ void Image::Set(int x, int y, Rgb color)
     pixels[i + 2] = color.b;
 }
 
+std::uint8_t Image::AlphaAt(int x, int y) const
+{
+    return alpha.empty() ? std::uint8_t(255)
+                         : alpha[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+}
+
+void Image::Blend(int x, int y, Rgb color, int weight, int scale)
+{
+    const Rgb under = At(x, y);
+    if (alpha.empty())
+    {
+        // Integers, rounded, so that the result does not depend on floating-point rounding
+        // modes.
+        const auto mix = [&](std::uint8_t below, std::uint8_t over)
+        { return std::uint8_t((below * (scale - weight) + over * weight + scale / 2) / scale); };
+        Set(x, y, {mix(under.r, color.r), mix(under.g, color.g), mix(under.b, color.b)});
+        return;
+    }
+    // "Over" with straight (not premultiplied) colours: the result's opacity is the new
+    // layer's plus what shows through it of the old.
+    std::uint8_t& opacity = alpha[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    const double top = double(weight) / scale;
+    const double below = opacity / 255.0 * (1 - top);
+    const double total = top + below;
+    if (total <= 0)
+    {
+        return;
+    }
+    const auto mix = [&](std::uint8_t b, std::uint8_t over)
+    { return std::uint8_t(std::lround((over * top + b * below) / total)); };
+    Set(x, y, {mix(under.r, color.r), mix(under.g, color.g), mix(under.b, color.b)});
+    opacity = std::uint8_t(std::lround(total * 255));
+}
+
 void FillRect(Image& image, int x, int y, int width, int height, Rgb color, double alpha)
 {
-    // Integer weights out of 256, so that the result does not depend on floating-point
-    // rounding modes.
+    // A weight out of 256.
     const int a = std::clamp(int(std::lround(alpha * 256)), 0, 256);
-    const auto mix = [a](std::uint8_t under, std::uint8_t over)
-    { return std::uint8_t((under * (256 - a) + over * a + 128) >> 8); };
     for (int py = std::max(0, y); py < std::min(image.height, y + height); ++py)
     {
         for (int px = std::max(0, x); px < std::min(image.width, x + width); ++px)
         {
-            const Rgb under = image.At(px, py);
-            image.Set(px, py,
-                      {mix(under.r, color.r), mix(under.g, color.g), mix(under.b, color.b)});
+            image.Blend(px, py, color, a, 256);
         }
     }
 }

@@ -4,6 +4,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -25,8 +26,21 @@ png_image Describe(const Image& image)
     description.version = PNG_IMAGE_VERSION;
     description.width = png_uint_32(image.width);
     description.height = png_uint_32(image.height);
-    description.format = PNG_FORMAT_RGB;
+    description.format = image.HasAlpha() ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
     return description;
+}
+
+/// The bytes libpng reads: the pixels as they are, or interleaved with the alpha plane.
+std::vector<std::uint8_t> Interleaved(const Image& image)
+{
+    std::vector<std::uint8_t> rgba(image.alpha.size() * 4);
+    for (std::size_t i = 0; i < image.alpha.size(); ++i)
+    {
+        std::copy_n(image.pixels.begin() + std::ptrdiff_t(i * 3), 3,
+                    rgba.begin() + std::ptrdiff_t(i * 4));
+        rgba[i * 4 + 3] = image.alpha[i];
+    }
+    return rgba;
 }
 
 std::string Reason(const png_image& image)
@@ -43,17 +57,17 @@ std::vector<std::uint8_t> EncodePng(const Image& image)
         throw RenderError("cannot encode an empty image as PNG");
     }
     png_image description = Describe(image);
+    const std::vector<std::uint8_t> rgba = Interleaved(image);
+    const std::uint8_t* source = image.HasAlpha() ? rgba.data() : image.pixels.data();
     // First call: how many bytes; second: the bytes. libpng writes no time or text chunk
     // unless asked, so the output depends on the pixels alone.
     png_alloc_size_t size = 0;
-    if (!png_image_write_to_memory(&description, nullptr, &size, 0, image.pixels.data(), 0,
-                                   nullptr))
+    if (!png_image_write_to_memory(&description, nullptr, &size, 0, source, 0, nullptr))
     {
         throw RenderError("cannot encode PNG: " + Reason(description));
     }
     std::vector<std::uint8_t> bytes(size);
-    if (!png_image_write_to_memory(&description, bytes.data(), &size, 0, image.pixels.data(), 0,
-                                   nullptr))
+    if (!png_image_write_to_memory(&description, bytes.data(), &size, 0, source, 0, nullptr))
     {
         throw RenderError("cannot encode PNG: " + Reason(description));
     }
@@ -70,15 +84,30 @@ Image DecodePng(std::span<const std::uint8_t> bytes)
     {
         throw RenderError("cannot read PNG: " + Reason(description));
     }
-    description.format = PNG_FORMAT_RGB;
+    const bool alpha = (description.format & PNG_FORMAT_FLAG_ALPHA) != 0;
+    description.format = alpha ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
     Image image;
     image.width = int(description.width);
     image.height = int(description.height);
-    image.pixels.resize(PNG_IMAGE_SIZE(description));
-    if (!png_image_finish_read(&description, nullptr, image.pixels.data(), 0, nullptr))
+    std::vector<std::uint8_t> bytesRead(PNG_IMAGE_SIZE(description));
+    if (!png_image_finish_read(&description, nullptr, bytesRead.data(), 0, nullptr))
     {
         png_image_free(&description);
         throw RenderError("cannot read PNG: " + Reason(description));
+    }
+    if (!alpha)
+    {
+        image.pixels = std::move(bytesRead);
+        return image;
+    }
+    const std::size_t count = std::size_t(image.width) * std::size_t(image.height);
+    image.pixels.resize(count * 3);
+    image.alpha.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        std::copy_n(bytesRead.begin() + std::ptrdiff_t(i * 4), 3,
+                    image.pixels.begin() + std::ptrdiff_t(i * 3));
+        image.alpha[i] = bytesRead[i * 4 + 3];
     }
     return image;
 }
@@ -116,6 +145,12 @@ Image ReadPng(const std::string& path)
 void WritePng(const std::string& path, const Image& image)
 {
     const std::vector<std::uint8_t> bytes = EncodePng(image);
+    WriteFileAtomically(
+        path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+void WriteFileAtomically(const std::string& path, std::string_view bytes)
+{
     const std::filesystem::path destination(path);
     // Beside the destination, so that the rename is atomic: a reader (or a crash) never sees
     // half a PNG.

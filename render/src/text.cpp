@@ -149,6 +149,13 @@ int TextHeight(int pixelSize)
     return int((metrics.ascender - metrics.descender + 63) >> 6);
 }
 
+int TextAscent(int pixelSize)
+{
+    Font& font = Font::Instance();
+    const std::lock_guard lock(font.Lock());
+    return int((font.Face(pixelSize)->size->metrics.ascender + 63) >> 6);
+}
+
 void DrawText(Image& image, int x, int y, std::string_view text, Rgb color, int pixelSize)
 {
     Font& font = Font::Instance();
@@ -176,12 +183,7 @@ void DrawText(Image& image, int x, int y, std::string_view text, Rgb color, int 
                      {
                          continue;
                      }
-                     const Rgb under = image.At(px, py);
-                     const auto mix = [coverage](int a, int b)
-                     { return std::uint8_t((a * (255 - coverage) + b * coverage + 127) / 255); };
-                     image.Set(
-                         px, py,
-                         {mix(under.r, color.r), mix(under.g, color.g), mix(under.b, color.b)});
+                     image.Blend(px, py, color, coverage, 255);
                  }
              }
          });

@@ -358,3 +358,230 @@ TEST_CASE("NiceCeil picks 1, 2 or 5 times a power of ten", "[render]")
     CHECK(NiceCeil(0.031) == Approx(0.05));
     CHECK(NiceCeil(600) == Approx(1000));
 }
+
+namespace
+{
+
+/// The mean pixel (x, y), pixel centres at +0.5, of the pixels of colour `fill` above the
+/// legend band; (-1, -1) when none.
+Vec2 FillCentroid(const Image& image, Rgb fill)
+{
+    double sx = 0, sy = 0;
+    int count = 0;
+    for (int y = 0; y < image.height - kLegendBand; ++y)
+    {
+        for (int x = 0; x < image.width; ++x)
+        {
+            if (image.At(x, y) == fill)
+            {
+                sx += x + 0.5;
+                sy += y + 0.5;
+                ++count;
+            }
+        }
+    }
+    return count > 0 ? Vec2{Real(sx / count), Real(sy / count)} : Vec2{-1, -1};
+}
+
+std::string HexOf(Rgb color)
+{
+    char text[8];
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", color.r, color.g, color.b);
+    return text;
+}
+
+/// The value of attribute `name` in the first SVG element starting with `element` that has
+/// `marker` in it, or empty.
+std::string SvgAttribute(const std::string& svg, const std::string& element,
+                         const std::string& marker, const std::string& name)
+{
+    for (std::size_t at = svg.find(element); at != std::string::npos;
+         at = svg.find(element, at + 1))
+    {
+        const std::string tag = svg.substr(at, svg.find('>', at) - at);
+        if (tag.find(marker) == std::string::npos)
+        {
+            continue;
+        }
+        const std::size_t value = tag.find(" " + name + "=\"");
+        if (value == std::string::npos)
+        {
+            return {};
+        }
+        const std::size_t start = value + name.size() + 3;
+        return tag.substr(start, tag.find('"', start) - start);
+    }
+    return {};
+}
+
+} // namespace
+
+TEST_CASE("An SVG frame has the PNG's geometry", "[render]")
+{
+    // A red box 2 m square at (2, 1) and a red circle of radius 0.5 m at (-2, -1): under
+    // RedOptions' camera, centres on pixels (140, 80) and (60, 120).
+    World world{WorldDef{.gravity = {0, 0}}};
+    const BodyId box = world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = {2, 1}});
+    world.CreateShape(box, ShapeDef{}, MakeBox(1, 1));
+    const BodyId ball = world.CreateBody(BodyDef{.type = BodyType::Dynamic, .position = {-2, -1}});
+    world.CreateShape(ball, ShapeDef{}, Circle{{0, 0}, Real(0.5)});
+    FrameOptions options = RedOptions();
+    options.caption = "svg & png";
+    DrawList drawing;
+    world.Draw(drawing, options.flags);
+    OffscreenRenderer renderer(200, 200);
+    const Image image = RenderFrame(renderer, drawing, options);
+    const std::string svg = RenderSvg(drawing, options, 200, 200);
+    CHECK(svg == RenderSvg(drawing, options, 200, 200)); // deterministic
+    CHECK(svg.find("width=\"200\" height=\"200\"") != std::string::npos);
+    CHECK(svg.find("svg &amp; png") != std::string::npos); // the caption, escaped
+
+    const std::string fill = HexOf(FillColor(kRed));
+    // The box: its four corners in the SVG are where the camera puts them, exactly; the PNG's
+    // fill pixels centre on the same point. Tolerance half a pixel: the fill is the inside of
+    // a 1-pixel outline drawn symmetrically about the edges, so its centroid is the polygon's
+    // up to how the edges fall on the pixel grid.
+    const std::string points = SvgAttribute(svg, "<polygon", "fill=\"" + fill, "points");
+    CHECK(points == "120,100 160,100 160,60 120,60");
+    // The circle.
+    CHECK(SvgAttribute(svg, "<circle", "fill=\"" + fill, "cx") == "60");
+    CHECK(SvgAttribute(svg, "<circle", "fill=\"" + fill, "cy") == "120");
+    CHECK(SvgAttribute(svg, "<circle", "fill=\"" + fill, "r") == "10");
+    // The PNG: each shape's fill pixels, split by the image's middle column (the box right of
+    // it, the ball left).
+    Image boxOnly = image, ballOnly = image;
+    for (int y = 0; y < image.height; ++y)
+    {
+        for (int x = 0; x < image.width; ++x)
+        {
+            (x < 100 ? boxOnly : ballOnly).Set(x, y, kBackground);
+            // The ball's angle line runs right from its centre along row 120: leave out the
+            // rows around it (symmetric about the centre), which the line takes from the fill
+            // on the right only.
+            if (y >= 117 && y <= 122)
+            {
+                ballOnly.Set(x, y, kBackground);
+            }
+        }
+    }
+    const Vec2 boxCentre = FillCentroid(boxOnly, FillColor(kRed));
+    const Vec2 ballCentre = FillCentroid(ballOnly, FillColor(kRed));
+    CHECK(double(boxCentre.x) == Approx(140).margin(0.5));
+    CHECK(double(boxCentre.y) == Approx(80).margin(0.5));
+    CHECK(double(ballCentre.x) == Approx(60).margin(0.5));
+    CHECK(double(ballCentre.y) == Approx(120).margin(0.5));
+    // The line width is the PNG's (1 pixel at this size).
+    CHECK(svg.find("stroke-width=\"1\"") != std::string::npos);
+}
+
+TEST_CASE("A camera following a body keeps it in the frame for the whole run", "[render]")
+{
+    // terrain_car: the car drives over hills past the scene's own fixed camera, which loses it.
+    const Scene scene = LoadScene(
+        (std::filesystem::path(MEFF_SOURCE_DIR) / "samples/scenes/terrain_car.json").string());
+    BuiltScene built = BuildWorld(scene);
+    const BodyId chassis = built.bodyByName.at("chassis");
+    const int width = 640, height = 480;
+    const double aspect = double(width) / height;
+    REQUIRE(scene.camera);
+    const Camera fixed{Vec2{Real(scene.camera->center.x), Real(scene.camera->center.y)},
+                       Real(scene.camera->height)};
+    FollowCamera follow(built.world, chassis, fixed.height, aspect);
+    // The fraction of the view's half-size the body's box reaches from the centre: <= 1 is in
+    // the frame. The projection, not pixels: the box against the camera's rectangle.
+    const auto reach = [&](const Camera& camera)
+    {
+        const AABB box = *BodyBounds(built.world, chassis);
+        const double halfHeight = 0.5 * double(camera.height);
+        const double halfWidth = halfHeight * aspect;
+        const double cx = double(camera.center.x), cy = double(camera.center.y);
+        return std::max({(cx - double(box.lowerBound.x)) / halfWidth,
+                         (double(box.upperBound.x) - cx) / halfWidth,
+                         (cy - double(box.lowerBound.y)) / halfHeight,
+                         (double(box.upperBound.y) - cy) / halfHeight});
+    };
+    double worstFollowed = reach(follow.Current());
+    int lostByFixed = reach(fixed) > 1 ? 1 : 0;
+    double largestMove = 0;
+    const double dt = scene.world.dt;
+    for (int frame = 1; frame <= scene.world.frames; ++frame)
+    {
+        built.Step(Real(dt));
+        const Vec2 before = follow.Current().center;
+        const Camera& camera = follow.Update(built.world, dt);
+        worstFollowed = std::max(worstFollowed, reach(camera));
+        lostByFixed += reach(fixed) > 1 ? 1 : 0;
+        largestMove = std::max(largestMove, double((camera.center - before).Length()));
+    }
+    // Within the middle 80 % (plus float rounding of the centre) on every frame...
+    CHECK(worstFollowed <= 0.8 + 1e-4);
+    // ...where the scene's fixed camera loses the car on some frames (the test has teeth).
+    CHECK(lostByFixed > 0);
+    // Smooth: the camera never jumps; a step moves it less than 0.1 m (the car drives at a few
+    // m/s, a few cm per 1/60 s step).
+    CHECK(largestMove < 0.1);
+}
+
+TEST_CASE("Transparent frames, no caption or legend, the scale bar, wider lines", "[render]")
+{
+    const World world = OneCircle({2, 1});
+    OffscreenRenderer renderer(200, 200);
+    FrameOptions options = RedOptions();
+    const Image opaque = RenderFrame(renderer, world, options);
+    CHECK_FALSE(opaque.HasAlpha());
+    // The scale bar: text-coloured pixels at the bottom right (200 px at 20 px/m: 2 m, 40 px).
+    const auto textPixelsIn = [](const Image& image, int x0, int y0)
+    {
+        int count = 0;
+        for (int y = y0; y < image.height; ++y)
+        {
+            for (int x = x0; x < image.width; ++x)
+            {
+                count += image.At(x, y) == kTextColor ? 1 : 0;
+            }
+        }
+        return count;
+    };
+    CHECK(textPixelsIn(opaque, 120, 170) > 40);
+
+    options.legend = false;
+    const Image bare = RenderFrame(renderer, world, options);
+    CHECK(textPixelsIn(bare, 0, 170) == 0);
+    // Nothing but the circle: every pixel away from it is background.
+    CHECK(bare.At(199, 199) == kBackground);
+    CHECK(bare.At(5, 195) == kBackground);
+
+    options.transparent = true;
+    const Image clear = RenderFrame(renderer, world, options);
+    REQUIRE(clear.HasAlpha());
+    CHECK(clear.AlphaAt(5, 5) == 0);
+    CHECK(clear.AlphaAt(140, 84) == 255);
+    // The same colours where something is drawn, opaque.
+    CHECK(clear.At(140, 84) == bare.At(140, 84));
+    CHECK(clear.At(140, 84) == FillColor(kRed));
+    // Edges are partly transparent (anti-aliased), not blended with a background colour.
+    bool partial = false;
+    for (int x = 125; x < 135; ++x)
+    {
+        partial = partial || (clear.AlphaAt(x, 80) > 0 && clear.AlphaAt(x, 80) < 255);
+    }
+    CHECK(partial);
+    // The PNG keeps the alpha plane.
+    const Image decoded = DecodePng(EncodePng(clear));
+    CHECK(decoded.pixels == clear.pixels);
+    CHECK(decoded.alpha == clear.alpha);
+
+    CHECK(LineWidth(640, 480) == 1.0);
+    CHECK(LineWidth(1920, 1080) == Approx(2.25));
+}
+
+TEST_CASE("NiceFloor picks 1, 2 or 5 times a power of ten", "[render]")
+{
+    CHECK(NiceFloor(1) == Approx(1));
+    CHECK(NiceFloor(3) == Approx(2));
+    CHECK(NiceFloor(7.5) == Approx(5));
+    CHECK(NiceFloor(9.9) == Approx(5));
+    CHECK(NiceFloor(0.7) == Approx(0.5));
+    CHECK(NiceFloor(1.5) == Approx(1));
+    CHECK(NiceFloor(20) == Approx(20));
+}

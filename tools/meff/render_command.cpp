@@ -50,6 +50,13 @@ struct RenderOptions
     bool impulses = false;
     bool joints = false;
     bool overlayBox2D = false;
+    std::string follow;     ///< a body's name (--follow)
+    std::string fitFrames;  ///< "A:B" (--fit-frames)
+    std::optional<int> fps; ///< of the GIF or MP4
+    bool noCaption = false;
+    bool noLegend = false;
+    bool transparent = false;
+    bool svg = false;
     std::string gifPath;
     std::string mp4Path;
     bool overwrite = false;
@@ -192,16 +199,18 @@ class RendererPool
     std::condition_variable m_returned;
 };
 
-/// Whether `name` is a frame file: frame_ and 5 or more digits, .png; its number in `index`.
+/// Whether `name` is a frame file: frame_ and 5 or more digits, .png or .svg; its number in
+/// `index`.
 bool IsFrameFile(const std::string& name, long long& index)
 {
     constexpr std::string_view prefix = "frame_";
-    constexpr std::string_view suffix = ".png";
-    if (name.size() < prefix.size() + 5 + suffix.size() || name.rfind(prefix, 0) != 0 ||
-        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    constexpr std::size_t suffixSize = 4; // ".png", ".svg"
+    if (name.size() < prefix.size() + 5 + suffixSize || name.rfind(prefix, 0) != 0 ||
+        (!name.ends_with(".png") && !name.ends_with(".svg")))
     {
         return false;
     }
+    const std::string_view suffix(name.data() + name.size() - suffixSize, suffixSize);
     const std::string digits =
         name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
     if (digits.size() > 12 ||
@@ -309,41 +318,97 @@ void DrawBox2D(const Scene& scene, const validation::Box2DMirror& mirror, DebugD
     }
 }
 
-/// The largest contact normal impulse and joint reaction impulse over the run, from a separate
-/// world stepped ahead: one arrow scale for the whole sequence, so that arrows compare across
-/// frames. A run that fails part way gives what it reached (the real run reports the failure).
-double LargestImpulse(const Scene& scene, int frames, TaskSystem* threads)
+/// Steps a separate world of the scene ahead of the real run, calling visit(frame, world)
+/// after each of frames 1..`frames`. A run that fails part way stops there (the real run
+/// reports the failure).
+template <typename Visit>
+void StepAhead(const Scene& scene, int frames, TaskSystem* threads, const Visit& visit)
 {
     BuiltScene built = BuildWorld(scene);
     built.world.SetTaskSystem(threads);
     const Real dt = Real(scene.world.dt);
-    double largest = 0;
     try
     {
         for (int frame = 1; frame <= frames; ++frame)
         {
             built.Step(dt);
-            for (const ContactPointReport& contact : built.world.GetContactReports())
-            {
-                largest = std::max(largest, std::abs(double(contact.normalImpulse)));
-            }
-            for (const JointId joint : built.joints)
-            {
-                const JointReaction reaction = built.world.GetReaction(joint, Real(1));
-                largest = std::max(largest, double(reaction.force.Length()));
-            }
+            visit(frame, built);
         }
     }
     catch (const SimulationError&)
     {
     }
+}
+
+/// The largest contact normal impulse and joint reaction impulse over the run: one arrow
+/// scale for the whole sequence, so that arrows compare across frames.
+double LargestImpulse(const Scene& scene, int frames, TaskSystem* threads)
+{
+    double largest = 0;
+    StepAhead(scene, frames, threads,
+              [&](int, const BuiltScene& built)
+              {
+                  for (const ContactPointReport& contact : built.world.GetContactReports())
+                  {
+                      largest = std::max(largest, std::abs(double(contact.normalImpulse)));
+                  }
+                  for (const JointId joint : built.joints)
+                  {
+                      const JointReaction reaction = built.world.GetReaction(joint, Real(1));
+                      largest = std::max(largest, double(reaction.force.Length()));
+                  }
+              });
     return largest;
 }
 
-std::string FramePath(const std::filesystem::path& directory, int index)
+/// The box around every shape over frames first..last (the world as built is frame 0).
+std::optional<AABB> RunBounds(const Scene& scene, const World& initial, int first, int last,
+                              TaskSystem* threads)
+{
+    std::optional<AABB> bounds;
+    const auto add = [&](const World& world)
+    {
+        if (const std::optional<AABB> box = render::WorldBounds(world))
+        {
+            bounds = bounds ? Combine(*bounds, *box) : *box;
+        }
+    };
+    if (first == 0)
+    {
+        add(initial);
+    }
+    StepAhead(scene, last, threads,
+              [&](int frame, const BuiltScene& built)
+              {
+                  if (frame >= first)
+                  {
+                      add(built.world);
+                  }
+              });
+    return bounds;
+}
+
+/// "A:B" with 0 <= A <= B.
+bool ParseFrameWindow(const std::string& text, int& first, int& last)
+{
+    char colon = 0;
+    char rest = 0;
+    long a = 0, b = 0;
+    if (std::sscanf(text.c_str(), "%ld%c%ld%c", &a, &colon, &b, &rest) != 3 || colon != ':' ||
+        a < 0 || b < a || b > INT_MAX)
+    {
+        return false;
+    }
+    first = int(a);
+    last = int(b);
+    return true;
+}
+
+std::string FramePath(const std::filesystem::path& directory, int index,
+                      const char* extension = "png")
 {
     char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.png", index);
+    std::snprintf(name, sizeof name, "frame_%05d.%s", index, extension);
     return (directory / name).string();
 }
 
@@ -434,6 +499,32 @@ int Run(const RenderOptions& options)
         }
     }
 
+    if (options.fps && moviePath.empty())
+    {
+        Fail("--fps is the frame rate of the GIF or MP4: give --gif or --mp4 too");
+        return kExitBadInput;
+    }
+    if (options.fps && gif && *options.fps > 50)
+    {
+        Fail("--fps for a GIF must be at most 50, got " + std::to_string(*options.fps) +
+             " (GIF delays are whole hundredths of a second, and browsers slow down shorter "
+             "ones)");
+        return kExitBadInput;
+    }
+    if (options.transparent && !moviePath.empty())
+    {
+        Fail(std::string("--transparent frames have an alpha channel, which ") +
+             (gif ? "--gif" : "--mp4") + " cannot hold: render the PNG frames alone");
+        return kExitBadInput;
+    }
+    int fitFirst = 0;
+    int fitLast = 0;
+    if (!options.fitFrames.empty() && !ParseFrameWindow(options.fitFrames, fitFirst, fitLast))
+    {
+        Fail("--fit-frames must be A:B with 0 <= A <= B, got " + options.fitFrames);
+        return kExitBadInput;
+    }
+
     if (!moviePath.empty() && options.shard.count > 1)
     {
         Fail(std::string(gif ? "--gif" : "--mp4") +
@@ -455,6 +546,12 @@ int Run(const RenderOptions& options)
     const std::unique_ptr<TaskSystem> threads = MakeThreads(options.threads);
     built->world.SetTaskSystem(threads.get());
     const int frames = options.frames.value_or(scene->world.frames);
+    if (!options.fitFrames.empty() && fitFirst > frames)
+    {
+        Fail("--fit-frames " + options.fitFrames + " starts after the run's last frame, " +
+             std::to_string(frames));
+        return kExitBadInput;
+    }
 
     const std::filesystem::path directory(options.outDirectory);
     try
@@ -499,24 +596,53 @@ int Run(const RenderOptions& options)
         return kExitBadInput;
     }
 
-    // The camera: --camera, else the scene's render.camera, else the bodies at frame 0.
+    // The camera: --camera, else --fit-frames, else the scene's render.camera, else the bodies
+    // over the whole run. With --follow, that camera's height and the followed body's centre.
+    const auto fitRun = [&](int first, int last)
+    {
+        const std::optional<AABB> bounds =
+            RunBounds(*scene, built->world, first, std::min(last, frames), threads.get());
+        return bounds ? render::FitCamera(*bounds, width, height) : render::Camera{};
+    };
+    if (!camera && !options.fitFrames.empty())
+    {
+        camera = fitRun(fitFirst, fitLast);
+    }
     if (!camera && scene->camera)
     {
         camera = render::Camera{Vec2{Real(scene->camera->center.x), Real(scene->camera->center.y)},
                                 Real(scene->camera->height)};
     }
+    std::optional<render::FollowCamera> follow;
+    if (!options.follow.empty())
+    {
+        const auto named = built->bodyByName.find(options.follow);
+        if (named == built->bodyByName.end() || !render::BodyBounds(built->world, named->second))
+        {
+            Fail("--follow: " + options.scenePath + " has no body named \"" + options.follow +
+                 "\" with a shape");
+            return kExitBadInput;
+        }
+        const Real viewHeight =
+            camera ? camera->height : render::FitCamera(built->world, width, height).height;
+        follow.emplace(built->world, named->second, viewHeight, double(width) / height);
+        camera = follow->Current();
+    }
     render::FrameOptions frameOptions;
-    frameOptions.camera = camera.value_or(render::FitCamera(built->world, width, height));
+    frameOptions.camera = camera ? *camera : fitRun(0, frames);
+    frameOptions.legend = !options.noLegend;
+    frameOptions.transparent = options.transparent;
     const double pixel = double(frameOptions.camera.height) / height;
     DrawFlags& flags = frameOptions.flags;
     flags.joints = options.joints;
     flags.contacts = options.contacts;
     flags.contactImpulses = options.impulses;
     flags.jointReactions = options.impulses;
-    // Sizes in pixels, whatever the zoom.
-    flags.normalLength = Real(20 * pixel);
-    flags.arrowHead = Real(7 * pixel);
-    flags.pointSize = 5;
+    // Sizes in pixels, whatever the zoom, growing with the image as its lines do.
+    const double line = render::LineWidth(width, height);
+    flags.normalLength = Real(20 * line * pixel);
+    flags.arrowHead = Real(7 * line * pixel);
+    flags.pointSize = Real(5 * line);
     if (options.impulses)
     {
         // The largest arrow of the run spans a sixth of the image height; the legend shows a
@@ -563,6 +689,7 @@ int Run(const RenderOptions& options)
         int index = 0; ///< the file's number
         render::DrawList drawing;
         std::string caption;
+        render::Camera camera;
     };
     const std::size_t batchSize = std::size_t(std::max(1, 2 * jobs));
     std::vector<Pending> batch;
@@ -576,8 +703,13 @@ int Run(const RenderOptions& options)
             {
                 mirror->Step();
             }
+            if (follow)
+            {
+                follow->Update(built->world, double(dt));
+            }
         }
     };
+    const bool writeSvg = options.svg;
     const auto drawBatch = [&]
     {
         RunInOrder(
@@ -586,6 +718,7 @@ int Run(const RenderOptions& options)
             {
                 render::FrameOptions options = frameOptions;
                 options.caption = batch[i].caption;
+                options.camera = batch[i].camera;
                 const render::Image image = renderers.Draw(
                     [&](render::OffscreenRenderer& renderer)
                     { return render::RenderFrame(renderer, batch[i].drawing, options); });
@@ -593,6 +726,14 @@ int Run(const RenderOptions& options)
                 OutputFile file(FramePath(directory, batch[i].index));
                 std::fwrite(png.data(), 1, png.size(), file.Stream());
                 file.Commit();
+                if (writeSvg)
+                {
+                    const std::string svg =
+                        render::RenderSvg(batch[i].drawing, options, width, height);
+                    OutputFile svgFile(FramePath(directory, batch[i].index, "svg"));
+                    std::fwrite(svg.data(), 1, svg.size(), svgFile.Stream());
+                    svgFile.Commit();
+                }
             },
             [&](std::size_t)
             {
@@ -609,6 +750,7 @@ int Run(const RenderOptions& options)
             stepTo(frame);
             Pending& pending = batch.emplace_back();
             pending.index = k;
+            pending.camera = follow ? follow->Current() : frameOptions.camera;
             built->world.Draw(pending.drawing, flags);
             if (mirror)
             {
@@ -617,7 +759,10 @@ int Run(const RenderOptions& options)
             char caption[256];
             std::snprintf(caption, sizeof caption, "%s  frame %d  t = %.3f s", scene->name.c_str(),
                           frame, frame * scene->world.dt);
-            pending.caption = caption;
+            if (!options.noCaption)
+            {
+                pending.caption = caption;
+            }
             if (batch.size() == batchSize)
             {
                 drawBatch();
@@ -642,8 +787,11 @@ int Run(const RenderOptions& options)
     }
     progress.Finish();
 
-    if (!moviePath.empty() && !Assemble(ffmpeg, directory, written,
-                                        1.0 / (scene->world.dt * options.every), moviePath, gif))
+    // By default the movie plays in simulated time; --fps plays each frame for 1/N s.
+    const double framesPerSecond =
+        options.fps ? double(*options.fps) : 1.0 / (scene->world.dt * options.every);
+    if (!moviePath.empty() &&
+        !Assemble(ffmpeg, directory, written, framesPerSecond, moviePath, gif))
     {
         return kExitRunFailed;
     }
@@ -685,10 +833,32 @@ Command AddRenderCommand(CLI::App& parent)
         ->check(CLI::Range(1, INT_MAX));
     app->add_option("--size", options->size, "Image size in pixels, each 1..8192 (default 640x480)")
         ->type_name("WxH");
-    app->add_option("--camera", options->camera,
-                    "World point at the image centre and world height shown, in metres "
-                    "(default: the scene's render.camera, else fit to the bodies at frame 0)")
-        ->type_name("x,y,height");
+    CLI::Option* cameraOption =
+        app->add_option(
+               "--camera", options->camera,
+               "World point at the image centre and world height shown, in metres "
+               "(default: the scene's render.camera, else fit to the bodies over the whole "
+               "run)")
+            ->type_name("x,y,height");
+    CLI::Option* follow =
+        app->add_option("--follow", options->follow,
+                        "Follow the body of this name: the camera (of --camera's or the scene's "
+                        "height, else frame 0's fit) eases after it and keeps it in the middle "
+                        "80 % of the view")
+            ->type_name("BODY");
+    CLI::Option* fit = app->add_option("--fit-frames", options->fitFrames,
+                                       "Fit the camera to the bodies over frames A to B "
+                                       "(inclusive; default: the whole run)")
+                           ->type_name("A:B");
+    fit->excludes(follow);
+    fit->excludes(cameraOption);
+    app->add_flag("--no-caption", options->noCaption, "No caption (scene, frame, time) at the top");
+    app->add_flag("--no-legend", options->noLegend,
+                  "No colour legend, impulse legend or scale bar");
+    app->add_flag("--transparent", options->transparent,
+                  "Transparent background: RGBA PNGs (and SVGs without a background)");
+    app->add_flag("--svg", options->svg,
+                  "Also write each frame as SVG (frame_NNNNN.svg beside the PNG), for figures");
     app->add_flag("--contacts", options->contacts, "Draw contact points and normals");
     app->add_flag("--impulses", options->impulses,
                   "Draw arrows proportional to each contact's normal impulse and each joint's "
@@ -704,6 +874,11 @@ Command AddRenderCommand(CLI::App& parent)
                                        "Also assemble the frames into an H.264 MP4 (ffmpeg)")
                            ->type_name("FILE");
     gif->excludes(mp4);
+    app->add_option("--fps", options->fps,
+                    "Frame rate of the GIF or MP4: each frame shows for 1/N s (default: "
+                    "simulated time, 1/(dt·K) frames per second); at most 50 for a GIF")
+        ->type_name("N")
+        ->check(CLI::Range(1, 240));
     app->add_flag("--overwrite", options->overwrite,
                   "DIR may hold frames of an earlier render: remove them first (without it, "
                   "such a folder is refused)");
