@@ -41,6 +41,8 @@ Command AddValidateCommand(CLI::App& parent);
 /// [--camera x,y,height] [--contacts] [--impulses] [--joints] [--overlay-box2d]
 /// [--gif FILE | --mp4 FILE] [--jobs N] [--threads T]`
 Command AddRenderCommand(CLI::App& parent);
+/// `meff view SCENE [--script FILE] [--size WxH]`: the scene in a window (tools/view).
+Command AddViewCommand(CLI::App& parent);
 
 /// `meff bench SCENE.json... [--steps N] [--runs R] [--threads T] [--json FILE]`
 Command AddBenchCommand(CLI::App& parent);

@@ -26,7 +26,7 @@ int main(int argc, char** argv)
 
     const std::vector<Command> commands = {
         AddRunCommand(app),   AddValidateCommand(app), AddRenderCommand(app), AddBenchCommand(app),
-        AddSweepCommand(app), AddImportCommand(app),   AddExportCommand(app),
+        AddSweepCommand(app), AddImportCommand(app),   AddExportCommand(app), AddViewCommand(app),
     };
 
     try
