@@ -2,7 +2,7 @@
 // colour_contact_solver.cpp): the colouring's invariant, the SIMD sine and cosine, analytic
 // answers, agreement with the island-order solver where order cannot matter, and the settled
 // state of a pyramid against Box2D 2.4.1.
-#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/graph_colouring.h"
 #include "solvers/lanes/wide_real.h"
 
 #include "analytic_support.h"

@@ -57,6 +57,11 @@ struct CollisionPolicy
     /// by more than this (m) relative to the other since it was computed (Collide's recycling);
     /// 0: every touching manifold is computed every step, as Box2D 2.4.1 does.
     Real recycleDistance = 0;
+    /// Whether the shared stages — the pair search (in batches), the narrow phase, the boxes'
+    /// synchronization and continuous collision's first search — may use the world's threads
+    /// (WorldState::StageTasks). false: they run on the stepping thread, the new pairs added in
+    /// the broad phase's order, as Box2D 2.4.1 does.
+    bool threadedStages = false;
     friend bool operator==(const CollisionPolicy&, const CollisionPolicy&) = default;
 };
 

@@ -182,9 +182,9 @@ void AddPair(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeInde
 
 void FindNewContacts(WorldState& world)
 {
-    if (world.solver.kind == SolverKind::Box2D)
+    if (!world.collision.threadedStages)
     {
-        // Box2D's back end stays on one thread, its pairs added as b2BroadPhase adds them.
+        // One thread (Box2D's back end), the pairs added as b2BroadPhase adds them.
         world.broadPhase.UpdatePairs([&world](std::int32_t shapeA, std::int32_t shapeB)
                                      { AddPair(world, shapeA, shapeB); });
     }

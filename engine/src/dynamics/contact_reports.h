@@ -9,7 +9,7 @@
 // nothing.
 #pragma once
 
-#include "solvers/box2d/contact_constraint.h"
+#include "solvers/shared/contact_constraint.h"
 #include "solvers/solver.h"
 #include "meff/world.h"
 

@@ -21,7 +21,7 @@
 #include "dynamics/events.h"
 #include "dynamics/impact_event.h"
 #include "dynamics/world_state.h"
-#include "solvers/box2d/island_step.h"
+#include "solvers/shared/island_step.h"
 #include "tasks/parallel_ranges.h"
 
 #include <cassert>

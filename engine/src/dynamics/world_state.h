@@ -13,7 +13,7 @@
 #include "dynamics/step_scratch.h"
 #include "joints/joint.h"
 #include "solvers/box2d/contact_solver.h"
-#include "solvers/island.h"
+#include "solvers/shared/island.h"
 #include "solvers/solver.h"
 #include "meff/world.h"
 
@@ -101,9 +101,9 @@ struct WorldState
     /// The user's threads (World::SetTaskSystem), not owned, or null; configuration, not state:
     /// kept across RestoreSnapshot, outside snapshots and the state hash.
     TaskSystem* tasks = nullptr;
-    /// The threads the shared stages may use: the user's, except in Box2D's back end, which
-    /// steps on one thread, bit for bit Box2D 2.4.1.
-    TaskSystem* StageTasks() const { return solver.kind == SolverKind::Box2D ? nullptr : tasks; }
+    /// The threads the shared stages may use: the user's where the back end's collision policy
+    /// allows them (not Box2D's, which steps on one thread, bit for bit Box2D 2.4.1).
+    TaskSystem* StageTasks() const { return collision.threadedStages ? tasks : nullptr; }
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;

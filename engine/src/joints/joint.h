@@ -12,7 +12,7 @@
 
 #include "dynamics/solver_types.h"
 #include "joints/mat33.h"
-#include "solvers/soft_step/softness.h" // the soft row shared by every back end's springs
+#include "joints/softness.h" // the soft row shared by every back end's springs
 #include "meff/joint.h"
 #include "meff/world.h"
 

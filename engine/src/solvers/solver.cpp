@@ -33,6 +33,7 @@ CollisionPolicy Box2DCollision(const Tolerances& tolerances)
     policy.shapeBoxes = ShapeBoxes::Swept;
     policy.treeUpdate = TreeUpdate::Reinsert;
     policy.recycleDistance = 0;
+    policy.threadedStages = false;
     return policy;
 }
 
@@ -43,6 +44,7 @@ CollisionPolicy ThroughputCollision(const Tolerances& tolerances)
     policy.shapeBoxes = ShapeBoxes::SweptForContinuous;
     policy.treeUpdate = TreeUpdate::EnlargeAndRebuild;
     policy.recycleDistance = tolerances.linearSlop;
+    policy.threadedStages = true;
     return policy;
 }
 

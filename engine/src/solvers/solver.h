@@ -3,7 +3,12 @@
 // phase, continuous collision — and hands the solving of the awake bodies to the back end the
 // settings choose. A back end lives in its own folder (box2d/, colour/, soft_step/) and owns its
 // integration, its rows and its scratch memory; what it may read and write of the world is
-// SolverWorld, and the contacts it solved it hands back through SolvedContactSink.
+// SolverWorld, and the contacts it solved it hands back through SolvedContactSink. What several
+// back ends use lives beside them, never in one of them: shared/ (islands, Box2D's island step
+// with its contact and joint stages, the rigid contact rows, the solved-contact records, joints
+// one by one) and lanes/ (SIMD lanes, graph colouring, colour groups). No back end includes
+// another's folder. The shared stages ask the back end's CollisionPolicy (Collision below), never
+// which back end runs.
 #pragma once
 
 #include "collision/collision_policy.h"

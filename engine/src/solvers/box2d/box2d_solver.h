@@ -1,11 +1,11 @@
 // The Box2D back end (SolverKind::Box2D): Box2D 2.4.1's b2World::Solve and b2Island::Solve,
 // bit for bit — islands grown from awake bodies in world body list order, each solved by
-// island_step.h with its contacts (ContactSolver) and joints (JointSolver) in island order.
+// shared/island_step.h with its contacts (ContactSolver) and joints (JointSolver) in island order.
 #pragma once
 
 #include "solvers/box2d/contact_solver.h"
 #include "solvers/box2d/joint_solver.h"
-#include "solvers/island.h"
+#include "solvers/shared/island.h"
 #include "solvers/solver.h"
 
 namespace meff::detail

@@ -7,8 +7,8 @@
 #pragma once
 
 #include "dynamics/solver_types.h"
-#include "solvers/box2d/contact_constraint.h"
-#include "solvers/box2d/island_step.h"
+#include "solvers/shared/contact_constraint.h"
+#include "solvers/shared/island_step.h"
 
 #include <cstdint>
 #include <span>

@@ -5,7 +5,8 @@
 
 #include "dynamics/solver_types.h"
 #include "joints/joint.h"
-#include "solvers/box2d/island_step.h"
+#include "solvers/shared/island_step.h"
+#include "solvers/shared/sequential_joints.h"
 
 #include <cstdint>
 #include <span>
@@ -17,10 +18,6 @@ namespace meff::detail
 struct Body;
 struct Joint;
 struct JointSlot;
-
-/// What a joint needs of each of its bodies when a step begins (see JointBody), read from
-/// the body the world holds.
-JointBody JointBodyOf(const Body& body);
 
 class JointSolver final : public JointStage
 {
@@ -34,15 +31,5 @@ class JointSolver final : public JointStage
   private:
     std::vector<Joint*> m_joints; ///< the island's joints, in island order
 };
-
-/// Stores what a joint's rows need of bodies beyond its own two (a gear's: the bodies its two
-/// joints are anchored on), before the joint is prepared; nothing for other joints.
-void StoreOtherJointBodies(Joint& joint, std::span<const Body> bodies);
-/// Prepares one joint in island order (InitJointVelocityConstraints with its bodies).
-void PrepareSequentialJoint(Joint& joint, std::span<const Body> bodies, SolverData& data);
-/// One velocity sweep, and one position sweep (true when all are within tolerance), of joints
-/// solved one by one.
-void SolveSequentialVelocities(std::span<Joint* const> joints, SolverData& data);
-bool SolveSequentialPositions(std::span<Joint* const> joints, SolverData& data);
 
 } // namespace meff::detail

@@ -1,10 +1,10 @@
 // The contact rows of an island by colour (SolverKind::Colour): the coloured contacts in SIMD
 // lanes (contact_lanes.h), then the contacts no colour had room for one by one in island order,
-// with Box2D's scalar rows (box2d/contact_constraint.h).
+// with Box2D's scalar rows (shared/contact_constraint.h).
 #pragma once
 
-#include "solvers/box2d/island_step.h"
 #include "solvers/colour/contact_lanes.h"
+#include "solvers/shared/island_step.h"
 
 #include <cstdint>
 #include <span>

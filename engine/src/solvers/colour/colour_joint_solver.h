@@ -1,11 +1,11 @@
 // The joint rows of an island by colour (SolverKind::Colour): revolute joints whose only rows
 // are the point block (no limit, no motor, blockJoints on) go by colour in SIMD lanes
 // (revolute_lanes.h); every other joint, and the lane joints no colour had room for, are solved
-// one by one in island order after the lanes, with their own rows (box2d/joint_solver.h).
+// one by one in island order after the lanes, with their own rows (shared/sequential_joints.h).
 #pragma once
 
-#include "solvers/box2d/island_step.h"
 #include "solvers/colour/revolute_lanes.h"
+#include "solvers/shared/island_step.h"
 
 #include <cstdint>
 #include <span>

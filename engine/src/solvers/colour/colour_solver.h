@@ -1,4 +1,4 @@
-// The colour back end (SolverKind::Colour): Box2D 2.4.1's island step (box2d/island_step.h)
+// The colour back end (SolverKind::Colour): Box2D 2.4.1's island step (shared/island_step.h)
 // with contacts and plain revolute joints solved colour by colour in SIMD lanes. Without sleep
 // and with every moving body awake the whole world is one island, gathered from the arrays
 // (BuildWorldIsland); otherwise islands are searched as Box2D's back end does.
@@ -6,7 +6,7 @@
 
 #include "solvers/colour/colour_contact_solver.h"
 #include "solvers/colour/colour_joint_solver.h"
-#include "solvers/island.h"
+#include "solvers/shared/island.h"
 #include "solvers/solver.h"
 
 namespace meff::detail

@@ -15,10 +15,10 @@
 // thread count. The preparation spreads every group likewise (it only reads the bodies).
 #pragma once
 
-#include "solvers/box2d/contact_constraint.h"
-#include "solvers/colour/colour_groups.h"
-#include "solvers/colour/contact_colouring.h"
+#include "solvers/lanes/colour_groups.h"
+#include "solvers/lanes/contact_colouring.h"
 #include "solvers/lanes/wide_real.h"
+#include "solvers/shared/contact_constraint.h"
 
 #include <cstdint>
 #include <span>

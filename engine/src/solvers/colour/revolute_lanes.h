@@ -14,7 +14,7 @@
 #pragma once
 
 #include "dynamics/solver_types.h"
-#include "solvers/colour/colour_groups.h"
+#include "solvers/lanes/colour_groups.h"
 #include "solvers/lanes/wide_real.h"
 
 #include <cstdint>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "dynamics/solver_types.h"
-#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/graph_colouring.h"
 #include "solvers/lanes/wide_real.h"
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // lanes and the soft step's.
 #pragma once
 
-#include "solvers/box2d/contact_constraint.h"
+#include "solvers/shared/contact_constraint.h"
 #include "solvers/lanes/lane_bodies.h"
 
 namespace meff::detail

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "dynamics/solver_types.h"
-#include "solvers/island.h"
+#include "solvers/shared/island.h"
 #include "solvers/solver.h"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "solvers/soft_step/soft_contact_lanes.h"
 
-#include "solvers/box2d/contact_constraint.h"
-#include "solvers/colour/contact_colouring.h"
+#include "solvers/shared/contact_constraint.h"
+#include "solvers/lanes/contact_colouring.h"
 #include "solvers/lanes/block_lanes.h"
 #include "solvers/lanes/lane_bodies.h"
 #include "solvers/lanes/rolling_lanes.h"

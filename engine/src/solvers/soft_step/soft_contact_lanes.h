@@ -13,8 +13,8 @@
 // results: they share no moving body.
 #pragma once
 
-#include "solvers/colour/colour_groups.h"
-#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/colour_groups.h"
+#include "solvers/lanes/graph_colouring.h"
 #include "solvers/lanes/wide_real.h"
 #include "solvers/soft_step/soft_step_context.h"
 

@@ -14,7 +14,7 @@
 // measured before the step).
 #pragma once
 
-#include "solvers/box2d/contact_constraint.h"
+#include "solvers/shared/contact_constraint.h"
 #include "solvers/soft_step/soft_contact_lanes.h"
 #include "solvers/soft_step/soft_row.h"
 #include "solvers/soft_step/soft_step_context.h"

@@ -9,7 +9,7 @@
 // the caller's scalar rows.
 #pragma once
 
-#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/graph_colouring.h"
 #include "solvers/lanes/wide_real.h"
 #include "solvers/soft_step/soft_contact_lanes.h"
 #include "solvers/soft_step/soft_joint.h"

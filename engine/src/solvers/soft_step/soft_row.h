@@ -9,7 +9,7 @@
 
 #include "dynamics/solver_types.h"
 #include "solvers/soft_step/soft_bodies.h"
-#include "solvers/soft_step/softness.h"
+#include "joints/softness.h"
 
 #include <cstdint>
 

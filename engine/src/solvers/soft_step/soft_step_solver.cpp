@@ -2,7 +2,7 @@
 
 #include "dynamics/body.h"
 #include "dynamics/joint_slot.h"
-#include "solvers/box2d/joint_solver.h"
+#include "solvers/shared/sequential_joints.h"
 #include "tasks/parallel_ranges.h"
 
 namespace meff::detail

@@ -26,7 +26,7 @@
 #pragma once
 
 #include "joints/joint.h"
-#include "solvers/island.h"
+#include "solvers/shared/island.h"
 #include "solvers/soft_step/soft_bodies.h"
 #include "solvers/soft_step/soft_contact_solver.h"
 #include "solvers/soft_step/soft_joint.h"

@@ -1,4 +1,4 @@
-#include "solvers/island.h"
+#include "solvers/shared/island.h"
 
 #include "dynamics/joint_slot.h"
 #include "tasks/parallel_ranges.h"

@@ -3,8 +3,8 @@
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
-#include "solvers/box2d/contact_constraint.h"
-#include "solvers/colour/graph_colouring.h"
+#include "solvers/shared/contact_constraint.h"
+#include "solvers/lanes/graph_colouring.h"
 
 #include <cstddef>
 

@@ -1,4 +1,4 @@
-#include "solvers/colour/contact_colouring.h"
+#include "solvers/lanes/contact_colouring.h"
 
 namespace meff::detail
 {

@@ -1,4 +1,4 @@
-#include "solvers/box2d/island_step.h"
+#include "solvers/shared/island_step.h"
 
 #include "dynamics/body.h"
 #include "dynamics/contact.h"

@@ -3,8 +3,8 @@
 // constraints can be solved at the same time — kLanes (four; AVX2: eight) to a SIMD group, and on
 // several threads (contact_lanes.h) — without two of them writing the same body. Static and
 // kinematic bodies (zero inverse mass and inertia) are only read, so any number of a colour's
-// constraints may touch one. Contacts (contact_colouring.h) and joints (joint_solver.h) are
-// coloured apart, because they are solved in separate passes.
+// constraints may touch one. Contacts (contact_colouring.h) and joints (colour/revolute_lanes.h)
+// are coloured apart, because they are solved in separate passes.
 #pragma once
 
 #include "meff/math.h"

@@ -9,8 +9,8 @@
 #pragma once
 
 #include "dynamics/solver_types.h"
-#include "solvers/box2d/contact_constraint.h"
-#include "solvers/island.h"
+#include "solvers/shared/contact_constraint.h"
+#include "solvers/shared/island.h"
 #include "solvers/solver.h"
 #include "meff/function_ref.h"
 

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "dynamics/solver_types.h"
-#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/graph_colouring.h"
 #include "solvers/lanes/lane_bodies.h"
 #include "tasks/parallel_ranges.h"
 
