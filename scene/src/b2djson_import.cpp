@@ -376,9 +376,12 @@ const Json* PropertyValue(Converter& converter, const CustomProperties& properti
 }
 
 /// A meff.* string property holding JSON (a section of a meff scene), parsed; nullptr when
-/// absent or bad (reported).
+/// absent or bad (reported). `outerDepth`: the containers the section lands in within the
+/// scene, so that the scene's nesting cap holds for the embedded text as it is read (a
+/// property nested 70,000 levels deep was once parsed without a cap and copied recursively
+/// until the stack overflowed).
 std::optional<Json> PropertyJson(Converter& converter, const CustomProperties& properties,
-                                 const std::string& name)
+                                 const std::string& name, std::size_t outerDepth)
 {
     const Json* text = PropertyValue(converter, properties, name, "string");
     if (text == nullptr)
@@ -390,14 +393,15 @@ std::optional<Json> PropertyJson(Converter& converter, const CustomProperties& p
         converter.Error(properties.meff.at(name).second, "must be a string", text);
         return std::nullopt;
     }
-    Json parsed = Json::parse(text->get<std::string>(), nullptr, false);
-    if (parsed.is_discarded())
+    Diagnostics embedded(name);
+    std::optional<Json> parsed =
+        scene_detail::ParseDocument(text->get<std::string>(), embedded, outerDepth);
+    for (const std::string& message : embedded.Messages())
     {
         converter.Error(properties.meff.at(name).second + ".string",
-                        "must hold JSON (" + name + " is a section of a meff scene)", text);
-        return std::nullopt;
+                        "must hold JSON (" + name + " is a section of a meff scene): " + message);
     }
-    return parsed;
+    return embedded.HasErrors() ? std::nullopt : std::move(parsed);
 }
 
 /// The conversion of one level.
@@ -509,7 +513,8 @@ class Importer
         }
         // world.soft_step is a section of its own: the loader checks each member, its
         // messages naming the property.
-        if (std::optional<Json> soft = PropertyJson(m_converter, custom, "meff.soft_step"))
+        if (std::optional<Json> soft =
+                PropertyJson(m_converter, custom, "meff.soft_step", 2 /* root, world */))
         {
             put("soft_step", std::move(*soft),
                 custom.meff.at("meff.soft_step").second + " (meff.soft_step)");
@@ -519,7 +524,7 @@ class Importer
         for (const char* section : {"validate", "render", "analytic"})
         {
             const std::string name = kMeffPrefix + std::string(section);
-            if (std::optional<Json> value = PropertyJson(m_converter, custom, name))
+            if (std::optional<Json> value = PropertyJson(m_converter, custom, name, 1 /* root */))
             {
                 scene[section] = std::move(*value);
                 m_converter.From(section, custom.meff.at(name).second + " (" + name + ")");
@@ -890,7 +895,8 @@ class Importer
                 {{"type", fixture.PathOf("polygon")}, {"points", from}});
             return;
         }
-        if (std::optional<Json> box = PropertyJson(m_converter, custom, "meff.box"))
+        if (std::optional<Json> box =
+                PropertyJson(m_converter, custom, "meff.box", 4 /* root, bodies, [i], shapes */))
         {
             if (IsBoxOf(*box, *points))
             {
@@ -1204,7 +1210,8 @@ class Importer
             }
             number("max_force", "maxForce");
         }
-        if (std::optional<Json> form = PropertyJson(m_converter, custom, "meff.joint"))
+        if (std::optional<Json> form =
+                PropertyJson(m_converter, custom, "meff.joint", 2 /* root, joints */))
         {
             UseAuthoringForm(*form, *a, *b, out);
         }

@@ -55,7 +55,10 @@ bool LooksNonFinite(const Json& value)
 class DocumentBuilder : public nlohmann::json_sax<Json>
 {
   public:
-    explicit DocumentBuilder(Diagnostics& diagnostics) : m_diagnostics(diagnostics) {}
+    DocumentBuilder(Diagnostics& diagnostics, std::size_t outerDepth)
+        : m_diagnostics(diagnostics), m_outerDepth(outerDepth)
+    {
+    }
 
     Json TakeRoot() { return std::move(m_root); }
 
@@ -143,11 +146,15 @@ class DocumentBuilder : public nlohmann::json_sax<Json>
 
     bool Open(Json&& container)
     {
-        if (m_open.size() >= kMaxJsonDepth)
+        if (m_outerDepth + m_open.size() >= kMaxJsonDepth)
         {
+            const std::string limit = "nested deeper than " + std::to_string(kMaxJsonDepth) +
+                                      " levels (a scene needs about 7)";
             m_diagnostics.Report(CurrentValuePath(),
-                                 "nested deeper than " + std::to_string(kMaxJsonDepth) +
-                                     " levels (a scene needs about 7): not a scene file");
+                                 m_outerDepth == 0
+                                     ? limit + ": not a scene file"
+                                     : limit + " once in the scene, inside its " +
+                                           std::to_string(m_outerDepth) + " outer levels");
             return false;
         }
         Json* value = AddContainer(std::move(container));
@@ -180,6 +187,7 @@ class DocumentBuilder : public nlohmann::json_sax<Json>
     }
 
     Diagnostics& m_diagnostics;
+    std::size_t m_outerDepth; ///< containers around the document once it is in the scene
     Json m_root;
     // Pointers stay valid: a container's own slot never moves while it is open, because only
     // the innermost open container grows.
@@ -272,10 +280,11 @@ std::string IndexPath(const std::string& parent, std::size_t index)
     return parent + "[" + std::to_string(index) + "]";
 }
 
-std::optional<Json> ParseDocument(std::string_view text, Diagnostics& diagnostics)
+std::optional<Json> ParseDocument(std::string_view text, Diagnostics& diagnostics,
+                                  std::size_t outerDepth)
 {
     const std::size_t errorsBefore = diagnostics.Count();
-    DocumentBuilder builder(diagnostics);
+    DocumentBuilder builder(diagnostics, outerDepth);
     const bool parsed = Json::sax_parse(text, &builder);
     if (!parsed || diagnostics.Count() != errorsBefore)
     {

@@ -59,8 +59,13 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 /// Parses JSON text. On a syntax error, a number too large for a double, a key that appears
 /// twice in one object or nesting deeper than kMaxJsonDepth, reports it and returns nullopt.
 /// nlohmann::json alone would throw a number overflow without saying where, and silently keep the
-/// last of duplicate keys.
-std::optional<Json> ParseDocument(std::string_view text, Diagnostics& diagnostics);
+/// last of duplicate keys. The cap is checked as the text is read, before anything deeper is
+/// built. JSON embedded in another document (a b2dJson level's meff.* custom properties) passes
+/// `outerDepth`, the number of containers it will be nested in once it is part of the scene, so
+/// that one cap holds for every JSON the tools read: the scene it becomes nests no deeper than
+/// kMaxJsonDepth either.
+std::optional<Json> ParseDocument(std::string_view text, Diagnostics& diagnostics,
+                                  std::size_t outerDepth = 0);
 
 /// Typed access to the fields of one JSON object. Every field read is remembered as known, so
 /// that Finish() can report the unknown ones. Each reader returns nullopt, after reporting why,
