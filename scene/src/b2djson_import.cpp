@@ -1581,23 +1581,86 @@ void CheckHandMass(Converter& converter, const Scene& scene,
 
 } // namespace
 
-bool LooksLikeB2dJson(std::string_view text)
+namespace
 {
-    const Json document = Json::parse(text, nullptr, false);
-    if (document.is_discarded() || !document.is_object() || document.contains("meff_scene"))
+
+/// What format detection needs of a document, read through nlohmann's SAX interface without
+/// building it: whether the root is an object, and which keys it has. Nothing deeper than the
+/// nesting cap is read (issue 36: building the whole document first took 2.4 GB for 32 million
+/// nested brackets, before the capped loader could refuse them).
+class TopLevelKeys : public nlohmann::json_sax<Json>
+{
+  public:
+    bool rootIsObject = false;
+    bool meffScene = false;  ///< has "meff_scene"
+    bool b2dJsonKey = false; ///< has one of b2dJson's world fields
+    bool tooDeep = false;    ///< stopped at the nesting cap
+
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return Open(true); }
+    bool start_array(std::size_t) override { return Open(false); }
+    bool end_object() override { return Close(); }
+    bool end_array() override { return Close(); }
+    bool key(string_t& key) override
     {
-        return false;
-    }
-    for (const char* key : {"body", "joint", "gravity", "allowSleep", "autoClearForces",
-                            "warmStarting", "continuousPhysics", "subStepping", "stepsPerSecond",
-                            "velocityIterations", "positionIterations", "image"})
-    {
-        if (document.contains(key))
+        if (m_depth != 1)
         {
             return true;
         }
+        meffScene = meffScene || key == "meff_scene";
+        for (const char* name :
+             {"body", "joint", "gravity", "allowSleep", "autoClearForces", "warmStarting",
+              "continuousPhysics", "subStepping", "stepsPerSecond", "velocityIterations",
+              "positionIterations", "image"})
+        {
+            b2dJsonKey = b2dJsonKey || key == name;
+        }
+        return true;
     }
-    return false;
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override
+    {
+        return false;
+    }
+
+  private:
+    bool Open(bool object)
+    {
+        if (m_depth == 0)
+        {
+            rootIsObject = object;
+        }
+        if (++m_depth > scene_detail::kMaxJsonDepth)
+        {
+            tooDeep = true;
+            return false;
+        }
+        return true;
+    }
+    bool Close()
+    {
+        --m_depth;
+        return true;
+    }
+
+    std::size_t m_depth = 0;
+};
+
+} // namespace
+
+bool LooksLikeB2dJson(std::string_view text)
+{
+    TopLevelKeys keys;
+    const bool valid = Json::sax_parse(text, &keys);
+    // Text that is not JSON goes to the meff loader, which says why. Text nested too deep goes
+    // by the keys read before the cap: the loader of that format refuses the nesting in its
+    // own words.
+    return (valid || keys.tooDeep) && keys.rootIsObject && !keys.meffScene && keys.b2dJsonKey;
 }
 
 LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath)

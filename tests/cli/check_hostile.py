@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""CTest cases for the `meff` tool under hostile input and faults (issue 36):
+
+    check_hostile.py MEFF SOURCE_DIR WORK_DIR CASE
+
+Each CASE (a function below named case_CASE) passes when the tool does what
+docs/hostile-input.md promises. WORK_DIR is emptied first and holds everything a case writes.
+"""
+import os
+import resource
+import shutil
+import signal
+import stat
+import subprocess
+import sys
+import time
+
+MEFF, SOURCE, WORK, CASE = sys.argv[1:5]
+ROD = os.path.join(SOURCE, "samples", "scenes", "anchored_rod.json")
+STACK = os.path.join(SOURCE, "samples", "scenes", "stack10.json")
+
+
+def fail(message):
+    print("FAIL: " + message[:3000])
+    sys.exit(1)
+
+
+def run_measured(args, timeout=300, limits=None, **kwargs):
+    """Runs meff; returns (status, stdout, stderr, peak resident memory in MiB). `limits`:
+    {resource.RLIMIT_...: value} set in the child only."""
+
+    def set_limits():
+        for which, value in (limits or {}).items():
+            resource.setrlimit(which, (value, value))
+
+    process = subprocess.Popen([MEFF] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, preexec_fn=set_limits, **kwargs)
+    try:
+        stdout, stderr = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        fail("meff %s: still running after %d s" % (" ".join(args), timeout))
+    # communicate() reaped it; the children's peak is the largest of any child so far, so each
+    # measured run must use more than the ones before it to be read (callers order them so).
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0
+    status = process.returncode
+    print("$ meff " + " ".join(args))
+    print("status %d, peak %.0f MiB\nstdout: %s\nstderr: %s" % (status, peak, stdout[:400],
+                                                               stderr[:400]))
+    return status, stdout, stderr, peak
+
+
+def run(args, timeout=300, **kwargs):
+    status, stdout, stderr, _ = run_measured(args, timeout, **kwargs)
+    return status, stdout, stderr
+
+
+def expect_one_line_error(status, stderr, expected_status, *needles):
+    if status != expected_status:
+        fail("exit status %d, expected %d" % (status, expected_status))
+    if stderr.count("\n") != 1 or not stderr.endswith("\n"):
+        fail("expected one line on stderr, got %r" % stderr[:2000])
+    for needle in needles:
+        if needle not in stderr:
+            fail("stderr does not say %r: %r" % (needle, stderr[:2000]))
+
+
+def leftovers(folder=WORK):
+    """Hidden temporary files left in `folder`."""
+    return [name for name in os.listdir(folder) if name.startswith(".")]
+
+
+# --- finding 2: format detection reads only what it needs ---------------------------------
+
+
+def case_detect_deep_nesting():
+    """32 million brackets, 16 million deep (32 MB): the default format detection built the
+    whole document (for twice as many, 2.4 GB and 16 s) before the capped loader refused it.
+    Now refused by the cap as with --format meff."""
+    path = os.path.join(WORK, "deep.json")
+    levels = 16 * 1000 * 1000
+    with open(path, "w") as stream:
+        stream.write('{"body": ' + "[" * levels + "]" * levels + "}")
+    status, _, stderr, told = run_measured(["run", path, "--format", "meff"])
+    expect_one_line_error(status, stderr, 2, path, "nested deeper than 64 levels")
+    status, _, stderr, detected = run_measured(["run", path])
+    expect_one_line_error(status, stderr, 2, path, "nested deeper than 64 levels")
+    # Detection reads the same text as the loader and keeps no more than the nesting cap of
+    # it: the default path may cost at most half as much again as --format meff (which took
+    # 119 MB; detection building the document took 2.4 GB). Relative, so that the bound holds
+    # under AddressSanitizer's allocator too.
+    if detected > 1.5 * told:
+        fail("peak memory %.0f MiB by detection, %.0f MiB with --format meff" % (detected, told))
+
+
+def main():
+    shutil.rmtree(WORK, ignore_errors=True)
+    os.makedirs(WORK)
+    case = globals().get("case_" + CASE)
+    if case is None:
+        fail("no such case: " + CASE)
+    case()
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
