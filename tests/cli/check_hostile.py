@@ -93,6 +93,34 @@ def case_detect_deep_nesting():
         fail("peak memory %.0f MiB by detection, %.0f MiB with --format meff" % (detected, told))
 
 
+# --- finding 3: the umask is read once, before any thread -------------------------------
+
+
+def case_umask_jobs():
+    """Frames written on many threads get the permissions the umask gives: each writer thread
+    read the umask by setting it to 0 and back, and two interleaving left it at 0 (render
+    --jobs 64 of 3,000 frames left 208 frames at 0666 in one of three runs)."""
+    frames = os.path.join(WORK, "frames")
+    old = os.umask(0o027)
+    try:
+        status, _, stderr = run(["render", STACK, "--out", frames, "--frames", "1500", "--size",
+                                 "16x16", "--jobs", "32"], timeout=600)
+        trajectory = os.path.join(WORK, "t.csv")
+        run(["run", ROD, "--frames", "2", "--trajectory", trajectory])
+    finally:
+        os.umask(old)
+    if status != 0:
+        fail("render failed: %r" % stderr)
+    modes = {}
+    for name in os.listdir(frames) + ["../t.csv"]:
+        mode = stat.S_IMODE(os.stat(os.path.join(frames, name)).st_mode)
+        modes.setdefault(mode, []).append(name)
+    print("modes: %s" % {oct(mode): len(names) for mode, names in modes.items()})
+    if list(modes) != [0o640]:
+        fail("files not at 0640 (umask 027): %s" %
+             {oct(mode): names[:5] for mode, names in modes.items()})
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)

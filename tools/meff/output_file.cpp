@@ -91,6 +91,18 @@ struct Destination
 
 constexpr int kMaxSymbolicLinks = 40; // as Linux's own limit on a path's links
 
+/// The process's umask, for the permissions of a new file. umask() can only be read by setting
+/// it (umask(0), then umask(mask) back), so two threads reading it at once could leave it at 0
+/// and files world-writable (issue 36: `render --jobs 64` left 208 of 3,000 frames at 0666).
+/// It is read once, here, during the static initialisation of the program, before main()
+/// and so before any thread exists; nothing in meff changes it afterwards.
+const mode_t g_umask = []
+{
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    return mask;
+}();
+
 /// An open file of this process named through /proc (/dev/stdout is a link to
 /// /proc/self/fd/1): its descriptor, or -1.
 int OwnDescriptor(const fs::path& directory, const fs::path& name)
@@ -263,9 +275,7 @@ OutputFile::OutputFile(std::string path) : m_path(std::move(path))
     mode_t mode = destination.mode;
     if (!destination.exists)
     {
-        const mode_t mask = ::umask(0);
-        ::umask(mask);
-        mode = 0666 & ~mask;
+        mode = 0666 & ~g_umask;
     }
     ::fchmod(descriptor, mode);
     m_stream = ::fdopen(descriptor, "w");
