@@ -271,10 +271,13 @@ namespace
 /// to a few thousand instructions, so 64 of them outweigh handing a range to another thread.
 constexpr int kMinContactsPerTask = 64;
 
-/// Recycling is the back end's choice (0: never, Box2D's), and off with a pre-solve callback.
+/// Recycling is the back end's choice (0: never, Box2D's), with or without a pre-solve
+/// callback: a kept manifold is shown to the callback as a fresh one is (KeepContact), so that
+/// installing a callback that enables every contact changes nothing (issue 36: turning
+/// recycling off for it made the colour and soft-step trajectories differ from step 2).
 Real RecycleDistance(const WorldState& world)
 {
-    return world.preSolve ? Real(0) : world.collision.recycleDistance;
+    return world.collision.recycleDistance;
 }
 
 /// Collide's choice for one contact from the activity test on: the part that a contact skipped
@@ -338,11 +341,23 @@ bool PassesFilter(WorldState& world, Contact& contact)
                                         : CollideAction::Destroy;
 }
 
-/// What UpdateContact would do to a contact that stays touching with the same manifold: no
-/// events, and no pre-solve callback (recycling is off with one).
+/// What UpdateContact would do to a contact that stays touching with the same manifold, without
+/// a pre-solve callback: no events; the contact takes part again (Box2D: enabled).
 void KeepManifold(Contact& contact)
 {
     contact.flags &= ~Contact::Disabled;
+}
+
+/// The same with the pre-solve callback, if any, asked about the kept manifold as UpdateContact
+/// asks about a fresh one.
+void KeepContact(WorldState& world, std::int32_t contactIndex)
+{
+    Contact& contact = world.contacts[contactIndex];
+    KeepManifold(contact);
+    if (contact.IsTouching() && !contact.IsSensor() && world.preSolve)
+    {
+        RunPreSolve(world, contactIndex);
+    }
 }
 
 /// Does Collide's `action` to contact `c` at once.
@@ -354,7 +369,7 @@ void KeepManifold(Contact& contact)
         DestroyContact(world, c);
         break;
     case CollideAction::Keep:
-        KeepManifold(world.contacts[c]);
+        KeepContact(world, c);
         break;
     case CollideAction::Update:
         UpdateContact(world, c);
@@ -470,7 +485,7 @@ void DecideAndCompute(WorldState& world, std::vector<CollideEntry>& entries)
                      entry.action = DecideActive(world, contact, recycleDistance);
                      if (entry.action == CollideAction::Keep)
                      {
-                         KeepManifold(contact);
+                         KeepManifold(contact); // with a pre-solve callback, Collide is serial
                      }
                      else if (entry.action == CollideAction::Update)
                      {
