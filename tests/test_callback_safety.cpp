@@ -1,11 +1,14 @@
 // The user's callbacks (issue 36): installing a pre-solve callback that enables every contact,
-// or a custom filter that allows every pair, changes no result in any back end.
+// or a custom filter that allows every pair, changes no result in any back end; a callback may
+// not change the world (itself included) while a step runs, and a refusal names the callback
+// it came from.
 #include <catch2/catch.hpp>
 
 #include "world_fixtures.h"
 #include "meff/world.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 using namespace meff;
@@ -85,4 +88,93 @@ TEST_CASE("A snapshot restored into a world with a no-op pre-solve callback step
         peer.RestoreSnapshot(snapshot);
         CHECK(Hashes(peer, 60) == expected);
     }
+}
+
+TEST_CASE("A callback cannot replace itself, or change the world, while a step runs",
+          "[callbacks][lifecycle]")
+{
+    // Replacing the running callback destroyed its closure under it (AddressSanitizer:
+    // heap-use-after-free, every back end); it is refused like Create and Destroy.
+    for (const SolverKind kind : kKinds)
+    {
+        CAPTURE(SolverKindName(kind));
+        World world = Pile(kind);
+        const BodyId body = world.GetBodies()[1];
+        std::vector<std::string> refusals;
+        const auto expectRefused = [&refusals](auto&& call)
+        {
+            try
+            {
+                call();
+                refusals.push_back("accepted");
+            }
+            catch (const InvalidArgument& error)
+            {
+                refusals.push_back(error.what());
+            }
+        };
+        const std::string padding(64, 'x'); // the closure's state, on the heap
+        world.SetPreSolveCallback(
+            [&, padding](const PreSolveContact&)
+            {
+                if (!refusals.empty())
+                {
+                    return !padding.empty();
+                }
+                expectRefused([&] { world.SetPreSolveCallback({}); });
+                expectRefused([&] { world.SetCustomFilterCallback({}); });
+                expectRefused([&] { world.SetTaskSystem(nullptr); });
+                expectRefused([&] { world.SetGravity({0, 0}); });
+                expectRefused([&] { world.SetLinearVelocity(body, {1, 0}); });
+                expectRefused([&] { world.ApplyForceToCenter(body, {1, 0}, true); });
+                expectRefused([&] { world.SetSolverSettings(world.GetSolverSettings()); });
+                expectRefused([&] { world.SetAllowSleeping(false); });
+                return !padding.empty(); // reads the closure: freed if it had been replaced
+            });
+        for (int i = 0; i < 120 && refusals.empty(); ++i)
+        {
+            world.Step(Real(1) / 60);
+        }
+        REQUIRE(refusals.size() == 8);
+        for (const std::string& refusal : refusals)
+        {
+            CHECK_THAT(refusal, Catch::Contains("called during World::Step (from the pre-solve "
+                                                "callback)"));
+        }
+        world.Step(Real(1) / 60); // nothing changed: the world steps on
+    }
+}
+
+TEST_CASE("Misuse inside the custom filter is refused, named as from the custom filter",
+          "[callbacks][lifecycle]")
+{
+    World world = Pile(SolverKind::Colour);
+    std::string refused;
+    const std::string padding(64, 'x');
+    world.SetCustomFilterCallback(
+        [&, padding](ShapeId, ShapeId)
+        {
+            if (refused.empty())
+            {
+                try
+                {
+                    world.SetCustomFilterCallback({}); // destroyed itself under it
+                    refused = "accepted";
+                }
+                catch (const InvalidArgument& error)
+                {
+                    refused = error.what();
+                }
+                CHECK_THROWS_WITH(world.CreateBody({}),
+                                  Catch::Contains("(from the custom filter)"));
+            }
+            return !padding.empty();
+        });
+    for (int i = 0; i < 120 && refused.empty(); ++i)
+    {
+        world.Step(Real(1) / 60);
+    }
+    CHECK_THAT(refused, Catch::StartsWith("World::SetCustomFilterCallback: called during "
+                                          "World::Step (from the custom filter)"));
+    world.Step(Real(1) / 60);
 }

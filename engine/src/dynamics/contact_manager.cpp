@@ -28,10 +28,15 @@ bool IsSwept(const WorldState& world, const Contact& contact)
 }
 
 /// The user's filter (World::SetCustomFilterCallback), asked after the built-in rules.
-bool CustomFilterAllows(const WorldState& world, std::int32_t a, std::int32_t b)
+bool CustomFilterAllows(WorldState& world, std::int32_t a, std::int32_t b)
 {
-    return !world.customFilter || world.customFilter(ShapeId{a, world.shapes[a].generation},
-                                                     ShapeId{b, world.shapes[b].generation});
+    if (!world.customFilter)
+    {
+        return true;
+    }
+    const InUserCallback inside(world, "the custom filter");
+    return world.customFilter(ShapeId{a, world.shapes[a].generation},
+                              ShapeId{b, world.shapes[b].generation});
 }
 
 /// Collide's recycling (CollisionPolicy::recycleDistance): may this touching contact keep its

@@ -96,6 +96,7 @@ void RunPreSolve(WorldState& world, std::int32_t contactIndex)
     info.manifold = &contact.manifold;
     info.worldManifold.Initialize(contact.manifold, bodyA.xf, contact.radiusA, bodyB.xf,
                                   contact.radiusB);
+    const InUserCallback inside(world, "the pre-solve callback");
     if (!world.preSolve(info))
     {
         contact.flags |= Contact::Disabled;

@@ -98,11 +98,7 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
         throw InvalidArgument("World::RestoreSnapshot: the snapshot is empty");
     }
     detail::WorldState& world = State();
-    if (world.stepping)
-    {
-        throw InvalidArgument("World::RestoreSnapshot: called during World::Step (from the "
-                              "pre-solve callback); the callback must not change the world");
-    }
+    detail::RequireNotStepping(world, "World::RestoreSnapshot");
     // Configuration, not state: the current callbacks and task system stay.
     PreSolveCallback preSolve = std::move(world.preSolve);
     CustomFilterCallback customFilter = std::move(world.customFilter);
@@ -112,6 +108,7 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
     world.customFilter = std::move(customFilter);
     world.tasks = tasks;
     world.stepping = false; // a snapshot saved from the callback was saved mid-step
+    world.callback = nullptr;
 }
 
 } // namespace meff

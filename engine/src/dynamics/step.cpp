@@ -98,11 +98,7 @@ void World::Step(Real dt)
     {
         throw InvalidArgument("World::Step: dt must be finite and > 0, got " + std::to_string(dt));
     }
-    if (world.stepping)
-    {
-        throw InvalidArgument("World::Step: called during World::Step (from the pre-solve "
-                              "callback); the callback must not change the world");
-    }
+    RequireNotStepping(world, "World::Step");
     if (world.failed)
     {
         throw Error("World::Step: an earlier step failed (a non-finite state, or an exception "

@@ -309,19 +309,17 @@ namespace
                           "was moved to, or assign a new one to it");
 }
 
-/// Calls that change what a step is walking (bodies, shapes, joints, contacts) are refused
-/// while it walks them: from the pre-solve callback.
-void RequireNotStepping(const WorldState& world, const char* call)
+} // namespace
+
+void detail::RequireNotStepping(const WorldState& world, const char* call)
 {
-    if (world.stepping)
+    if (world.stepping || world.callback != nullptr)
     {
-        throw InvalidArgument(std::string(call) +
-                              ": called during World::Step (from the pre-solve callback); the "
-                              "callback must not change the world");
+        throw InvalidArgument(std::string(call) + ": called during World::Step (from " +
+                              (world.callback != nullptr ? world.callback : "a callback") +
+                              "); the callback must not change the world");
     }
 }
-
-} // namespace
 
 WorldState& World::State()
 {
@@ -532,6 +530,7 @@ void World::SetTransform(BodyId id, Vec2 position, Real angle)
 
 void World::SetLinearVelocity(BodyId id, Vec2 v)
 {
+    RequireNotStepping(State(), "World::SetLinearVelocity");
     Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(v, "World::SetLinearVelocity: v");
     if (body.type == BodyType::Static)
@@ -547,6 +546,7 @@ void World::SetLinearVelocity(BodyId id, Vec2 v)
 
 void World::SetAngularVelocity(BodyId id, Real w)
 {
+    RequireNotStepping(State(), "World::SetAngularVelocity");
     Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(w, "World::SetAngularVelocity: w");
     if (body.type == BodyType::Static)
@@ -582,6 +582,7 @@ bool TakesLoad(Body& body, bool wake)
 
 void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake)
 {
+    RequireNotStepping(State(), "World::ApplyForce");
     Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(force, "World::ApplyForce: force");
     RequireFinite(worldPoint, "World::ApplyForce: point");
@@ -594,6 +595,7 @@ void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake)
 
 void World::ApplyForceToCenter(BodyId id, Vec2 force, bool wake)
 {
+    RequireNotStepping(State(), "World::ApplyForceToCenter");
     Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(force, "World::ApplyForceToCenter: force");
     if (TakesLoad(body, wake))
@@ -604,6 +606,7 @@ void World::ApplyForceToCenter(BodyId id, Vec2 force, bool wake)
 
 void World::ApplyTorque(BodyId id, Real torque, bool wake)
 {
+    RequireNotStepping(State(), "World::ApplyTorque");
     Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(torque, "World::ApplyTorque: torque");
     if (TakesLoad(body, wake))
@@ -614,6 +617,7 @@ void World::ApplyTorque(BodyId id, Real torque, bool wake)
 
 void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake)
 {
+    RequireNotStepping(State(), "World::ApplyLinearImpulse");
     Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(impulse, "World::ApplyLinearImpulse: impulse");
     RequireFinite(worldPoint, "World::ApplyLinearImpulse: point");
@@ -626,6 +630,7 @@ void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wa
 
 void World::ApplyAngularImpulse(BodyId id, Real impulse, bool wake)
 {
+    RequireNotStepping(State(), "World::ApplyAngularImpulse");
     Body& body = Resolve(State().bodies, id, "body");
     RequireFinite(impulse, "World::ApplyAngularImpulse: impulse");
     if (TakesLoad(body, wake))
@@ -641,6 +646,7 @@ bool World::IsAwake(BodyId id) const
 
 void World::SetAwake(BodyId id, bool awake)
 {
+    RequireNotStepping(State(), "World::SetAwake");
     Body& body = Resolve(State().bodies, id, "body");
     if (awake)
     {
@@ -659,6 +665,7 @@ bool World::IsSleepingAllowed(BodyId id) const
 
 void World::SetSleepingAllowed(BodyId id, bool allowed)
 {
+    RequireNotStepping(State(), "World::SetSleepingAllowed");
     Body& body = Resolve(State().bodies, id, "body");
     body.allowSleep = allowed;
     if (!allowed)
@@ -1063,6 +1070,7 @@ JointId World::CreateJoint(const MouseJointDef& def)
 
 void World::SetMouseTarget(JointId id, Vec2 target)
 {
+    RequireNotStepping(State(), "World::SetMouseTarget");
     Joint& joint = Resolve(State().joints, id, "joint").joint;
     auto* mouse = std::get_if<MouseJoint>(&joint.data);
     Require(mouse != nullptr,
@@ -1088,6 +1096,7 @@ Vec2 World::GetMouseTarget(JointId id) const
 
 void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffset)
 {
+    RequireNotStepping(State(), "World::SetMotorJointOffsets");
     Joint& joint = Resolve(State().joints, id, "joint").joint;
     auto* motor = std::get_if<MotorJoint>(&joint.data);
     Require(motor != nullptr, [&]
@@ -1204,6 +1213,7 @@ std::vector<JointId> World::GetJoints() const
 
 void World::SetJointMotorSpeed(JointId id, Real speed)
 {
+    RequireNotStepping(State(), "World::SetJointMotorSpeed");
     Joint& joint = Resolve(State().joints, id, "joint").joint;
     RequireFinite(speed, "World::SetJointMotorSpeed: speed");
     Real* motorSpeed = nullptr;
@@ -1258,6 +1268,7 @@ auto SpringOf(JointT& joint, const char* caller)
 
 void World::SetJointSpring(JointId id, const JointSpring& spring)
 {
+    RequireNotStepping(State(), "World::SetJointSpring");
     Joint& joint = Resolve(State().joints, id, "joint").joint;
     auto [enable, hertz, dampingRatio, target] = SpringOf(joint, "SetJointSpring");
     RequireNonNegative(spring.hertz, "World::SetJointSpring: hertz");
@@ -1472,6 +1483,7 @@ const SolverSettings& World::GetSolverSettings() const
 }
 void World::SetSolverSettings(const SolverSettings& settings)
 {
+    RequireNotStepping(State(), "World::SetSolverSettings");
     Require(settings.velocityIterations >= 1,
             [&]
             {
@@ -1506,6 +1518,7 @@ Vec2 World::GetGravity() const
 }
 void World::SetGravity(Vec2 gravity)
 {
+    RequireNotStepping(State(), "World::SetGravity");
     RequireFinite(gravity, "World::SetGravity: gravity");
     State().gravity = gravity;
 }
@@ -1519,6 +1532,7 @@ bool World::GetContinuous() const
 }
 void World::SetContinuous(bool continuous)
 {
+    RequireNotStepping(State(), "World::SetContinuous");
     State().continuous = continuous;
 }
 bool World::GetAllowSleeping() const
@@ -1527,6 +1541,7 @@ bool World::GetAllowSleeping() const
 }
 void World::SetAllowSleeping(bool allow)
 {
+    RequireNotStepping(State(), "World::SetAllowSleeping");
     WorldState& world = State();
     if (allow == world.allowSleep)
     {
@@ -1544,22 +1559,20 @@ void World::SetAllowSleeping(bool allow)
 
 void World::SetPreSolveCallback(PreSolveCallback callback)
 {
+    RequireNotStepping(State(), "World::SetPreSolveCallback");
     State().preSolve = std::move(callback);
 }
 
 void World::SetCustomFilterCallback(CustomFilterCallback callback)
 {
+    RequireNotStepping(State(), "World::SetCustomFilterCallback");
     State().customFilter = std::move(callback);
 }
 
 void World::SetTaskSystem(TaskSystem* tasks)
 {
     WorldState& world = State();
-    if (world.stepping)
-    {
-        throw InvalidArgument("World::SetTaskSystem: called during World::Step (from a "
-                              "callback); the callback must not change the world");
-    }
+    RequireNotStepping(world, "World::SetTaskSystem");
     if (tasks != nullptr && tasks->ThreadCount() < 1)
     {
         throw InvalidArgument("World::SetTaskSystem: ThreadCount() is " +

@@ -112,6 +112,33 @@ struct WorldState
     /// half done); stepping is refused until RestoreSnapshot.
     bool failed = false;
     bool stepping = false; ///< inside World::Step: the world must not be changed
+    /// The user's callback running now ("the pre-solve callback", "the custom filter"), or
+    /// null: the world must not be changed either, and a refusal names it.
+    const char* callback = nullptr;
+};
+
+/// Every call that changes the world (bodies, shapes, joints, settings, the callbacks and
+/// threads themselves, a snapshot's restore, Step) is refused while a step walks it: from the
+/// pre-solve callback or the custom filter, whose messages name it. A callback that replaced
+/// itself was destroyed while it ran. Throws InvalidArgument "CALL: called during World::Step
+/// (from CALLBACK); ...".
+void RequireNotStepping(const WorldState& world, const char* call);
+
+/// Marks `world` as inside the user's callback `name` for its lifetime (WorldState::callback).
+class InUserCallback
+{
+  public:
+    InUserCallback(WorldState& world, const char* name) : m_world(world), m_outer(world.callback)
+    {
+        world.callback = name;
+    }
+    ~InUserCallback() { m_world.callback = m_outer; }
+    InUserCallback(const InUserCallback&) = delete;
+    InUserCallback& operator=(const InUserCallback&) = delete;
+
+  private:
+    WorldState& m_world;
+    const char* m_outer;
 };
 
 /// What a solver back end sees of the world (solvers/solver.h).
