@@ -121,6 +121,41 @@ def case_umask_jobs():
              {oct(mode): names[:5] for mode, names in modes.items()})
 
 
+# --- finding 6: render walks its frames, no list of them ------------------------------------
+
+
+def case_render_frame_count():
+    """--frames 2147483647 (the largest) at 16x16: frame 0 is written at once, with a few MiB,
+    instead of a list of every frame index (8.6 GB before frame 0, and frames / every + 1
+    overflowed an int)."""
+    frames = os.path.join(WORK, "frames")
+    process = subprocess.Popen([MEFF, "render", ROD, "--out", frames, "--frames", "2147483647",
+                                "--size", "16x16", "--jobs", "1"], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    written = lambda: [n for n in os.listdir(frames) if n.endswith(".png")] \
+        if os.path.isdir(frames) else []
+    while len(written()) < 3 and time.time() < deadline and process.poll() is None:
+        time.sleep(0.05)
+    peak = 0
+    if process.poll() is None:
+        with open("/proc/%d/status" % process.pid) as status_file:
+            for line in status_file:
+                if line.startswith("VmHWM:"):
+                    peak = int(line.split()[1]) / 1024.0
+    process.send_signal(signal.SIGTERM)
+    _, stderr = process.communicate(timeout=60)
+    print("frames written: %d, peak %.0f MiB, stderr: %r" % (len(written()), peak, stderr[:400]))
+    if len(written()) < 3:
+        fail("no frames written: %r" % stderr[:2000])
+    # OSMesa, the scene and a 16x16 frame take tens of MiB; a list of 2^31 ints, 8 GiB. 512 MiB
+    # leaves room for AddressSanitizer's shadow and allocator.
+    if peak > 512:
+        fail("peak memory %.0f MiB before the third frame" % peak)
+    if process.returncode != -signal.SIGTERM:
+        fail("status %d after SIGTERM" % process.returncode)
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)

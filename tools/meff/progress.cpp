@@ -9,7 +9,7 @@
 namespace meff::cli
 {
 
-Progress::Progress(std::string label, int total, std::string unit)
+Progress::Progress(std::string label, long long total, std::string unit)
     : m_label(std::move(label)), m_total(total), m_unit(std::move(unit)),
       m_enabled(::isatty(STDERR_FILENO) == 1), m_start(std::chrono::steady_clock::now())
 {
@@ -20,14 +20,14 @@ Progress::~Progress()
     Finish();
 }
 
-void Progress::Update(int done)
+void Progress::Update(long long done)
 {
     if (!m_enabled)
     {
         return;
     }
     constexpr int kWidth = 30;
-    const int filled = m_total > 0 ? int((long long)done * kWidth / m_total) : kWidth;
+    const int filled = m_total > 0 ? int(done * kWidth / m_total) : kWidth;
     std::string bar(std::size_t(filled), '#');
     bar.resize(kWidth, '.');
     const double elapsed =
@@ -35,10 +35,10 @@ void Progress::Update(int done)
     std::string timing = FormatDuration(elapsed) + " elapsed";
     if (done > 0 && done < m_total)
     {
-        timing += ", ~" + FormatDuration(elapsed / done * (m_total - done)) + " left";
+        timing += ", ~" + FormatDuration(elapsed / double(done) * double(m_total - done)) + " left";
     }
     // \033[K erases what a longer earlier line left to the right.
-    std::fprintf(stderr, "\r%s [%s] %d/%d %s, %s\033[K", m_label.c_str(), bar.c_str(), done,
+    std::fprintf(stderr, "\r%s [%s] %lld/%lld %s, %s\033[K", m_label.c_str(), bar.c_str(), done,
                  m_total, m_unit.c_str(), timing.c_str());
     std::fflush(stderr);
     m_shown = true;

@@ -12,14 +12,15 @@ namespace meff::cli
 class Progress
 {
   public:
-    /// `unit` names what is counted ("scenes", "frames", "settings").
-    Progress(std::string label, int total, std::string unit);
+    /// `unit` names what is counted ("scenes", "frames", "settings"). 64-bit: a render may
+    /// count 2^31 frames.
+    Progress(std::string label, long long total, std::string unit);
     ~Progress();
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
 
     /// Redraws the line with `done` of the total finished.
-    void Update(int done);
+    void Update(long long done);
     /// Erases the line, so that the caller can print a line of its own; the next Update
     /// draws it again.
     void Clear();
@@ -30,7 +31,7 @@ class Progress
 
   private:
     std::string m_label;
-    int m_total = 0;
+    long long m_total = 0;
     std::string m_unit;
     bool m_enabled = false;
     bool m_shown = false;

@@ -404,17 +404,17 @@ bool ParseFrameWindow(const std::string& text, int& first, int& last)
     return true;
 }
 
-std::string FramePath(const std::filesystem::path& directory, int index,
+std::string FramePath(const std::filesystem::path& directory, long long index,
                       const char* extension = "png")
 {
     char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.%s", index, extension);
+    std::snprintf(name, sizeof name, "frame_%05lld.%s", index, extension);
     return (directory / name).string();
 }
 
 /// Assembles the frames with ffmpeg into a temporary file beside `output`, renamed into place
 /// only when ffmpeg succeeded.
-bool Assemble(const std::string& ffmpeg, const std::filesystem::path& directory, int count,
+bool Assemble(const std::string& ffmpeg, const std::filesystem::path& directory, long long count,
               double framesPerSecond, const std::string& output, bool gif)
 {
     const std::filesystem::path destination(output);
@@ -668,33 +668,31 @@ int Run(const RenderOptions& options)
         frameOptions.overlayLegend.push_back({kBox2DColor, "Box2D 2.4.1"});
     }
 
-    // The frames to draw: every K-th, this shard's share of them (by their number).
-    const int count = frames / options.every + 1;
-    std::vector<int> mine;
-    for (int k = 0; k < count; ++k)
-    {
-        if (InShard(std::size_t(k), options.shard))
-        {
-            mine.push_back(k);
-        }
-    }
+    // The frames to draw: every K-th (number k = 0 to count - 1), this shard's share of them
+    // (k = index - 1 mod N), walked as they are drawn. No list of them is made (one of every
+    // number took 4 GB before frame 0 at --frames 1000000000), and the counts are 64-bit
+    // (frames / every + 1 overflowed an int at the largest --frames).
+    const long long count = (long long)frames / options.every + 1;
+    const long long first = options.shard.index - 1;
+    const long long stride = options.shard.count;
+    const long long mine = count > first ? (count - first - 1) / stride + 1 : 0;
     const Real dt = Real(scene->world.dt);
-    Progress progress("rendering " + scene->name, int(mine.size()), "frames");
-    int written = 0;
+    Progress progress("rendering " + scene->name, mine, "frames");
+    long long written = 0;
     // One thread steps the world and records a batch of frames; the batch is then drawn,
     // encoded and written on `jobs` threads. Every frame goes through the same recording, so
     // the files are the same for every --jobs.
     struct Pending
     {
-        int index = 0; ///< the file's number
+        long long index = 0; ///< the file's number
         render::DrawList drawing;
         std::string caption;
         render::Camera camera;
     };
     const std::size_t batchSize = std::size_t(std::max(1, 2 * jobs));
     std::vector<Pending> batch;
-    int stepped = 0;
-    const auto stepTo = [&](int frame)
+    long long stepped = 0;
+    const auto stepTo = [&](long long frame)
     {
         for (; stepped < frame; ++stepped)
         {
@@ -744,9 +742,9 @@ int Run(const RenderOptions& options)
     };
     try
     {
-        for (const int k : mine)
+        for (long long k = first; k < count; k += stride)
         {
-            const int frame = k * options.every;
+            const long long frame = k * options.every;
             stepTo(frame);
             Pending& pending = batch.emplace_back();
             pending.index = k;
@@ -757,8 +755,8 @@ int Run(const RenderOptions& options)
                 DrawBox2D(*scene, *mirror, pending.drawing);
             }
             char caption[256];
-            std::snprintf(caption, sizeof caption, "%s  frame %d  t = %.3f s", scene->name.c_str(),
-                          frame, frame * scene->world.dt);
+            std::snprintf(caption, sizeof caption, "%s  frame %lld  t = %.3f s",
+                          scene->name.c_str(), frame, double(frame) * scene->world.dt);
             if (!options.noCaption)
             {
                 pending.caption = caption;
@@ -775,7 +773,7 @@ int Run(const RenderOptions& options)
         drawBatch(); // the frames recorded before the failure
         progress.Finish();
         std::fprintf(stderr,
-                     "%s: simulation failed at step %" PRIu64 ": %s; %d frames were written\n",
+                     "%s: simulation failed at step %" PRIu64 ": %s; %lld frames were written\n",
                      options.scenePath.c_str(), error.step, error.what(), written);
         return kExitRunFailed;
     }
@@ -798,7 +796,7 @@ int Run(const RenderOptions& options)
 
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %d frame%s (%dx%d, %dx supersampled) written to %s in %.3f s%s%s\n",
+    std::printf("%s: %lld frame%s (%dx%d, %dx supersampled) written to %s in %.3f s%s%s\n",
                 scene->name.c_str(), written, written == 1 ? "" : "s", width, height,
                 renderers.Supersample(), directory.string().c_str(), seconds,
                 moviePath.empty() ? "" : "; ", moviePath.c_str());
