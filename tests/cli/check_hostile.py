@@ -156,6 +156,93 @@ def case_render_frame_count():
         fail("status %d after SIGTERM" % process.returncode)
 
 
+# --- finding 7: signals during a write ------------------------------------------------------
+
+
+def case_file_size_limit():
+    """A file-size limit (ulimit -f) reached while writing: one line naming the file and the
+    reason, exit status 1, no temporary file left (SIGXFSZ killed the process silently and left
+    a hidden .t.csv.XXXXXX)."""
+    output = os.path.join(WORK, "t.csv")
+    status, _, stderr = run(["run", ROD, "--frames", "10000", "--trajectory", output],
+                            limits={resource.RLIMIT_FSIZE: 64 * 1024})
+    expect_one_line_error(status, stderr, 1, output, "File too large")
+    if leftovers() or os.path.exists(output):
+        fail("left behind: %s" % os.listdir(WORK))
+
+
+def interrupted(signal_number, name):
+    """A long run writing three outputs, stopped by `signal_number` once its temporaries exist:
+    one line on stderr naming the signal, the signal ends the process (the shell sees 128 + its
+    number), and no temporary file is left."""
+    outputs = [os.path.join(WORK, stem + ".csv") for stem in ("t", "c", "j")]
+    process = subprocess.Popen([MEFF, "run", ROD, "--frames", "100000000", "--trajectory",
+                                outputs[0], "--contacts", outputs[1], "--joints", outputs[2]],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_CORE,
+                                                                     (0, 0)))
+    deadline = time.time() + 60
+    while len(leftovers()) < 3 and time.time() < deadline and process.poll() is None:
+        time.sleep(0.05)
+    if len(leftovers()) < 3:
+        process.kill()
+        fail("the run did not start writing its three outputs")
+    time.sleep(0.3)  # well into the run
+    process.send_signal(signal_number)
+    _, stderr = process.communicate(timeout=60)
+    print("status %d, stderr %r, left: %s" % (process.returncode, stderr, os.listdir(WORK)))
+    if process.returncode != -signal_number:
+        fail("status %d: the run should end by the signal (%d)" % (process.returncode,
+                                                                   -signal_number))
+    if stderr.count("\n") != 1 or name not in stderr or "removed" not in stderr:
+        fail("expected one line naming %s on stderr, got %r" % (name, stderr))
+    if leftovers() or any(os.path.exists(path) for path in outputs):
+        fail("left behind: %s" % os.listdir(WORK))
+
+
+def case_sigterm_said():
+    interrupted(signal.SIGTERM, "SIGTERM")
+
+
+def case_sigquit():
+    interrupted(signal.SIGQUIT, "SIGQUIT")
+
+
+def case_sighup():
+    interrupted(signal.SIGHUP, "SIGHUP")
+
+
+def case_sigxcpu():
+    interrupted(signal.SIGXCPU, "SIGXCPU")
+
+
+def case_stale_temporary():
+    """A temporary file left by a run killed with SIGKILL (which no handler sees) is named
+    recognisably, with its machine and process, and removed by the next run writing into that
+    folder once that process is gone; a live process's is kept."""
+    output = os.path.join(WORK, "t.csv")
+    process = subprocess.Popen([MEFF, "run", ROD, "--frames", "100000000", "--trajectory",
+                                output], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    deadline = time.time() + 60
+    while not leftovers() and time.time() < deadline and process.poll() is None:
+        time.sleep(0.05)
+    process.kill()
+    process.wait()
+    stale = leftovers()
+    print("left by kill -9: %s" % stale)
+    if len(stale) != 1 or not stale[0].startswith(".t.csv.meff-%s-%d." % (os.uname().nodename,
+                                                                          process.pid)):
+        fail("expected one .t.csv.meff-HOST-PID.XXXXXX, got %s" % stale)
+    # One of a process that still runs (this script) stays.
+    live = ".c.csv.meff-%s-%d.abcdef" % (os.uname().nodename, os.getpid())
+    open(os.path.join(WORK, live), "w").close()
+    status, _, stderr = run(["run", ROD, "--frames", "2", "--trajectory", output])
+    if status != 0:
+        fail("the next run failed: %r" % stderr)
+    if leftovers() != [live]:
+        fail("expected only the live process's temporary left, got %s" % leftovers())
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)

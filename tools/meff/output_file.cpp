@@ -5,6 +5,8 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 
 #include <fcntl.h>
@@ -36,9 +38,29 @@ std::runtime_error WriteError(const std::string& path, int error)
 constexpr int kTemporarySlots = 64;
 std::atomic<const char*> g_temporaries[kTemporarySlots];
 static_assert(std::atomic<const char*>::is_always_lock_free);
-constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
-extern "C" void RemoveTemporariesAndDie(int signal)
+/// The signals that end the process by default and may come in the middle of a write, each
+/// with the line said on stderr (fixed text: a handler may not format). SIGXFSZ is not among
+/// them: it is ignored, so that a write past the file-size limit fails with EFBIG and is said
+/// like any other write error (exit status 1).
+struct CleanupSignal
+{
+    int signal;
+    const char* line;
+};
+constexpr CleanupSignal kCleanupSignals[] = {
+    {SIGINT, "meff: interrupted (SIGINT); unfinished output files removed\n"},
+    {SIGTERM, "meff: terminated (SIGTERM); unfinished output files removed\n"},
+    {SIGHUP, "meff: hung up (SIGHUP); unfinished output files removed\n"},
+    {SIGQUIT, "meff: quit (SIGQUIT); unfinished output files removed\n"},
+    {SIGXCPU, "meff: CPU time limit exceeded (SIGXCPU); unfinished output files removed\n"},
+    {SIGALRM, "meff: alarm (SIGALRM); unfinished output files removed\n"},
+    {SIGUSR1, "meff: SIGUSR1; unfinished output files removed\n"},
+    {SIGUSR2, "meff: SIGUSR2; unfinished output files removed\n"},
+};
+
+/// Async-signal-safe: unlink and atomic loads only.
+void RemoveTemporaries()
 {
     for (std::atomic<const char*>& slot : g_temporaries)
     {
@@ -47,9 +69,94 @@ extern "C" void RemoveTemporariesAndDie(int signal)
             ::unlink(path);
         }
     }
+}
+
+extern "C" void RemoveTemporariesAndDie(int signal)
+{
+    const int savedErrno = errno;
+    RemoveTemporaries();
+    for (const CleanupSignal& cleanup : kCleanupSignals)
+    {
+        if (cleanup.signal == signal)
+        {
+            // A progress line may be open on a terminal: start on a line of our own.
+            const char* line = cleanup.line;
+            [[maybe_unused]] const ssize_t written =
+                ::write(STDERR_FILENO, line, std::strlen(line));
+        }
+    }
+    errno = savedErrno;
     // SA_RESETHAND restored the default action: end the process as the signal would have (the
     // shell then sees 128 + signal, and a Ctrl-C stops a script that ran meff).
     ::raise(signal);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Temporary files' names. ".NAME.meff-HOST-PID.XXXXXX" beside NAME: hidden, recognisably meff's,
+// and saying which process wrote it, so that one left by a process that can no longer remove
+// it (kill -9, a crash, a power cut) is removed by the next run writing into that folder, and
+// only then: never the file of a live run, nor of another machine sharing the folder.
+
+/// ".meff-HOST-" of this machine.
+const std::string& TemporaryMark()
+{
+    static const std::string mark = []
+    {
+        char host[256] = {};
+        if (::gethostname(host, sizeof host - 1) != 0)
+        {
+            host[0] = '\0';
+        }
+        return ".meff-" + std::string(host) + "-";
+    }();
+    return mark;
+}
+
+std::string TemporaryTemplate(const fs::path& destination)
+{
+    return (destination.parent_path() / ("." + destination.filename().string() + TemporaryMark() +
+                                         std::to_string(::getpid()) + ".XXXXXX"))
+        .string();
+}
+
+/// The process that wrote temporary file `name` of this machine, or -1 when `name` is not one.
+pid_t WriterOf(const std::string& name)
+{
+    const std::size_t mark = name.rfind(TemporaryMark());
+    if (name.empty() || name[0] != '.' || mark == std::string::npos)
+    {
+        return -1;
+    }
+    const std::size_t digits = mark + TemporaryMark().size();
+    const std::size_t dot = name.find('.', digits);
+    if (dot == std::string::npos || dot == digits || dot - digits > 9 || name.size() != dot + 7 ||
+        name.find_first_not_of("0123456789", digits) != dot)
+    {
+        return -1;
+    }
+    return pid_t(std::stol(name.substr(digits, dot - digits)));
+}
+
+/// Removes, once per folder and process, the temporary files that processes of this machine
+/// which no longer run left in `folder`.
+void RemoveStaleTemporaries(const fs::path& folder)
+{
+    static std::mutex mutex;
+    static std::set<std::string> cleaned;
+    const std::lock_guard lock(mutex);
+    if (!cleaned.insert(folder.string()).second)
+    {
+        return;
+    }
+    std::error_code error;
+    for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error))
+    {
+        const pid_t writer = WriterOf(it->path().filename().string());
+        if (writer > 0 && writer != ::getpid() && ::kill(writer, 0) != 0 && errno == ESRCH)
+        {
+            ::unlink(it->path().c_str());
+        }
+    }
 }
 
 /// Blocks the cleanup signals while a temporary file is created and registered, so that no
@@ -61,9 +168,9 @@ class CleanupSignalsBlocked
     {
         sigset_t set;
         sigemptyset(&set);
-        for (const int signal : kCleanupSignals)
+        for (const CleanupSignal& cleanup : kCleanupSignals)
         {
-            sigaddset(&set, signal);
+            sigaddset(&set, cleanup.signal);
         }
         ::sigprocmask(SIG_BLOCK, &set, &m_previous);
     }
@@ -256,9 +363,9 @@ OutputFile::OutputFile(std::string path) : m_path(std::move(path))
 
     m_destination = destination.path;
     const fs::path target(m_destination);
+    RemoveStaleTemporaries(target.parent_path());
     // Same directory as the destination, so that the final rename is atomic.
-    std::string temporary =
-        (target.parent_path() / ("." + target.filename().string() + ".XXXXXX")).string();
+    std::string temporary = TemporaryTemplate(target);
     int descriptor = -1;
     {
         const CleanupSignalsBlocked blocked;
@@ -307,16 +414,19 @@ void OutputFile::CheckWrites()
 void OutputFile::Commit()
 {
     const bool writeFailed = std::ferror(m_stream) != 0;
-    int closeResult = 0;
-    if (m_ownsStream)
+    int closeResult = std::fflush(m_stream);
+    // Whole or not at all after a crash of the machine too: the data is on the disk before the
+    // rename makes it the file (and the rename itself, by the folder's fsync below).
+    if (closeResult == 0 && !m_writeThrough && ::fsync(::fileno(m_stream)) != 0)
     {
-        closeResult = std::fclose(m_stream);
+        closeResult = -1;
     }
-    else
+    int error = errno;
+    if (m_ownsStream && std::fclose(m_stream) != 0 && closeResult == 0)
     {
-        closeResult = std::fflush(m_stream);
+        closeResult = -1;
+        error = errno;
     }
-    const int error = errno;
     m_stream = nullptr;
     if (writeFailed || closeResult != 0)
     {
@@ -332,6 +442,15 @@ void OutputFile::Commit()
         const int renameError = errno;
         Discard();
         throw WriteError(m_path, renameError);
+    }
+    // The rename made durable. A folder that cannot be synced (some file systems refuse it)
+    // still has the whole file: the rename is done either way.
+    if (const int folder = ::open(fs::path(m_destination).parent_path().c_str(),
+                                  O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        folder >= 0)
+    {
+        ::fsync(folder);
+        ::close(folder);
     }
     UnregisterTemporary(m_registration);
     m_registration = -1;
@@ -380,21 +499,24 @@ void RemoveTemporariesOnSignal()
     action.sa_handler = RemoveTemporariesAndDie;
     action.sa_flags = SA_RESETHAND;
     sigemptyset(&action.sa_mask);
-    for (const int signal : kCleanupSignals)
+    for (const CleanupSignal& cleanup : kCleanupSignals)
     {
-        sigaddset(&action.sa_mask, signal);
+        sigaddset(&action.sa_mask, cleanup.signal);
     }
-    for (const int signal : kCleanupSignals)
+    for (const CleanupSignal& cleanup : kCleanupSignals)
     {
         struct sigaction previous;
         // A signal ignored by whoever started us (nohup) stays ignored.
-        if (::sigaction(signal, nullptr, &previous) == 0 && previous.sa_handler == SIG_IGN)
+        if (::sigaction(cleanup.signal, nullptr, &previous) == 0 && previous.sa_handler == SIG_IGN)
         {
             continue;
         }
-        ::sigaction(signal, &action, nullptr);
+        ::sigaction(cleanup.signal, &action, nullptr);
     }
     std::signal(SIGPIPE, SIG_IGN);
+    // A write past the file-size limit (ulimit -f) then fails with EFBIG, said in words, instead
+    // of the signal killing the process with nothing said and the temporary file left.
+    std::signal(SIGXFSZ, SIG_IGN);
 }
 
 int RegisterTemporary(const std::string& path)

@@ -9,11 +9,14 @@ namespace meff::cli
 
 /// An output named on the command line.
 ///
-/// A regular file (or a new one) is written to a hidden temporary file in its directory and
-/// renamed over it on Commit(), so a reader never sees half a file and a failed or interrupted
-/// run leaves no file behind: the temporary is removed if the object is destroyed uncommitted,
-/// and by RemoveTemporariesOnSignal's handler if the process is interrupted. A symbolic link is
-/// followed: its final target is replaced, the link itself kept.
+/// A regular file (or a new one) is written to a hidden temporary file in its directory
+/// (".NAME.meff-HOST-PID.XXXXXX") and renamed over it on Commit(), so a reader never sees half
+/// a file and a failed or interrupted run leaves no file behind: the temporary is removed if the
+/// object is destroyed uncommitted, and by RemoveTemporariesOnSignal's handler if the process
+/// is interrupted. One left by a process that could not remove it (kill -9) is removed by the
+/// next OutputFile in that folder, once that process no longer runs. The file is fsynced before
+/// the rename and its folder after, so that it is whole or absent after a crash of the machine
+/// too. A symbolic link is followed: its final target is replaced, the link itself kept.
 ///
 /// Anything else is written through, in place, as it is: "-" (standard output), a character or
 /// block device (/dev/null, /dev/full), a FIFO, and an open file reached through /proc or
@@ -67,9 +70,11 @@ class OutputFile
 /// throws: a path that cannot be resolved is compared as written.
 bool SameOutput(const std::string& a, const std::string& b);
 
-/// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove every temporary file of an
-/// uncommitted OutputFile (and of RegisterTemporary) and then let the signal end the process as
-/// it would have. Also ignores SIGPIPE, so that a closed pipe is a write error said in words.
+/// Installs handlers for SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGXCPU, SIGALRM, SIGUSR1 and SIGUSR2
+/// that remove every temporary file of an uncommitted OutputFile (and of RegisterTemporary),
+/// say so in one line on stderr, and then let the signal end the process as it would have (the
+/// shell sees 128 + the signal's number). Also ignores SIGPIPE and SIGXFSZ, so that a closed
+/// pipe and a file-size limit are write errors said in words (exit status 1).
 void RemoveTemporariesOnSignal();
 
 /// Registers another temporary path for removal by the signal handler (a file a child process
