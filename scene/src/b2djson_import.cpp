@@ -1540,14 +1540,13 @@ std::vector<std::string> InLevelTerms(const Converter& converter, const SceneErr
 
 /// One warning for bodies whose level set their mass by hand (massData-mass differs from what
 /// their fixtures' densities give): meff computes mass from densities only.
-void CheckHandMass(Converter& converter, const Scene& scene,
+void CheckHandMass(Converter& converter, const BuiltScene& built, const Scene& scene,
                    const std::vector<std::pair<std::size_t, double>>& handMass)
 {
     if (handMass.empty())
     {
         return;
     }
-    BuiltScene built = BuildWorld(scene);
     std::vector<std::string> differing;
     for (const auto& [index, mass] : handMass)
     {
@@ -1663,11 +1662,14 @@ bool LooksLikeB2dJson(std::string_view text)
     return (valid || keys.tooDeep) && keys.rootIsObject && !keys.meffScene && keys.b2dJsonKey;
 }
 
-LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath)
+LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath,
+                          const SceneLimits& limits)
 {
     Converter converter(sourcePath);
     const std::optional<Json> level = scene_detail::ParseDocument(text, converter.Diag());
-    if (!level)
+    // The counts before the conversion, which takes several times the level's memory.
+    if (!level ||
+        !scene_detail::CheckCounts(*level, "body", "fixture", "joint", limits, converter.Diag()))
     {
         converter.Diag().Throw();
     }
@@ -1692,7 +1694,9 @@ LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath)
     try
     {
         loaded.scene = scene_detail::ReadSceneDocument(Json(document), sourcePath);
-        CheckHandMass(converter, loaded.scene, importer.HandMass());
+        const BuiltScene built = BuildWorld(loaded.scene);
+        scene_detail::CheckPairs(built, limits, sourcePath);
+        CheckHandMass(converter, built, loaded.scene, importer.HandMass());
     }
     catch (const SceneError& error)
     {
@@ -1703,15 +1707,15 @@ LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath)
     return loaded;
 }
 
-LoadedScene LoadSceneFile(const std::string& path, SceneFormat format)
+LoadedScene LoadSceneFile(const std::string& path, SceneFormat format, const SceneLimits& limits)
 {
-    const std::string text = scene_detail::ReadTextFile(path);
+    const std::string text = scene_detail::ReadTextFile(path, limits.fileBytes);
     if (format == SceneFormat::B2dJson || (format == SceneFormat::Auto && LooksLikeB2dJson(text)))
     {
-        return ImportB2dJson(text, path);
+        return ImportB2dJson(text, path, limits);
     }
     LoadedScene loaded;
-    loaded.scene = ParseScene(text, path);
+    loaded.scene = ParseScene(text, path, limits);
     return loaded;
 }
 

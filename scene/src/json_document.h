@@ -113,8 +113,19 @@ class ObjectReader
     std::vector<std::string> m_known;
 };
 
-/// The whole file; throws SceneError ("FILE: cannot open: REASON", "FILE: is a directory, ...").
-std::string ReadTextFile(const std::string& path);
+/// The whole file; throws SceneError ("FILE: cannot open: REASON", "FILE: is a directory, ...",
+/// "FILE: larger than 64 MiB: ..." past `maxBytes`, read no further).
+std::string ReadTextFile(const std::string& path, std::size_t maxBytes = kMaxSceneFileBytes);
+
+/// The counts of a parsed document against `limits` (SceneLimits): the lists named
+/// `bodiesKey` and `jointsKey` at the top, and the `shapesKey` lists in the bodies. Reports each
+/// one over its limit and returns false. Called before anything is read from the document.
+bool CheckCounts(const Json& document, const char* bodiesKey, const char* shapesKey,
+                 const char* jointsKey, const SceneLimits& limits, Diagnostics& diagnostics);
+
+/// The pairs of shapes a built scene starts with (SceneLimits::pairs); throws SceneError
+/// "FILE: bodies: more than N pairs ..." when over the limit. Counting stops there.
+void CheckPairs(const BuiltScene& built, const SceneLimits& limits, const std::string& sourcePath);
 
 /// Reads and checks a parsed scene document (what ParseScene does after parsing); throws
 /// SceneError. The b2dJson importer gives it the scene it converted a level to.

@@ -1489,11 +1489,12 @@ Scene ReadSceneDocument(const Json& document, const std::string& sourcePath)
 
 } // namespace scene_detail
 
-Scene ParseScene(std::string_view text, const std::string& sourcePath)
+Scene ParseScene(std::string_view text, const std::string& sourcePath, const SceneLimits& limits)
 {
     Diagnostics diagnostics(sourcePath);
     const std::optional<Json> document = scene_detail::ParseDocument(text, diagnostics);
-    if (!document)
+    if (!document ||
+        !scene_detail::CheckCounts(*document, "bodies", "shapes", "joints", limits, diagnostics))
     {
         diagnostics.Throw();
     }
@@ -1502,6 +1503,7 @@ Scene ParseScene(std::string_view text, const std::string& sourcePath)
     {
         diagnostics.Throw();
     }
+    scene_detail::CheckPairs(BuildWorld(scene), limits, sourcePath);
     scene.warnings = diagnostics.Warnings();
     return scene;
 }
@@ -1509,7 +1511,7 @@ Scene ParseScene(std::string_view text, const std::string& sourcePath)
 namespace scene_detail
 {
 
-std::string ReadTextFile(const std::string& path)
+std::string ReadTextFile(const std::string& path, std::size_t maxBytes)
 {
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
@@ -1526,8 +1528,7 @@ std::string ReadTextFile(const std::string& path)
     std::string text;
     char buffer[1 << 16];
     std::size_t count = 0;
-    while (text.size() <= kMaxSceneFileBytes &&
-           (count = std::fread(buffer, 1, sizeof buffer, file)) > 0)
+    while (text.size() <= maxBytes && (count = std::fread(buffer, 1, sizeof buffer, file)) > 0)
     {
         text.append(buffer, count);
     }
@@ -1538,19 +1539,19 @@ std::string ReadTextFile(const std::string& path)
     {
         throw SceneError({path + ": cannot read: " + std::strerror(readError)});
     }
-    if (text.size() > kMaxSceneFileBytes)
+    if (text.size() > maxBytes)
     {
-        throw SceneError({path + ": larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
-                          " MiB: not a scene file"});
+        throw SceneError({path + ": larger than " + std::to_string(maxBytes >> 20) +
+                          " MiB: not a scene file (raise the limit with --max-file-size MiB)"});
     }
     return text;
 }
 
 } // namespace scene_detail
 
-Scene LoadScene(const std::string& path)
+Scene LoadScene(const std::string& path, const SceneLimits& limits)
 {
-    return ParseScene(scene_detail::ReadTextFile(path), path);
+    return ParseScene(scene_detail::ReadTextFile(path, limits.fileBytes), path, limits);
 }
 
 } // namespace meff

@@ -6,6 +6,7 @@
 Each CASE (a function below named case_CASE) passes when the tool does what
 docs/hostile-input.md promises. WORK_DIR is emptied first and holds everything a case writes.
 """
+import json
 import os
 import resource
 import shutil
@@ -241,6 +242,73 @@ def case_stale_temporary():
         fail("the next run failed: %r" % stderr)
     if leftovers() != [live]:
         fail("expected only the live process's temporary left, got %s" % leftovers())
+
+
+# --- finding 8: limits at scale ------------------------------------------------------------
+
+
+def write_json(path, document):
+    with open(path, "w") as stream:
+        json.dump(document, stream, separators=(",", ":"))
+
+
+def circles_at_one_point(count):
+    """`count` dynamic circles at the origin: count * (count - 1) / 2 overlapping pairs."""
+    return {"meff_scene": 1, "world": {"frames": 2},
+            "bodies": [{"name": "c%d" % i, "type": "dynamic", "position": [0, 0],
+                        "shapes": [{"type": "circle", "radius": 0.5}]} for i in range(count)]}
+
+
+def b2djson_level(bodies):
+    """A b2dJson level of `bodies` small boxes in a grid, apart."""
+    return {"gravity": {"x": 0, "y": -10},
+            "body": [{"type": 2, "position": {"x": 2.0 * (i % 300), "y": 2.0 * (i // 300)},
+                      "fixture": [{"density": 1, "polygon": {"vertices": {
+                          "x": [-0.5, 0.5, 0.5, -0.5], "y": [-0.5, -0.5, 0.5, 0.5]}}}]}
+                     for i in range(bodies)]}
+
+
+def case_limits():
+    """Counts over the limits are refused before the memory for them is taken, each naming the
+    limit and the option that raises it; the option raises it."""
+    pile = os.path.join(WORK, "pile.json")
+    write_json(pile, circles_at_one_point(3000))  # 4.5 million pairs: 2.7 GB and 90 s before
+    status, _, stderr, peak = run_measured(["run", pile])
+    expect_one_line_error(status, stderr, 2, pile, "pairs of shapes overlap at the start",
+                          "--max-pairs")
+    level = os.path.join(WORK, "level.json")
+    write_json(level, b2djson_level(60000))
+    status, _, stderr, peak = run_measured(["import", level, "-o", os.path.join(WORK, "s.json")])
+    expect_one_line_error(status, stderr, 2, level + ": body: 60000 bodies, more than the limit "
+                          "of 50000 (raise it with --max-bodies)")
+    small = os.path.join(WORK, "small.json")
+    write_json(small, circles_at_one_point(30))  # 435 pairs
+    status, _, stderr = run(["run", small, "--max-pairs", "400"])
+    expect_one_line_error(status, stderr, 2, "more than 400 pairs", "--max-pairs")
+    status, _, stderr = run(["run", small, "--max-pairs", "435", "--max-bodies", "30",
+                             "--max-shapes", "30"])
+    if status != 0:
+        fail("the raised limits did not let the scene run: %r" % stderr)
+    status, _, stderr = run(["run", small, "--max-bodies", "29"])
+    expect_one_line_error(status, stderr, 2, "bodies: 30 bodies, more than the limit of 29")
+    status, _, stderr = run(["run", STACK, "--max-file-size", "0"])
+    if status != 2 or "--max-file-size" not in stderr:
+        fail("--max-file-size 0 should be refused as bad input: %r" % stderr)
+
+
+def case_out_of_memory():
+    """An allocation that fails anywhere ends the run with one line, "out of memory", exit
+    status 1, never an abort (the importer died of SIGABRT: an allocation failed while a JSON
+    copy unwound)."""
+    level = os.path.join(WORK, "level.json")
+    write_json(level, b2djson_level(40000))
+    output = os.path.join(WORK, "s.json")
+    # The import takes about 630 MB (measured, resident); 400 MB of addresses is far short.
+    status, _, stderr = run(["import", level, "-o", output],
+                            limits={resource.RLIMIT_AS: 400 * 1024 * 1024})
+    expect_one_line_error(status, stderr, 1, "out of memory")
+    if leftovers() or os.path.exists(output):
+        fail("left behind: %s" % os.listdir(WORK))
 
 
 def main():

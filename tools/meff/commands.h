@@ -61,8 +61,14 @@ Command AddImportCommand(CLI::App& parent);
 /// `meff export SCENE.json -o LEVEL.json [--hex-floats]`: a scene as a b2dJson level
 Command AddExportCommand(CLI::App& parent);
 
-/// Adds `--format auto|meff|b2djson` to a subcommand: how LoadSceneOrReport reads files.
+/// Adds `--format auto|meff|b2djson` to a subcommand: how LoadSceneOrReport reads files; and
+/// the limits' options (AddLimitOptions).
 void AddFormatOption(CLI::App* app);
+
+/// Adds `--max-bodies`, `--max-shapes`, `--max-joints`, `--max-pairs` and `--max-file-size`:
+/// the SceneLimits that LoadSceneOrReport and SceneLimitsOfOptions() give.
+void AddLimitOptions(CLI::App* app);
+const SceneLimits& SceneLimitsOfOptions();
 
 /// Loads a scene in either format (see AddFormatOption); prints what a b2dJson level loses
 /// (one warning line each) to stderr. On failure prints every problem to stderr, one per line,

@@ -49,7 +49,7 @@ int Import(const ConvertOptions& options)
     LoadedScene loaded;
     try
     {
-        loaded = LoadSceneFile(options.inputPath, SceneFormat::B2dJson);
+        loaded = LoadSceneFile(options.inputPath, SceneFormat::B2dJson, SceneLimitsOfOptions());
     }
     catch (const SceneError& error)
     {
@@ -77,7 +77,7 @@ int Export(const ConvertOptions& options)
     std::size_t joints = 0;
     try
     {
-        const Scene scene = LoadScene(options.inputPath);
+        const Scene scene = LoadScene(options.inputPath, SceneLimitsOfOptions());
         text = ExportB2dJson(scene, B2dJsonExportOptions{.hexFloats = options.hexFloats});
         bodies = scene.bodies.size();
         joints = scene.joints.size();
@@ -111,6 +111,7 @@ Command AddImportCommand(CLI::App& parent)
     app->add_option("-o,--out", options->outputPath, "The meff scene file to write")
         ->required()
         ->type_name("SCENE.json");
+    AddLimitOptions(app);
     return {app, [options] { return Import(*options); }};
 }
 
@@ -130,6 +131,7 @@ Command AddExportCommand(CLI::App& parent)
     app->add_flag("--hex-floats", options->hexFloats,
                   "Write numbers that are exact floats as b2dJson's hex strings of their bits "
                   "(default: decimal, exact)");
+    AddLimitOptions(app);
     return {app, [options] { return Export(*options); }};
 }
 

@@ -38,8 +38,10 @@ int main(int argc, char** argv)
         // --help is a "parse error" with status 0; every real one is bad input.
         return app.exit(error) == 0 ? kExitOk : kExitBadInput;
     }
-    // Ctrl-C or a kill leaves no half-written temporary file behind.
+    // Ctrl-C or a kill leaves no half-written temporary file behind, nor does running out of
+    // memory, which is said in one line.
     RemoveTemporariesOnSignal();
+    EndOnOutOfMemory();
     for (const Command& command : commands)
     {
         if (!command.app->parsed())

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <new>
 #include <set>
 #include <stdexcept>
 
@@ -517,6 +518,21 @@ void RemoveTemporariesOnSignal()
     // A write past the file-size limit (ulimit -f) then fails with EFBIG, said in words, instead
     // of the signal killing the process with nothing said and the temporary file left.
     std::signal(SIGXFSZ, SIG_IGN);
+}
+
+void EndOnOutOfMemory()
+{
+    std::set_new_handler(
+        []
+        {
+            // Called where an allocation failed: perhaps in a destructor or a noexcept
+            // function, where a std::bad_alloc would abort. Nothing here allocates.
+            RemoveTemporaries();
+            constexpr char kLine[] = "meff: out of memory\n";
+            [[maybe_unused]] const ssize_t written =
+                ::write(STDERR_FILENO, kLine, sizeof kLine - 1);
+            ::_exit(1);
+        });
 }
 
 int RegisterTemporary(const std::string& path)

@@ -77,6 +77,11 @@ bool SameOutput(const std::string& a, const std::string& b);
 /// pipe and a file-size limit are write errors said in words (exit status 1).
 void RemoveTemporariesOnSignal();
 
+/// Makes every allocation failure, anywhere in the process (a thread, a destructor, a JSON copy
+/// unwinding), end it with "meff: out of memory" on stderr and exit status 1 (the run failed),
+/// its temporary files removed, instead of an abort.
+void EndOnOutOfMemory();
+
 /// Registers another temporary path for removal by the signal handler (a file a child process
 /// writes, say); returns the slot to pass to UnregisterTemporary, or -1 when the list is full.
 /// `path` must stay alive and unchanged until unregistered.

@@ -312,7 +312,38 @@ namespace
 {
 /// --format of the subcommand that runs (one per process).
 SceneFormat g_sceneFormat = SceneFormat::Auto;
+/// --max-bodies, ... of the subcommand that runs.
+SceneLimits g_sceneLimits;
 } // namespace
+
+void AddLimitOptions(CLI::App* app)
+{
+    const SceneLimits defaults;
+    const auto count = [app](const char* name, std::size_t& limit, const char* what)
+    {
+        app->add_option(name, limit,
+                        std::string("Refuse scenes with more ") + what + " (default " +
+                            std::to_string(limit) + ")")
+            ->check(CLI::PositiveNumber)
+            ->group("Limits");
+    };
+    count("--max-bodies", g_sceneLimits.bodies, "bodies");
+    count("--max-shapes", g_sceneLimits.shapes, "shapes");
+    count("--max-joints", g_sceneLimits.joints, "joints");
+    count("--max-pairs", g_sceneLimits.pairs,
+          "pairs of shapes overlapping at the start (on different bodies, one dynamic)");
+    app->add_option_function<std::size_t>(
+           "--max-file-size", [](std::size_t mib) { g_sceneLimits.fileBytes = mib << 20; },
+           "Refuse scene files larger than this many MiB (default " +
+               std::to_string(defaults.fileBytes >> 20) + ")")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 20))
+        ->group("Limits");
+}
+
+const SceneLimits& SceneLimitsOfOptions()
+{
+    return g_sceneLimits;
+}
 
 void AddFormatOption(CLI::App* app)
 {
@@ -327,13 +358,14 @@ void AddFormatOption(CLI::App* app)
            "Format of the scene files: meff (docs/scene-format.md), b2djson (R.U.B.E.'s "
            "export, docs/b2djson.md), or auto: by the content (default)")
         ->check(CLI::IsMember({"auto", "meff", "b2djson"}));
+    AddLimitOptions(app);
 }
 
 std::optional<Scene> LoadSceneOrReport(const std::string& path)
 {
     try
     {
-        LoadedScene loaded = LoadSceneFile(path, g_sceneFormat);
+        LoadedScene loaded = LoadSceneFile(path, g_sceneFormat, g_sceneLimits);
         // What a b2dJson level loses on the way, and what the loader warns about.
         for (const std::string& warning : loaded.warnings)
         {

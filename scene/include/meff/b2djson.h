@@ -49,10 +49,12 @@ bool LooksLikeB2dJson(std::string_view text);
 
 /// Converts a b2dJson level to a scene. Throws SceneError listing every problem, each naming
 /// `sourcePath` and the JSON path in the level.
-LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath);
+LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath,
+                          const SceneLimits& limits = {});
 
 /// Reads a scene file in `format` (Auto: by its content). Throws SceneError.
-LoadedScene LoadSceneFile(const std::string& path, SceneFormat format = SceneFormat::Auto);
+LoadedScene LoadSceneFile(const std::string& path, SceneFormat format = SceneFormat::Auto,
+                          const SceneLimits& limits = {});
 
 struct B2dJsonExportOptions
 {
