@@ -81,3 +81,70 @@ TEST_CASE("b2dJson: JSON embedded in a meff.* property is nested no deeper than 
     REQUIRE_FALSE(shallow.empty());
     CHECK_THAT(shallow[0], !Catch::Contains("nested deeper"));
 }
+
+TEST_CASE("b2dJson: a NaN or negative massData-mass is refused at its field", "[b2djson][hostile]")
+{
+    nlohmann::json level = nlohmann::json::parse(LevelWithProperty("meff.name", "x"));
+    level.erase("customProperties");
+    for (const nlohmann::json& mass : {nlohmann::json("7FC00000"), nlohmann::json(-2.0)})
+    {
+        CAPTURE(mass);
+        level["body"][0]["massData-mass"] = mass;
+        const std::vector<std::string> errors = ImportErrors(level.dump());
+        // A NaN once passed unsaid: no warning, no error (NaN compares unequal to nothing).
+        REQUIRE(errors.size() == 1);
+        CHECK_THAT(errors[0], Catch::StartsWith("level.json: body[0].massData-mass: must be "
+                                                "finite and >= 0, got "));
+    }
+}
+
+TEST_CASE("b2dJson: a number beyond a float's range is refused in the level's terms",
+          "[b2djson][hostile]")
+{
+    nlohmann::json level = nlohmann::json::parse(LevelWithProperty("meff.name", "x"));
+    level.erase("customProperties");
+    level["body"][0]["position"] = {{"x", 1e39}, {"y", 0}};
+    std::vector<std::string> errors = ImportErrors(level.dump());
+    REQUIRE(errors.size() == 1);
+    // It was refused as the scene's "[x, y]".
+    CHECK(errors[0] == "level.json: body[0].position.x: must be within a float's range "
+                       "(b2dJson's numbers are floats, at most 3.4028235e+38), got 1e+39");
+    level["body"][0]["position"] = {{"x", 0}, {"y", 0}};
+    level["body"][0]["angularDamping"] = -1e39;
+    errors = ImportErrors(level.dump());
+    REQUIRE(errors.size() == 1);
+    CHECK_THAT(errors[0], Catch::StartsWith("level.json: body[0].angularDamping: must be within "
+                                            "a float's range"));
+}
+
+TEST_CASE("A distance joint's length is refused at load when the solvers cannot square it",
+          "[scene][hostile]")
+{
+    // 3.4e38 loaded, then every back end stopped step 0 with a non-finite state; 1e20 too
+    // (box2d and colour); 1e19 steps (the bound is sqrt(FLT_MAX), about 1.8e19).
+    const auto errors = [](const std::string& fields)
+    {
+        try
+        {
+            ParseScene(R"({"meff_scene": 1, "bodies": [{"name": "g", "type": "static"},
+                {"name": "b", "type": "dynamic", "shapes": [{"type": "circle", "radius": 0.5}]}],
+                "joints": [{"name": "d", "type": "distance", "body_a": "g", "body_b": "b",
+                "anchor_a": [0, 1], "anchor_b": [0, 0], )" +
+                           fields + "}]}",
+                       "s.json");
+        }
+        catch (const SceneError& error)
+        {
+            return error.messages();
+        }
+        return std::vector<std::string>{};
+    };
+    std::vector<std::string> refused = errors(R"("length": 3.4e38)");
+    REQUIRE(refused.size() == 1);
+    CHECK_THAT(refused[0], Catch::StartsWith("s.json: joints[0].length: must be at most 1.8"));
+    refused = errors(R"("length": 1, "min_length": 1e20, "max_length": 1e21)");
+    REQUIRE(refused.size() == 1);
+    CHECK_THAT(refused[0], Catch::StartsWith("s.json: joints[0].min_length: must be at most"));
+    CHECK(errors(R"("length": 1e19)").empty());
+    CHECK(errors(R"("length": 1, "min_length": 0, "max_length": 3.4e38)").empty()); // a rope
+}

@@ -204,6 +204,11 @@ class LevelObject
             m_converter.Error(PathOf(key), "must be a number or a float's bits as 8 hex digits",
                               value);
         }
+        else if (!InFloatRange(*number))
+        {
+            FloatRangeError(PathOf(key), *number);
+            return std::nullopt;
+        }
         return number;
     }
 
@@ -225,7 +230,28 @@ class LevelObject
                               "must be a vector {\"x\": X, \"y\": Y}, or 0 for the zero vector",
                               value);
         }
+        else if (!InFloatRange(vector->x) || !InFloatRange(vector->y))
+        {
+            const bool x = !InFloatRange(vector->x);
+            FloatRangeError(JoinPath(PathOf(key), x ? "x" : "y"), x ? vector->x : vector->y);
+            return std::nullopt;
+        }
         return vector;
+    }
+
+    /// b2dJson's numbers are floats: a finite number beyond the largest float is refused here,
+    /// in the level's terms (it was refused later as the scene's "[x, y]"). NaN and infinities
+    /// go on to the checks of the field they are in.
+    static bool InFloatRange(double value)
+    {
+        return !std::isfinite(value) ||
+               std::abs(value) <= double(std::numeric_limits<float>::max());
+    }
+    void FloatRangeError(const std::string& path, double value)
+    {
+        m_converter.Error(path, "must be within a float's range (b2dJson's numbers are floats, "
+                                "at most 3.4028235e+38), got " +
+                                    scene_detail::FormatNumber(value));
     }
 
     bool Boolean(std::string_view key, bool fallback)
@@ -653,11 +679,21 @@ class Importer
         put("allow_sleep", body.Boolean("allowSleep", true), "allowSleep");
         // b2dJson's loader creates a body asleep unless the level says "awake": true.
         put("awake", body.Boolean("awake", false), "awake");
-        if (body.Find("massData-mass") != nullptr)
+        if (const Json* given = body.Find("massData-mass"))
         {
+            // Not kept (meff computes mass), but a NaN or a negative mass is a broken level,
+            // not a mass set by hand: said, as every other field's (it once passed unsaid).
             if (const std::optional<double> mass = body.Number("massData-mass", 0.0))
             {
-                m_handMass.emplace_back(index, *mass);
+                if (std::isfinite(*mass) && *mass >= 0)
+                {
+                    m_handMass.emplace_back(index, *mass);
+                }
+                else
+                {
+                    m_converter.Error(body.PathOf("massData-mass"), "must be finite and >= 0",
+                                      given);
+                }
             }
         }
         out["shapes"] = Out::array();

@@ -193,7 +193,13 @@ void ReadWorld(ObjectReader& reader, SceneWorldSettings& world)
 {
     const SceneWorldSettings defaults;
     Assign(world.gravity, reader.Vector("gravity", defaults.gravity));
-    Assign(world.dt, ReadPositive(reader, "dt", defaults.dt));
+    std::optional<double> dt = ReadPositive(reader, "dt", defaults.dt);
+    // World::Step's range (meff/validity.h): at most 1 s, at least 1e-9 s.
+    if (dt && !CheckInRange(reader, "dt", *dt, kMinStepDt, kMaxStepDt))
+    {
+        dt.reset();
+    }
+    Assign(world.dt, dt);
     Assign(world.frames, reader.Integer("frames", defaults.frames, 0, INT_MAX));
     ReadSolverKind(reader, world.solver);
     SolverSettings& solver = world.solver;
@@ -703,6 +709,14 @@ void ReadDistanceFields(ObjectReader& reader, const Scene& scene, SceneJoint& jo
             length.reset();
         }
     }
+    // The engine's bound (meff/validity.h): the solvers square these lengths.
+    const double longest = double(MaxDistanceJointLength());
+    if (length && *length > longest)
+    {
+        reader.Fail("length", "must be at most " + scene_detail::FormatNumber(longest) +
+                                  " m (the solvers square it)");
+        length.reset();
+    }
     Assign(joint.length, length);
     // Both limits default to the length: a rigid rod. (Box2D's defaults, 0 and FLT_MAX, would
     // make a joint without a spring do nothing at all.)
@@ -710,7 +724,12 @@ void ReadDistanceFields(ObjectReader& reader, const Scene& scene, SceneJoint& jo
         ReadNonNegative(reader, "min_length", length ? length : std::optional<double>(0.0));
     const std::optional<double> maxLength =
         reader.Number("max_length", length ? length : std::optional<double>(0.0));
-    if (minLength && maxLength && *maxLength < *minLength)
+    if (minLength && *minLength > longest)
+    {
+        reader.Fail("min_length", "must be at most " + scene_detail::FormatNumber(longest) +
+                                      " m (the solvers square it)");
+    }
+    else if (minLength && maxLength && *maxLength < *minLength)
     {
         reader.Fail("max_length",
                     "must be >= min_length (" + scene_detail::FormatNumber(*minLength) + ")");

@@ -71,6 +71,21 @@ std::optional<Refusal> CheckSegment(const Segment& segment, Real linearSlop);
 /// and >= 0.
 std::optional<Refusal> CheckShapeDef(const ShapeDef& def);
 
+/// The longest and shortest step World::Step takes (s), and a scene's world.dt. Above 1 s a
+/// step is no simulation (the solvers clamp a body's motion to 2 m and a quarter turn per step:
+/// Step(1e30) froze every body); below 1e-9 s the step's 1/dt and dt² leave the float range
+/// (a denormal dt passed the old check, then stopped the step with a non-finite state).
+inline constexpr double kMaxStepDt = 1.0;
+inline constexpr double kMinStepDt = 1e-9;
+/// A finite dt in [kMinStepDt, kMaxStepDt] (field "dt").
+std::optional<Refusal> CheckStepDt(Real dt);
+
+/// The longest rest length (and minimum length) a distance joint may have (m): the solvers
+/// square it, so its square must be a finite Real, about 1.8e19 m in float. A length of 3.4e38
+/// was accepted, then stopped step 0 with a non-finite state. The maximum length is not bound:
+/// Box2D's default, FLT_MAX, means no upper limit.
+Real MaxDistanceJointLength();
+
 // Mass. Only a dynamic body's shapes with density > 0 have mass (segments never do), as in
 // Box2D 2.4.1's b2Body::ResetMassData.
 

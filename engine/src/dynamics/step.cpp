@@ -19,6 +19,7 @@
 #include "dynamics/events.h"
 #include "dynamics/world_state.h"
 #include "tasks/parallel_ranges.h"
+#include "meff/validity.h"
 #include "meff/world.h"
 
 #include <chrono>
@@ -94,9 +95,9 @@ void Timed(double& total, Stage&& stage)
 void World::Step(Real dt)
 {
     WorldState& world = State();
-    if (!(dt > 0) || !meff::IsValid(dt))
+    if (const std::optional<Refusal> refusal = CheckStepDt(dt))
     {
-        throw InvalidArgument("World::Step: dt must be finite and > 0, got " + std::to_string(dt));
+        throw InvalidArgument("World::Step: dt " + refusal->reason);
     }
     RequireNotStepping(world, "World::Step");
     if (world.failed)

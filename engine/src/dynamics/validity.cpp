@@ -268,6 +268,21 @@ std::optional<Refusal> CheckSegment(const Segment& segment, Real linearSlop)
     return std::nullopt;
 }
 
+std::optional<Refusal> CheckStepDt(Real dt)
+{
+    if (!(dt >= Real(kMinStepDt) && dt <= Real(kMaxStepDt)))
+    {
+        return Refuse("dt", "must be finite, from " + Text(Real(kMinStepDt)) + " to " +
+                                Text(Real(kMaxStepDt)) + " s, got " + Text(dt));
+    }
+    return std::nullopt;
+}
+
+Real MaxDistanceJointLength()
+{
+    return std::sqrt(std::numeric_limits<Real>::max());
+}
+
 std::optional<Refusal> CheckShapeDef(const ShapeDef& def)
 {
     const std::pair<const char*, Real> nonNegative[] = {

@@ -3,9 +3,11 @@
 #include "joints/joint.h"
 
 #include "meff/error.h"
+#include "meff/validity.h"
 
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace meff::detail
 {
@@ -197,6 +199,18 @@ Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bo
     RequireFinite(kDef, "maxLength", def.maxLength);
     RequireNonNegative(kDef, "hertz", def.hertz);
     RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+    for (const auto& [name, value] :
+         {std::pair{"length", def.length}, {"minLength", def.minLength}})
+    {
+        if (value > MaxDistanceJointLength())
+        {
+            std::ostringstream message;
+            message.precision(9);
+            message << kDef << "." << name << " = " << value << " exceeds "
+                    << MaxDistanceJointLength() << " m (its square must be finite)";
+            throw InvalidArgument(message.str());
+        }
+    }
     if (def.minLength > def.maxLength)
     {
         std::ostringstream message;
