@@ -28,6 +28,11 @@ struct Softness
     Real biasScale = 0;    ///< 1/s: velocity bias per metre (or radian) of error, × massScale
     Real massScale = 1;    ///< fraction of the effective mass the row uses
     Real impulseScale = 0; ///< fraction of the accumulated impulse the row takes back
+    /// Joints: the largest velocity bias (m/s, or rad/s for an angle) with which a gap is
+    /// closed by velocity; what lies beyond is closed by moving the bodies (BiasOf).
+    Real maxBias = kMaxReal;
+    /// The joints' position pass: the row's bias is the part of biasScale·C beyond maxBias.
+    bool excess = false;
 };
 
 /// A rigid row: no bias, the whole effective mass, no impulse taken back.
@@ -93,6 +98,24 @@ inline Softness FrequencySpringSoftness(Real hertz, Real zeta, Real h)
     }
     const Real decay = std::exp(Real(-2) * zeta * omega * h);
     return {h * omega * omega * decay, Real(1) - decay, decay};
+}
+
+/// A row's velocity bias at error C: biasScale·C, at most maxBias in size; with `excess` (the
+/// joints' position pass) the part of it beyond maxBias.
+inline Real BiasOf(const Softness& soft, Real C)
+{
+    const Real bias = soft.biasScale * C;
+    const Real bounded = Clamp(bias, -soft.maxBias, soft.maxBias);
+    return soft.excess ? bias - bounded : bounded;
+}
+
+/// The same for a point's two rows: the bias vector's length is bounded.
+inline Vec2 BiasOf(const Softness& soft, Vec2 C)
+{
+    const Vec2 bias = soft.biasScale * C;
+    const Real length = bias.Length();
+    const Vec2 bounded = length > soft.maxBias ? (soft.maxBias / length) * bias : bias;
+    return soft.excess ? bias - bounded : bounded;
 }
 
 /// One soft update of a row's accumulated impulse (the form at the top of this file): error C,

@@ -1,5 +1,7 @@
 #include "solvers/soft_step/soft_contact_solver.h"
 
+#include "solvers/soft_step/soft_contact_direct.h"
+
 #include "dynamics/body.h"
 #include "dynamics/contact.h"
 #include "tasks/parallel_ranges.h"
@@ -128,6 +130,10 @@ std::uint8_t PrepareContact(const IslandContacts& island, std::size_t k, Real wa
 
 } // namespace
 
+SoftContactSolver::SoftContactSolver() : m_direct(std::make_unique<SoftContactDirect>()) {}
+
+SoftContactSolver::~SoftContactSolver() = default;
+
 void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepContext& context)
 {
     const StepContext& step = *context.step;
@@ -160,6 +166,17 @@ void SoftContactSolver::Prepare(const IslandContacts& island, const SoftStepCont
     m_anyHitEvents = (needs & kNeedsHitEvents) != 0;
     m_anyRestitution = (needs & kNeedsRestitution) != 0;
     m_lanes.Pack(m_contacts, bodyCount, context.tasks);
+    // An island small enough to go row by row: its groups of touching bodies are solved
+    // together (heavy on light).
+    if (context.contactModel == SoftContactModel::Rigid && m_lanes.Overflow().size() == count)
+    {
+        m_direct->Prepare(m_contacts, bodyCount, m_isDirect);
+    }
+    else
+    {
+        m_direct->Prepare({}, 0, m_isDirect);
+        m_isDirect.assign(count, 0);
+    }
 }
 
 void SoftContactSolver::WarmStart(const SoftStepContext& context)
@@ -237,18 +254,42 @@ void SoftContactSolver::SolveNormalRows(SoftContact& c, RowBodies& b,
 void SoftContactSolver::Solve(const SoftStepContext& context, bool useBias)
 {
     m_lanes.Solve(context, useBias);
+    if (m_direct->Empty())
+    {
+        for (const std::int32_t k : m_lanes.Overflow())
+        {
+            SolveContact(m_contacts[k], context, useBias);
+        }
+        return;
+    }
+    // The groups' normal rows first, then every contact's friction (and the normal rows of the
+    // contacts in no group, or in a group that did not converge).
+    m_fallback.clear();
+    m_direct->Solve(m_contacts, context, m_fallback);
+    for (const std::int32_t k : m_fallback)
+    {
+        m_isDirect[k] = 0;
+    }
     for (const std::int32_t k : m_lanes.Overflow())
     {
-        SolveContact(m_contacts[k], context, useBias);
+        SolveContact(m_contacts[k], context, useBias, m_isDirect[k] == 0);
+    }
+    for (const std::int32_t k : m_fallback)
+    {
+        m_isDirect[k] = 1;
     }
 }
 
-void SoftContactSolver::SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias)
+void SoftContactSolver::SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias,
+                                     bool normals)
 {
     const bool friction = !useBias || context.frictionInSolve;
     RowBodies b = LoadBodies(c, context);
     // Normal rows first, so that friction is bounded by this sweep's normal impulses.
-    SolveNormalRows(c, b, context, useBias);
+    if (normals)
+    {
+        SolveNormalRows(c, b, context, useBias);
+    }
     if (friction && c.friction > 0)
     {
         const Vec2 tangent = Tangent(c.normal);

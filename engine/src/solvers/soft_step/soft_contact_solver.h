@@ -20,6 +20,7 @@
 #include "solvers/soft_step/soft_step_context.h"
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -27,6 +28,7 @@ namespace meff::detail
 {
 
 struct Contact;
+class SoftContactDirect;
 
 /// The fewest contacts a thread is handed at once when rows are prepared or stored: one costs
 /// a world manifold and a few effective masses, so fewer would not pay for the hand-out.
@@ -74,6 +76,8 @@ struct SoftContact
 class SoftContactSolver
 {
   public:
+    SoftContactSolver();
+    ~SoftContactSolver();
     /// Builds the rows of the island's contacts at the bodies' poses of the step's start, and
     /// packs the coloured ones into SIMD lanes (soft_contact_lanes.h). Every pass below solves
     /// the lanes colour by colour, then the contacts no colour had room for one by one.
@@ -100,6 +104,8 @@ class SoftContactSolver
     /// other back ends store them: next step's warm start) and fills SolvedContacts().
     void Store(std::span<Contact> contacts, const SoftStepContext& context);
 
+    /// Whether every contact is solved row by row (the island is too small for the lanes).
+    bool RowByRow() const { return m_lanes.Overflow().size() == m_contacts.size(); }
     std::span<const SolvedContact> SolvedContacts() const { return m_solved; }
     bool AnyHitEvents() const { return m_anyHitEvents; }
 
@@ -107,11 +113,19 @@ class SoftContactSolver
     void SolveNormalRows(SoftContact& c, RowBodies& b, const SoftStepContext& context,
                          bool useBias);
     void WarmStartContact(SoftContact& c, const SoftStepContext& context);
-    void SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias);
+    /// One update of contact c's rows; its normal rows only with `normals` (a direct group,
+    /// soft_contact_direct.h, solved them already).
+    void SolveContact(SoftContact& c, const SoftStepContext& context, bool useBias,
+                      bool normals = true);
     void CorrectContact(const SoftContact& c, const SoftStepContext& context);
 
     std::vector<SoftContact> m_contacts; ///< island order
     SoftContactLanes m_lanes;
+    /// Small groups of contacts whose normal rows are solved together (rigid contacts, an
+    /// island too small for the lanes): per contact, whether a group solves its normal rows.
+    std::unique_ptr<SoftContactDirect> m_direct;
+    std::vector<std::uint8_t> m_isDirect;
+    std::vector<std::int32_t> m_fallback;
     std::vector<SolvedContact> m_solved;
     /// The overflow's normal and tangent impulse of each point and rolling impulse
     /// (SaveImpulses).

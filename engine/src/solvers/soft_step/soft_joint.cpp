@@ -62,6 +62,29 @@ void SolveSoftJoint(Joint& joint, const SoftJointFrame& frame, const SoftStepCon
                     { SolveSoft(data, state, useBias, b); });
 }
 
+void CorrectSoftJoint(const Joint& joint, const SoftJointFrame& frame,
+                      const SoftStepContext& context)
+{
+    if (std::holds_alternative<MotorJoint>(joint.data) ||
+        std::holds_alternative<MouseJoint>(joint.data) ||
+        std::holds_alternative<FrictionJoint>(joint.data))
+    {
+        return;
+    }
+    Joint scratch = joint;
+    std::visit(
+        [](auto& data)
+        {
+            ScaleImpulses(data, 0);
+            if constexpr (requires { data.enableMotor; })
+            {
+                data.enableMotor = false;
+            }
+        },
+        scratch.data);
+    SolveSoftJoint(scratch, frame, context, true);
+}
+
 void ScaleJointImpulses(Joint& joint, Real factor)
 {
     std::visit([factor](auto& data) { ScaleImpulses(data, factor); }, joint.data);

@@ -84,7 +84,7 @@ struct SoftJointState
     /// closing half kick), or null.
     const Softness* Spring(bool useBias) const
     {
-        if (!useBias && !context.closing)
+        if ((!useBias && !context.closing) || context.correcting)
         {
             return nullptr;
         }
@@ -167,6 +167,12 @@ void ScaleImpulses(GearJoint& joint, Real factor);
 /// starting).
 void PrepareSoftJoint(Joint& joint, SoftJointFrame& frame, const JointBody& a, const JointBody& b,
                       const Position& poseA, const Position& poseB, Real warmScale,
+                      const SoftStepContext& context);
+/// The joint's part of the joints' position pass (context.correcting, context.joint the
+/// correction): its rigid rows solved once on the pseudo-velocities in context.bodies, from
+/// impulses of zero that are then dropped (the joint's own accumulated impulses do not change).
+/// Joints without rigid rows (motor, mouse, friction) do nothing.
+void CorrectSoftJoint(const Joint& joint, const SoftJointFrame& frame,
                       const SoftStepContext& context);
 /// Applies the joint's accumulated sub-step impulses.
 void WarmStartSoftJoint(Joint& joint, const SoftJointFrame& frame, const SoftStepContext& context);

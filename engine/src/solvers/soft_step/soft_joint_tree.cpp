@@ -501,7 +501,7 @@ void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBia
         {
             const RowBodies moved =
                 LoadRowBodies(m_moved.data(), f.indexA, f.indexB, f.mA, f.iA, f.mB, f.iB);
-            target = soft.massScale * target + soft.biasScale * j.d +
+            target = soft.massScale * target + BiasOf(soft, j.d) +
                      soft.impulseScale * AnchorVelocity(j.rA, j.rB, moved);
         }
         // The joint rows of the system read −J·Δv = −rhs, and rhs = −target.

@@ -93,7 +93,7 @@ void SolveSoft(PrismaticJoint& joint, const SoftJointState& state, bool useBias,
     const RowJacobian perpendicular = LineRow(perp, at.d, at.rA, at.rB);
     const Vec2 C{Dot(perp, at.d), state.frame.angle0 + state.Rotation()};
     const RowTarget target = EqualityTarget(0, useBias, context.joint);
-    const Vec2 bias = useBias ? context.joint.biasScale * C : Vec2{};
+    const Vec2 bias = useBias ? BiasOf(context.joint, C) : Vec2{};
     if (!context.step->solver.blockJoints)
     {
         SolveRow(perpendicular, RowMass(InverseEffectiveMass(perpendicular, b)),

@@ -44,6 +44,24 @@ void WarmStartGroup(const SoftRevoluteGroup& g, const SoftBodies& bodies, Veloci
     ScatterFromWorker(velocities, g.storeB, discard, b);
 }
 
+/// BiasOf per lane: a lane whose bias is bounded (rare: a gap beyond what a sub-step's motion
+/// opens) is done one by one.
+Vec2W BiasW(const Softness& soft, const Vec2W& d)
+{
+    Vec2W bias = Splat(soft.biasScale) * d;
+    const RealW lengthSquared = bias.x * bias.x + bias.y * bias.y;
+    if (AnyLane(lengthSquared > Splat(soft.maxBias * soft.maxBias)) || soft.excess)
+    {
+        for (int l = 0; l < kLanes; ++l)
+        {
+            const Vec2 b = BiasOf(soft, Vec2{d.x[l], d.y[l]});
+            bias.x[l] = b.x;
+            bias.y[l] = b.y;
+        }
+    }
+    return bias;
+}
+
 /// SolvePoint's block update per lane (without a bound on the impulse's length: the revolute
 /// joint has none).
 void SolveGroup(SoftRevoluteGroup& g, const SoftStepContext& context, bool useBias,
@@ -53,7 +71,7 @@ void SolveGroup(SoftRevoluteGroup& g, const SoftStepContext& context, bool useBi
     BodyStateW a = Gather(velocities, g.indexA);
     BodyStateW b = Gather(velocities, g.indexB);
     const Softness soft = useBias ? context.joint : kRigid;
-    const Vec2W bias = useBias ? Splat(context.joint.biasScale) * at.d : Vec2W{};
+    const Vec2W bias = useBias ? BiasW(context.joint, at.d) : Vec2W{};
     // PointBlock: the seed's k along x̂ and ŷ on the diagonal.
     const Vec2W rA = at.rA, rB = at.rB;
     const RealW k11 = g.invMassA + g.invMassB + rA.y * rA.y * g.invIA + rB.y * rB.y * g.invIB;
@@ -176,6 +194,22 @@ void SoftRevoluteLanes::ScaleImpulses(Real factor)
     SoftRevoluteGroup* groups = m_groups.data();
     m_groupsOfColour.ForEachGroup([groups, factor](std::int32_t i)
                                   { groups[i].impulse = Splat(factor) * groups[i].impulse; });
+}
+
+void SoftRevoluteLanes::Correct(const SoftStepContext& context)
+{
+    SoftRevoluteGroup* groups = m_groups.data();
+    const SoftStepContext* at = &context;
+    Velocity* velocities = context.bodies->velocities.data();
+    m_groupsOfColour.ForEachGroupByColour(
+        [groups, at, velocities](std::int32_t i, DiscardSlots discard)
+        {
+            SoftRevoluteGroup& g = groups[i];
+            g.savedImpulse = g.impulse;
+            g.impulse = Vec2W{};
+            SolveGroup(g, *at, true, velocities, discard);
+            g.impulse = g.savedImpulse;
+        });
 }
 
 void SoftRevoluteLanes::CloseStep(const SoftStepContext& context)

@@ -52,6 +52,9 @@ class SoftRevoluteLanes
     void WarmStart(const SoftStepContext& context);
     void Solve(const SoftStepContext& context, bool useBias);
     void ScaleImpulses(Real factor);
+    /// The joints' position pass (context.correcting): one update of every group on the
+    /// pseudo-velocities in context.bodies, from impulses of zero; the groups' impulses are kept.
+    void Correct(const SoftStepContext& context);
     /// The step's closing half kick: half of the sub-step's impulses applied and relaxed, joint
     /// by joint, its impulses then forgotten (the next warm start keeps the sub-step's).
     void CloseStep(const SoftStepContext& context);

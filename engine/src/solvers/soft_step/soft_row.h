@@ -135,7 +135,7 @@ struct RowTarget
 /// bias while relaxing.
 inline RowTarget EqualityTarget(Real C, bool useBias, const Softness& softness)
 {
-    return useBias ? RowTarget{softness.biasScale * C, softness} : RowTarget{};
+    return useBias ? RowTarget{BiasOf(softness, C), softness} : RowTarget{};
 }
 
 /// A one-sided row (C ≥ 0 wanted: a contact, a limit) at error C: while apart (C > 0) it only
@@ -153,7 +153,7 @@ inline RowTarget OneSidedTarget(Real C, bool useBias, const Softness& softness, 
     }
     if (useBias)
     {
-        return {Max(softness.biasScale * C, -maxPush), softness};
+        return {Max(BiasOf(softness, C), -maxPush), softness};
     }
     return {};
 }
@@ -216,7 +216,7 @@ inline Vec2 SolvePoint(Vec2 rA, Vec2 rB, Vec2 C, bool useBias, const Softness& s
                        Vec2& accumulated, RowBodies& b, bool block, Real maxImpulse = kMaxReal)
 {
     const RowTarget target = useBias ? RowTarget{0, softness} : RowTarget{};
-    const Vec2 bias = useBias ? softness.biasScale * C : Vec2{};
+    const Vec2 bias = useBias ? BiasOf(softness, C) : Vec2{};
     Vec2 applied;
     if (block)
     {

@@ -18,14 +18,23 @@ struct SoftStepContext
     Real h = 0, invH = 0;   ///< sub-step (s) and its inverse
     Softness contact;       ///< between two moving bodies
     Softness staticContact; ///< against a body that cannot move: twice as stiff
-    Softness joint;         ///< the joints' rigid rows
-    Real maxPushOut = 0;    ///< m/s
+    /// The joints' rigid rows while solving: soft, their bias at most maxPushOut; in the
+    /// joints' position pass, jointCorrection.
+    Softness joint;
+    /// The joints' position pass (SoftStepSolver::CorrectJoints): rigid rows whose bias is
+    /// what the solving bias could not give (Softness::excess), applied to pseudo-velocities
+    /// that move the bodies and are then forgotten.
+    Softness jointCorrection;
+    Real maxPushOut = 0; ///< m/s
     SoftContactModel contactModel = SoftContactModel::Rigid;
     Real contactCorrection = 0;   ///< rigid contacts: fraction of the overlap removed per sub-step
     bool blockSolver = true;      ///< two-point manifolds' normal rows as one block
     bool frictionInSolve = false; ///< no relax sweeps: friction goes with the biased sweep
     bool halfKick = false;        ///< this sweep belongs to one of the step's two half sub-steps
     bool closing = false;         ///< the closing half kick's sweep: springs act, rigid rows relax
+    /// The joints' position pass: only rigid rows (points, lengths, locks, limits) act; springs,
+    /// motors and the force-bounded joints (motor, mouse, friction) do not.
+    bool correcting = false;
     SoftBodies* bodies = nullptr;
     /// The world's threads (SolverWorld::tasks), or null: the lanes of one colour, the bodies'
     /// integration and the rows' preparation are spread over them (worker w writes the discard

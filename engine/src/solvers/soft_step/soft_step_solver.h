@@ -44,6 +44,11 @@ namespace meff::detail
 /// effective masses and warm start cost hundreds of operations).
 inline constexpr int kMinSoftJointsPerTask = 64;
 
+/// A small island (its contacts and joints solved row by row) relaxes until no sweep changes a
+/// velocity by more than kSoftRelaxTolerance (m/s, rad/s), at most kMaxSoftRelaxSweeps sweeps.
+inline constexpr int kMaxSoftRelaxSweeps = 8;
+inline constexpr Real kSoftRelaxTolerance = Real(1e-3);
+
 class SoftStepSolver final : public Solver
 {
   public:
@@ -62,6 +67,10 @@ class SoftStepSolver final : public Solver
     void SubStep(bool first, const StepContext& step);
     /// Scales every accumulated impulse of the island (contacts and joints).
     void ScaleImpulses(Real factor);
+    /// The joints' position pass after a sub-step's move: every joint's rigid rows solved once
+    /// (lanes, one by one, trees) on pseudo-velocities that move the bodies and are then
+    /// dropped, so a joint's gap is closed by moving the bodies, never by giving them velocity.
+    void CorrectJoints(const StepContext& step);
     void WarmStartJoints();
     void SolveJoints(bool useBias);
     /// The closing half kick: velocities by h/2, half of the sub-step's constraint impulses and
@@ -86,6 +95,8 @@ class SoftStepSolver final : public Solver
     std::vector<RevoluteJoint*> m_laneJoints;
     std::vector<std::int32_t> m_laneRows;
     std::vector<std::uint8_t> m_inLanes;
+    std::vector<Velocity> m_pseudo; ///< the real velocities while CorrectJoints runs
+    std::vector<Velocity> m_before; ///< the velocities before a relax sweep
 };
 
 /// The soft coefficients of one step's sub-steps from the settings (SoftStepSettings): contact
