@@ -1,6 +1,6 @@
 #include "solvers/soft_step/soft_contact_direct.h"
 
-#include "solvers/colour/graph_colouring.h"
+#include "solvers/lanes/graph_colouring.h"
 
 #include <algorithm>
 #include <cmath>
