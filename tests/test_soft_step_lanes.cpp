@@ -29,6 +29,10 @@ World MakeLaneWorld()
     WorldDef def;
     def.solver.kind = SolverKind::SoftStep;
     def.allowSleep = false; // one island of every body: the lanes' threshold counts its rows
+    // An island solved row by row (a row alone) relaxes until its sweeps agree, one in lanes
+    // relaxes relaxIterations times (SoftStepSolver::SubStep); at kMaxSoftRelaxSweeps both
+    // relax exactly as often, so what is compared is the rows' arithmetic alone.
+    def.solver.softStep.relaxIterations = 8; // kMaxSoftRelaxSweeps
     return World{def};
 }
 

@@ -162,10 +162,11 @@ TEST_CASE("soft step: the card house and the arch stand", "[soft_step][targets]"
 {
     const RestingRun cards = RunResting(LoadWith("extreme", "card_house", SolverKind::SoftStep));
     Print("card_house", "largest displacement at 10 s (m)", cards.displacement,
-          "<= 0.012 (missed: 0.0143)");
+          "<= 0.012 (missed: 0.0139)");
     // Target 0.012 m (the Box2D back end's) missed: the cards settle into their skins in the
     // first 10 steps and slide 2 mm further at their feet before friction holds them.
-    // Measured 0.0143 m (Box2D v3: 0.018 m), held to it with 10 %.
+    // Measured 0.0143 m (Box2D v3: 0.018 m), held to it with 10 %; 0.0139 m since the small
+    // groups' contacts are solved together (issue 31).
     CHECK(cards.displacement <= 0.0158);
     const RestingRun arch = RunResting(LoadWith("extreme", "arch", SolverKind::SoftStep));
     Print("arch", "largest displacement at 10 s (m)", arch.displacement, "<= 0.005");
@@ -214,20 +215,16 @@ TEST_CASE("soft step: a heavy box stays on a light one at 100:1", "[soft_step][t
     CHECK(run.penetration <= 0.02);
 }
 
-TEST_CASE("soft step: at 1000:1 the heavy box stays on top but sinks 7 cm (target missed)",
-          "[soft_step][targets]")
+TEST_CASE("soft step: a heavy box stays on a light one at 1000:1", "[soft_step][targets]")
 {
     const MassRatioRun run = RunMassRatio("mass_ratio_1000");
     Print("mass_ratio_1000", "frames the heavy box stays on top", run.framesOnTop, "600");
-    Print("mass_ratio_1000", "deepest penetration beyond rest (m)", run.penetration,
-          "<= 0.02 (missed: 0.073)");
+    Print("mass_ratio_1000", "deepest penetration beyond rest (m)", run.penetration, "<= 0.02");
+    // Met since the contacts of a small group of touching bodies are solved together
+    // (soft_contact_direct.h): the load passes through the light box in one update (measured
+    // 1.4e-8 m; the sweeps alone sank 73 mm).
     CHECK(run.framesOnTop == kFrames);
-    // Penetration target missed: the light box carries 1000 times its weight, and its
-    // contacts' Gauss-Seidel sweeps pass the load on at about its own mass per sweep
-    // (docs/soft-step.md), so the heavy box sinks 7 cm into it (the Box2D back end crushes the
-    // light box through the ground; Box2D v3 squeezes it out). Held to what is reached, with
-    // 10 %.
-    CHECK(run.penetration <= 0.08);
+    CHECK(run.penetration <= 0.02);
 }
 
 TEST_CASE("soft step: overlapping boxes come apart at under 0.5 m/s", "[soft_step][targets]")
