@@ -72,28 +72,9 @@ Rgb FillColor(const DrawColor& color)
 std::optional<AABB> BodyBounds(const World& world, BodyId body)
 {
     std::optional<AABB> bounds;
-    const Transform xf = world.GetTransform(body);
     for (const ShapeId shape : world.GetShapes(body))
     {
-        AABB box;
-        switch (world.GetShapeType(shape))
-        {
-        case ShapeType::Circle:
-            box = ComputeAABB(world.GetCircle(shape), xf);
-            break;
-        case ShapeType::Polygon:
-            box = ComputeAABB(world.GetPolygon(shape), xf);
-            break;
-        case ShapeType::Segment:
-            box = ComputeAABB(world.GetSegment(shape), xf);
-            break;
-        case ShapeType::ChainSegment:
-            box = ComputeAABB(world.GetChainSegment(shape), xf);
-            break;
-        case ShapeType::Capsule:
-            box = ComputeAABB(world.GetCapsule(shape), xf);
-            break;
-        }
+        const AABB box = world.GetShapeAABB(shape);
         bounds = bounds ? Combine(*bounds, box) : box;
     }
     return bounds;

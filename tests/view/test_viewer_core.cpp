@@ -307,3 +307,60 @@ TEST_CASE("The view's triangles are meff render's tessellation at the view's pix
         CHECK(triangles.Triangles()[i].y == expected.Triangles()[i].y);
     }
 }
+
+TEST_CASE("The Box2D 2.4.1 ghost agrees with the box2d back end and marks where another diverges",
+          "[view]")
+{
+    Session session(Sample("pyramid20.json"));
+    std::string why;
+    REQUIRE(session.SetGhost(true, &why));
+    CHECK(session.Ghost());
+    for (int i = 0; i < 60; ++i)
+    {
+        session.Step();
+    }
+    // meff's box2d back end is Box2D 2.4.1, bit for bit (meff validate: errors exactly 0).
+    CHECK_FALSE(session.GhostDivergence());
+    CHECK(session.Measure().ghostOffset == 0);
+
+    // The colour back end solves the same rows in another order: it parts from Box2D at once.
+    SolverSettings colour = session.Solver();
+    colour.kind = SolverKind::Colour;
+    session.SetSolver(colour);
+    session.Restart();
+    CHECK(session.Ghost()); // kept across the restart
+    for (int i = 0; i < 60; ++i)
+    {
+        session.Step();
+    }
+    REQUIRE(session.GhostDivergence());
+    CHECK(*session.GhostDivergence() >= 1);
+    CHECK(*session.GhostDivergence() <= 60);
+    CHECK(session.Measure().ghostOffset > 0);
+
+    // The ghost does not feel the mouse: a grab ends the comparison, and says when.
+    session.Restart();
+    session.Step();
+    REQUIRE(session.Grab(Vec2{0, Real(19.8)}));
+    CHECK(session.GhostDetached() == std::uint64_t(1));
+
+    // The ghost off; and none for a scene with what only Box2D v3 has.
+    CHECK(session.SetGhost(false));
+    CHECK_FALSE(session.Ghost());
+    Session capsules(
+        (std::filesystem::path(MEFF_SOURCE_DIR) / "samples/v3/capsules.json").string());
+    CHECK_FALSE(capsules.SetGhost(true, &why));
+    CHECK_FALSE(why.empty());
+    CHECK_FALSE(capsules.Ghost());
+
+    // From a script.
+    Session scripted(Sample("pyramid20.json"));
+    ViewCamera camera;
+    RunScript(ParseScript("ghost on\nstep 5\nexpect identical\nsolver colour\nrestart\nstep 30\n"
+                          "expect diverged\n",
+                          "g.txt"),
+              "g.txt", scripted, camera, ScriptHost{});
+    CHECK_THROWS_WITH(RunScript(ParseScript("expect identical\n", "h.txt"), "h.txt", capsules,
+                                camera, ScriptHost{}),
+                      Catch::Contains("h.txt:1: expect identical needs the ghost on"));
+}

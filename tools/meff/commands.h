@@ -41,6 +41,9 @@ Command AddValidateCommand(CLI::App& parent);
 /// [--camera x,y,height] [--contacts] [--impulses] [--joints] [--overlay-box2d]
 /// [--gif FILE | --mp4 FILE] [--jobs N] [--threads T]`
 Command AddRenderCommand(CLI::App& parent);
+/// "WxH" with each between 1 and render::kMaxImageSize (8192): an image's or window's size.
+bool ParseImageSize(const std::string& text, int& width, int& height);
+
 /// `meff view SCENE [--script FILE] [--size WxH]`: the scene in a window (tools/view).
 Command AddViewCommand(CLI::App& parent);
 

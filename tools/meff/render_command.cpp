@@ -11,8 +11,6 @@
 #include "meff/box2d_mirror.h"
 #include "meff/render.h"
 
-#include <box2d/box2d.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cinttypes>
@@ -34,6 +32,24 @@
 
 namespace meff::cli
 {
+
+bool ParseImageSize(const std::string& text, int& width, int& height)
+{
+    char x = 0;
+    char rest = 0;
+    long w = 0, h = 0;
+    if (std::sscanf(text.c_str(), "%ld%c%ld%c", &w, &x, &h, &rest) != 3 || (x != 'x' && x != 'X'))
+    {
+        return false;
+    }
+    if (w < 1 || h < 1 || w > render::kMaxImageSize || h > render::kMaxImageSize)
+    {
+        return false;
+    }
+    width = int(w);
+    height = int(h);
+    return true;
+}
 
 namespace
 {
@@ -69,25 +85,6 @@ struct RenderOptions
 void Fail(const std::string& message)
 {
     std::fprintf(stderr, "meff render: %s\n", message.c_str());
-}
-
-/// "WxH", each 1..kMaxImageSize.
-bool ParseSize(const std::string& text, int& width, int& height)
-{
-    char x = 0;
-    char rest = 0;
-    long w = 0, h = 0;
-    if (std::sscanf(text.c_str(), "%ld%c%ld%c", &w, &x, &h, &rest) != 3 || (x != 'x' && x != 'X'))
-    {
-        return false;
-    }
-    if (w < 1 || h < 1 || w > render::kMaxImageSize || h > render::kMaxImageSize)
-    {
-        return false;
-    }
-    width = int(w);
-    height = int(h);
-    return true;
 }
 
 /// "x,y,height": numbers the engine's scalar holds, height > 0 (and not so small that it
@@ -140,9 +137,6 @@ std::string FindOnPath(const std::string& program)
     }
     return {};
 }
-
-/// The colour of Box2D's outlines (--overlay-box2d).
-constexpr DrawColor kBox2DColor{0.0f, 0.40f, 1.0f};
 
 /// OSMesa contexts for the threads that draw: each frame takes a free one and gives it back.
 class RendererPool
@@ -261,61 +255,6 @@ bool ClearOldFrames(const std::filesystem::path& directory, const Shard& shard, 
         }
     }
     return true;
-}
-
-/// Box2D's bodies as outlines: what the mirror computed for the same frame. Where they hide
-/// exactly behind meff's outlines, the engines agree.
-void DrawBox2D(const Scene& scene, const validation::Box2DMirror& mirror, DebugDraw& draw)
-{
-    const DrawColor color = kBox2DColor;
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-    {
-        const b2Body* body = mirror.Body(i);
-        const b2Transform& xf = body->GetTransform();
-        const auto toMeff = [&](const b2Vec2& local)
-        {
-            const b2Vec2 p = b2Mul(xf, local);
-            return Vec2{Real(p.x), Real(p.y)};
-        };
-        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr;
-             fixture = fixture->GetNext())
-        {
-            const b2Shape* shape = fixture->GetShape();
-            switch (shape->GetType())
-            {
-            case b2Shape::e_circle:
-            {
-                const auto* circle = static_cast<const b2CircleShape*>(shape);
-                const Vec2 center = toMeff(circle->m_p);
-                draw.DrawCircle(center, Real(circle->m_radius), color);
-                const b2Vec2 axis = xf.q.GetXAxis();
-                draw.DrawSegment(center, center + Real(circle->m_radius) * Vec2{axis.x, axis.y},
-                                 color);
-                break;
-            }
-            case b2Shape::e_polygon:
-            {
-                const auto* polygon = static_cast<const b2PolygonShape*>(shape);
-                Vec2 vertices[b2_maxPolygonVertices];
-                for (int k = 0; k < polygon->m_count; ++k)
-                {
-                    vertices[k] = toMeff(polygon->m_vertices[k]);
-                }
-                draw.DrawPolygon(std::span<const Vec2>(vertices, std::size_t(polygon->m_count)),
-                                 color);
-                break;
-            }
-            case b2Shape::e_edge:
-            {
-                const auto* edge = static_cast<const b2EdgeShape*>(shape);
-                draw.DrawSegment(toMeff(edge->m_vertex1), toMeff(edge->m_vertex2), color);
-                break;
-            }
-            default:
-                break;
-            }
-        }
-    }
 }
 
 /// Steps a separate world of the scene ahead of the real run, calling visit(frame, world)
@@ -468,7 +407,7 @@ int Run(const RenderOptions& options)
     // Everything that can be checked before any work is, so that bad input costs nothing and
     // leaves nothing behind.
     int width = 0, height = 0;
-    if (!ParseSize(options.size, width, height))
+    if (!ParseImageSize(options.size, width, height))
     {
         Fail("--size must be WxH with each between 1 and " + std::to_string(render::kMaxImageSize) +
              ", got " + options.size);
@@ -665,7 +604,7 @@ int Run(const RenderOptions& options)
             Fail(error.what()); // Box2D v3's features: Box2D 2.4.1 cannot draw this scene
             return kExitBadInput;
         }
-        frameOptions.overlayLegend.push_back({kBox2DColor, "Box2D 2.4.1"});
+        frameOptions.overlayLegend.push_back({validation::kBox2DColor, "Box2D 2.4.1"});
     }
 
     // The frames to draw: every K-th (number k = 0 to count - 1), this shard's share of them
@@ -752,7 +691,7 @@ int Run(const RenderOptions& options)
             built->world.Draw(pending.drawing, flags);
             if (mirror)
             {
-                DrawBox2D(*scene, *mirror, pending.drawing);
+                mirror->Draw(pending.drawing, validation::kBox2DColor);
             }
             char caption[256];
             std::snprintf(caption, sizeof caption, "%s  frame %lld  t = %.3f s",

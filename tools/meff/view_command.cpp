@@ -54,15 +54,19 @@ Command AddViewCommand(CLI::App& parent)
         "Open a scene in a window (GLFW, OpenGL 3.3, Dear ImGui): play, pause, step, restart; "
         "pan (right or middle drag) and zoom (wheel); drag a body with the mouse and throw it; "
         "select a body to read its state, contacts and joint reactions; switch the back end and "
-        "its settings live and watch energy, joint gaps and penetration; the scene reloads when "
-        "its file changes; save frames as meff render draws them. See docs/viewer.md.");
+        "its settings live and watch energy, joint gaps and penetration; the Box2D 2.4.1 ghost "
+        "(stepped in lockstep, drawn as outlines, the first divergent frame marked); the scene "
+        "reloads when its file changes; save frames as meff render draws them. See "
+        "docs/viewer.md.");
     app->add_option("scene", options->scenePath, "Scene file or b2dJson level")
         ->required()
         ->type_name("SCENE.json");
-    app->add_option("--script", options->scriptPath,
-                    "Run the commands of FILE (size, camera, step, grab, move, release, drag, "
-                    "solver, iterations, substeps, restart, screenshot, expect; docs/viewer.md) "
-                    "instead of waiting for input, then close")
+    app->add_option(
+           "--script", options->scriptPath,
+           "Run the commands of FILE (size, camera, step, grab, move, release, drag, "
+           "solver, iterations, substeps, restart, screenshot, screenshot_window, ghost, expect; "
+           "docs/viewer.md) "
+           "instead of waiting for input, then close")
         ->type_name("FILE");
     app->add_option("--size", options->size, "Window size in pixels (default 1280x800)")
         ->type_name("WxH");

@@ -390,6 +390,34 @@ struct Panel
         ImGui::PlotLines("##energy", plot.data(), int(plot.size()), 0, "energy", FLT_MAX, FLT_MAX,
                          ImVec2(-1, 50));
         ImGui::Text("largest joint gap %.3g mm", readouts.jointGap * 1000);
+        bool ghost = session.Ghost();
+        if (ImGui::Checkbox("Box2D 2.4.1 ghost (blue outlines; restarts)", &ghost))
+        {
+            std::string why;
+            if (!session.SetGhost(ghost, &why))
+            {
+                message = "no Box2D 2.4.1 ghost: " + why;
+            }
+            energy.clear();
+        }
+        if (session.Ghost())
+        {
+            if (const std::optional<std::uint64_t> detached = session.GhostDetached())
+            {
+                ImGui::Text("  not compared since the grab at frame %llu",
+                            static_cast<unsigned long long>(*detached));
+            }
+            else if (const std::optional<std::uint64_t> frame = session.GhostDivergence())
+            {
+                ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "  first divergence: frame %llu",
+                                   static_cast<unsigned long long>(*frame));
+            }
+            else
+            {
+                ImGui::Text("  identical to Box2D 2.4.1, bit for bit");
+            }
+            ImGui::Text("  largest offset %.3g mm", readouts.ghostOffset * 1000);
+        }
         ImGui::Text("deepest penetration %.3g mm (%d points)", readouts.penetration * 1000,
                     readouts.contactPoints);
         const StepProfile& profile = session.GetWorld().GetProfile();

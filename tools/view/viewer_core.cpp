@@ -93,6 +93,20 @@ void Session::Build()
     m_grabbed.reset();
     m_mouse.reset();
     m_anchor.reset();
+    m_mirror.reset();
+    m_divergedAt.reset();
+    m_detachedAt.reset();
+    if (m_ghostWanted)
+    {
+        try
+        {
+            m_mirror = std::make_unique<validation::Box2DMirror>(m_scene);
+        }
+        catch (const SceneError&)
+        {
+            m_ghostWanted = false; // Box2D 2.4.1 cannot run this scene (SetGhost says why)
+        }
+    }
     if (selected && !m_built->world.IsValid(*selected))
     {
         selected.reset();
@@ -123,6 +137,55 @@ void Session::Step()
 {
     m_built->Step(Real(m_scene.world.dt));
     ++m_frame;
+    if (m_mirror)
+    {
+        m_mirror->Step();
+        CompareWithGhost();
+    }
+}
+
+bool Session::SetGhost(bool on, std::string* why)
+{
+    if (on)
+    {
+        try
+        {
+            validation::Box2DMirror trial(m_scene);
+        }
+        catch (const SceneError& error)
+        {
+            if (why != nullptr)
+            {
+                *why = error.what();
+            }
+            return false;
+        }
+    }
+    m_ghostWanted = on;
+    Build();
+    return true;
+}
+
+void Session::CompareWithGhost()
+{
+    if (m_divergedAt || m_detachedAt)
+    {
+        return;
+    }
+    const World& world = GetWorld();
+    for (std::size_t i = 0; i < m_scene.bodies.size(); ++i)
+    {
+        const b2Body* ghost = m_mirror->Body(i);
+        const BodyId body = m_built->bodies[i];
+        const Vec2 p = world.GetPosition(body);
+        if (double(ghost->GetPosition().x) != double(p.x) ||
+            double(ghost->GetPosition().y) != double(p.y) ||
+            double(ghost->GetAngle()) != double(world.GetAngle(body)))
+        {
+            m_divergedAt = m_frame;
+            return;
+        }
+    }
 }
 
 void Session::SetSolver(const SolverSettings& settings)
@@ -170,6 +233,10 @@ bool Session::Grab(Vec2 point)
     def.maxForce = Real(1000 * double(world.GetMass(*body)) * gravity);
     m_mouse = world.CreateJoint(def);
     m_grabbed = body;
+    if (m_mirror && !m_detachedAt)
+    {
+        m_detachedAt = m_frame;
+    }
     selected = body;
     world.SetAwake(*body, true);
     return true;
@@ -237,6 +304,17 @@ Readouts Session::Measure() const
         readouts.penetration = std::max(readouts.penetration, -double(point.separation));
         ++readouts.contactPoints;
     }
+    if (m_mirror)
+    {
+        for (std::size_t i = 0; i < m_scene.bodies.size(); ++i)
+        {
+            const b2Vec2 ghost = m_mirror->Body(i)->GetPosition();
+            const Vec2 p = world.GetPosition(m_built->bodies[i]);
+            readouts.ghostOffset =
+                std::max(readouts.ghostOffset,
+                         std::hypot(double(ghost.x) - double(p.x), double(ghost.y) - double(p.y)));
+        }
+    }
     return readouts;
 }
 
@@ -289,6 +367,10 @@ void Session::Draw(DebugDraw& draw, const DrawFlags& flags) const
         draw.DrawSegment(GetWorld().GetAnchorB(*m_mouse), target, color);
         draw.DrawPoint(target, flags.pointSize, color);
     }
+    if (m_mirror)
+    {
+        m_mirror->Draw(draw, validation::kBox2DColor);
+    }
 }
 
 namespace
@@ -316,6 +398,7 @@ constexpr CommandSpec kCommands[] = {
     {"restart", ScriptCommand::Kind::Restart, 0, false},
     {"screenshot", ScriptCommand::Kind::Screenshot, 0, true},
     {"screenshot_window", ScriptCommand::Kind::WindowShot, 0, true},
+    {"ghost", ScriptCommand::Kind::Ghost, 0, true},
     {"expect", ScriptCommand::Kind::Expect, 0, true},
 };
 
@@ -367,7 +450,7 @@ std::vector<ScriptCommand> ParseScript(std::string_view text, const std::string&
             throw ScriptError(
                 where + "unknown command \"" + tokens[0] +
                 "\" (size, camera, step, grab, move, release, drag, solver, "
-                "iterations, substeps, restart, screenshot, screenshot_window, expect)");
+                "iterations, substeps, restart, screenshot, screenshot_window, ghost, expect)");
         }
         const std::size_t wanted = spec->word ? 1 : std::size_t(spec->numbers);
         if (tokens.size() - 1 != wanted)
@@ -440,10 +523,18 @@ std::vector<ScriptCommand> ParseScript(std::string_view text, const std::string&
                 refuse("unknown back end \"" + command.text + "\" (box2d, colour, soft_step)");
             }
             break;
-        case ScriptCommand::Kind::Expect:
-            if (command.text != "grabbed" && command.text != "released")
+        case ScriptCommand::Kind::Ghost:
+            if (command.text != "on" && command.text != "off")
             {
-                refuse("expects \"grabbed\" or \"released\", got \"" + command.text + "\"");
+                refuse("takes \"on\" or \"off\", got \"" + command.text + "\"");
+            }
+            break;
+        case ScriptCommand::Kind::Expect:
+            if (command.text != "grabbed" && command.text != "released" &&
+                command.text != "identical" && command.text != "diverged")
+            {
+                refuse("expects grabbed, released, identical or diverged, got \"" + command.text +
+                       "\"");
             }
             break;
         default:
@@ -553,8 +644,33 @@ void RunScript(const std::vector<ScriptCommand>& commands, const std::string& pa
                 host.windowShot(command.text);
             }
             break;
+        case ScriptCommand::Kind::Ghost:
+        {
+            std::string why;
+            if (!session.SetGhost(command.text == "on", &why))
+            {
+                throw ScriptError(where + "no Box2D 2.4.1 ghost: " + why);
+            }
+            break;
+        }
         case ScriptCommand::Kind::Expect:
-            if ((command.text == "grabbed") != session.Grabbed().has_value())
+            if (command.text == "identical" || command.text == "diverged")
+            {
+                if (!session.Ghost())
+                {
+                    throw ScriptError(where + "expect " + command.text + " needs the ghost on");
+                }
+                const bool diverged = session.GhostDivergence().has_value();
+                if (diverged != (command.text == "diverged"))
+                {
+                    throw ScriptError(where + "expected meff and Box2D 2.4.1 to be " +
+                                      command.text + ", " +
+                                      (diverged ? "they diverged at frame " +
+                                                      std::to_string(*session.GhostDivergence())
+                                                : std::string("they agree bit for bit")));
+                }
+            }
+            else if ((command.text == "grabbed") != session.Grabbed().has_value())
             {
                 throw ScriptError(where + "expected the mouse to have " +
                                   (command.text == "grabbed" ? "a body" : "no body") + ", it has " +

@@ -4,6 +4,7 @@
 // this part is tested without one (tests/view).
 #pragma once
 
+#include "meff/box2d_mirror.h"
 #include "meff/error.h"
 #include "meff/render.h"
 #include "meff/scene.h"
@@ -57,6 +58,9 @@ struct Readouts
     /// m: the deepest overlap of any contact point (0 when none overlaps).
     double penetration = 0;
     int contactPoints = 0;
+    /// m: with the ghost on, the largest distance between a body's position in meff and in
+    /// Box2D 2.4.1 (0 while they agree bit for bit).
+    double ghostOffset = 0;
 };
 
 /// The state of one body, as the panel lists it.
@@ -80,6 +84,9 @@ class Session
   public:
     /// Loads `path` (a meff scene or a b2dJson level). Throws SceneError.
     explicit Session(std::string path);
+    /// Not copied or moved: the ghost refers to the session's scene.
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
 
     const std::string& Path() const { return m_path; }
     const Scene& GetScene() const { return m_scene; }
@@ -119,11 +126,23 @@ class Session
     Readouts Measure() const;
     BodyReport Report(BodyId body) const;
 
-    /// World::Draw, plus the grab's line from the body to the target.
+    /// The Box2D 2.4.1 ghost: the scene stepped by libbox2d (the validation library's mirror)
+    /// in lockstep with meff, drawn as outlines over it. False, with the reason in `why`, for a
+    /// scene Box2D 2.4.1 cannot run (Box2D v3's features). Starts again from frame 0.
+    bool SetGhost(bool on, std::string* why = nullptr);
+    bool Ghost() const { return m_mirror != nullptr; }
+    /// The first frame at which a body's position or angle in meff differs from Box2D's, bit
+    /// for bit; none while they agree (the box2d back end at the scene's settings always does).
+    std::optional<std::uint64_t> GhostDivergence() const { return m_divergedAt; }
+    /// Since a grab (which the ghost does not feel) the two are no longer compared; the frame.
+    std::optional<std::uint64_t> GhostDetached() const { return m_detachedAt; }
+
+    /// World::Draw, the grab's line from the body to the target, and the ghost's outlines.
     void Draw(DebugDraw& draw, const DrawFlags& flags) const;
 
   private:
     void Build();
+    void CompareWithGhost();
 
     std::string m_path;
     Scene m_scene;
@@ -134,6 +153,10 @@ class Session
     std::optional<BodyId> m_grabbed;
     std::optional<JointId> m_mouse;
     std::optional<BodyId> m_anchor; ///< a static body without shapes for the mouse joint
+    bool m_ghostWanted = false;
+    std::unique_ptr<validation::Box2DMirror> m_mirror;
+    std::optional<std::uint64_t> m_divergedAt;
+    std::optional<std::uint64_t> m_detachedAt;
 };
 
 /// A mistake in a script: "FILE:LINE: what".
@@ -161,7 +184,9 @@ struct ScriptCommand
         Restart,    ///< restart
         Screenshot, ///< screenshot FILE.png: the world as the window draws it, without the panel
         WindowShot, ///< screenshot_window FILE.png: the whole window, panel included
-        Expect,     ///< expect grabbed|released: a check, failing the script when wrong
+        Ghost,      ///< ghost on|off: the Box2D 2.4.1 ghost
+        Expect,     ///< expect grabbed|released|identical|diverged: a check, failing the
+                    ///< script when wrong (identical, diverged: the ghost against meff)
     };
     Kind kind = Kind::Step;
     std::vector<double> numbers;

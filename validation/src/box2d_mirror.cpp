@@ -581,4 +581,56 @@ FrameSample Box2DMirror::Sample() const
     return sample;
 }
 
+void Box2DMirror::Draw(DebugDraw& draw, const DrawColor& color) const
+{
+    for (std::size_t i = 0; i < m_scene.bodies.size(); ++i)
+    {
+        const b2Body* body = Body(i);
+        const b2Transform& xf = body->GetTransform();
+        const auto toMeff = [&](const b2Vec2& local)
+        {
+            const b2Vec2 p = b2Mul(xf, local);
+            return Vec2{Real(p.x), Real(p.y)};
+        };
+        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr;
+             fixture = fixture->GetNext())
+        {
+            const b2Shape* shape = fixture->GetShape();
+            switch (shape->GetType())
+            {
+            case b2Shape::e_circle:
+            {
+                const auto* circle = static_cast<const b2CircleShape*>(shape);
+                const Vec2 center = toMeff(circle->m_p);
+                draw.DrawCircle(center, Real(circle->m_radius), color);
+                const b2Vec2 axis = xf.q.GetXAxis();
+                draw.DrawSegment(center, center + Real(circle->m_radius) * Vec2{axis.x, axis.y},
+                                 color);
+                break;
+            }
+            case b2Shape::e_polygon:
+            {
+                const auto* polygon = static_cast<const b2PolygonShape*>(shape);
+                Vec2 vertices[b2_maxPolygonVertices];
+                for (int k = 0; k < polygon->m_count; ++k)
+                {
+                    vertices[k] = toMeff(polygon->m_vertices[k]);
+                }
+                draw.DrawPolygon(std::span<const Vec2>(vertices, std::size_t(polygon->m_count)),
+                                 color);
+                break;
+            }
+            case b2Shape::e_edge:
+            {
+                const auto* edge = static_cast<const b2EdgeShape*>(shape);
+                draw.DrawSegment(toMeff(edge->m_vertex1), toMeff(edge->m_vertex2), color);
+                break;
+            }
+            default:
+                break;
+            }
+        }
+    }
+}
+
 } // namespace meff::validation

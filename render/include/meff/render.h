@@ -81,7 +81,8 @@ struct Camera
     Real height = 10; ///< m, > 0
 };
 
-/// The box around every shape of `body`, or nullopt for a body without shapes.
+/// The box around every shape of `body` (World::GetShapeAABB: skin included), or nullopt for a
+/// body without shapes.
 std::optional<AABB> BodyBounds(const World& world, BodyId body);
 /// The box around every shape of the world as it is now, or nullopt for a world without shapes.
 std::optional<AABB> WorldBounds(const World& world);

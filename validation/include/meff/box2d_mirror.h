@@ -5,6 +5,7 @@
 // Nothing is left to Box2D's defaults: every definition field is set from the scene.
 #pragma once
 
+#include "meff/debug_draw.h"
 #include "meff/scene.h"
 #include "meff/validation.h"
 
@@ -16,6 +17,10 @@
 
 namespace meff::validation
 {
+
+/// The colour Box2D's bodies are drawn in over meff's (meff render --overlay-box2d, meff
+/// view's ghost).
+inline constexpr DrawColor kBox2DColor{0.0f, 0.40f, 1.0f};
 
 class Box2DMirror
 {
@@ -34,6 +39,11 @@ class Box2DMirror
     void Step();
     /// The state after the last step: bodies, PostSolve impulses, joint reactions.
     FrameSample Sample() const;
+
+    /// Box2D's bodies as outlines (every fixture's shape, a circle's angle line): what the
+    /// mirror computed for the same frame, to draw over meff's. Where they hide exactly behind
+    /// meff's outlines, the engines agree.
+    void Draw(DebugDraw& draw, const DrawColor& color) const;
 
     b2World& World() { return *m_world; }
     b2Body* Body(std::size_t sceneIndex) const { return m_bodies.at(sceneIndex); }
