@@ -80,9 +80,14 @@ def pyramid(rows, half=0.5, x0=0.0, y0=0.0, density=1.0, prefix="box", pitch=Non
     return bodies
 
 
-def scene(name, description, w, bodies, joints=None, camera=None):
-    s = {"meff_scene": 1, "name": name, "description": description, "world": w,
-         "bodies": bodies}
+def scene(name, description, w, bodies, joints=None, camera=None, plausibility=None):
+    s = {"meff_scene": 1, "name": name, "description": description, "world": w}
+    # The plausibility checks' thresholds (docs/validation.md), set only where Box2D 2.4.1
+    # itself (meff's Box2D back end) goes beyond a default: 1.5 times its figure, rounded up
+    # to two significant digits, the figure quoted where the scene is made.
+    if plausibility:
+        s["plausibility"] = plausibility
+    s["bodies"] = bodies
     if joints:
         s["joints"] = joints
     if camera:
@@ -111,7 +116,9 @@ for ratio in (100, 1000):
         world(STAND),
         [ground(5), box("light", 0, GAP + 0.5, 0.5, 0.5),
          box("heavy", 0, GAP + 0.5 + 1 + GAP, 0.5, 0.5, density=ratio)],
-        camera=((0, 1), 4)))
+        camera=((0, 1), 4),
+        # Box2D: at 1000:1 the light box is pressed 0.345 m into the ground.
+        plausibility={"penetration": 0.52} if ratio == 1000 else None))
 
 rows = 6
 heavy_y = GAP + 0.5 + rows * (1 + GAP)
@@ -154,7 +161,9 @@ write(scene(
     "slowly. What must hold: the total gap of the 21 joints stays below the bounds stated in "
     "the test (one for 8 iterations, one for more).",
     world(STAND),
-    bodies, joints, camera=((0, 14), 24)))
+    bodies, joints, camera=((0, 14), 24),
+    # Box2D: a hinge of the chain is still open by 0.0976 m in the last second.
+    plausibility={"joint_gap": 0.15}))
 
 # --- Stacks that must stand 30 s -------------------------------------------------------------
 
@@ -267,7 +276,10 @@ write(scene(
     "largest speed of any box stays below the bound in the test, and after 5 s they are "
     "separated, at rest and nothing flew away.",
     world(300), [ground(10)] + pyramid(4, pitch=0.75, y0=-0.25 - GAP),
-    camera=((0, 2), 6)))
+    camera=((0, 2), 6),
+    # Pushed out of their overlap, the boxes are lifted: Box2D's position pass raises the
+    # energy by 53 J, 0.53 m of lift per box on average; the bottom row starts 0.272 m deep.
+    plausibility={"energy_lift": 0.8, "penetration": 0.41}))
 
 # --- Friction ramp ---------------------------------------------------------------------------
 

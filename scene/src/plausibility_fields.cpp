@@ -36,6 +36,14 @@ void ReadPlausibility(ObjectReader& reader, ScenePlausibility& plausibility)
             plausibility.maxSpeed = *value;
         }
     }
+    if (reader.Find("max_rise") != nullptr)
+    {
+        const std::optional<double> value = reader.Number("max_rise", std::nullopt);
+        if (value && CheckNonNegative(reader, "max_rise", *value))
+        {
+            plausibility.maxRise = *value;
+        }
+    }
     if (const Json* rest = reader.Object("rest", false))
     {
         ObjectReader restReader(reader.Diag(), *rest, reader.PathOf("rest"));

@@ -4,6 +4,7 @@
 #include "junit.h"
 #include "output_file.h"
 #include "parallel.h"
+#include "plausibility_report.h"
 #include "plot_program.h"
 #include "progress.h"
 
@@ -48,7 +49,29 @@ struct ValidateOptions
     Shard shard;
     std::string junitPath;
     std::optional<int> meffVelocityIterations; // hidden: proves the comparison can fail
+    /// --solver: every scene's back end ("scene": each its own). Another than box2d cannot be
+    /// compared with Box2D frame by frame, so it is held to the plausibility checks instead.
+    std::string solver = "scene";
+    bool plausibility = false; ///< --plausibility: the checks also beside the comparison
 };
+
+/// The back end --solver names, or nullopt for "scene".
+std::optional<SolverKind> SolverOption(const ValidateOptions& options)
+{
+    if (options.solver == "colour")
+    {
+        return SolverKind::Colour;
+    }
+    if (options.solver == "soft_step")
+    {
+        return SolverKind::SoftStep;
+    }
+    if (options.solver == "box2d")
+    {
+        return SolverKind::Box2D;
+    }
+    return std::nullopt;
+}
 
 std::string Number(double value)
 {
@@ -360,8 +383,8 @@ class Reporter
     /// Writes DIRECTORY/summary.json, divergence.csv and errors.png; throws
     /// std::runtime_error when a file cannot be written. A plot that cannot be drawn is said,
     /// not fatal. Several threads may write at once, each to its own scene's folder.
-    void Write(const Scene& scene, const ValidationResult& result,
-               const std::string& directoryName) const
+    void Write(const Scene& scene, const ValidationResult& result, const std::string& directoryName,
+               const validation::PlausibilityResult* plausibility) const
     {
         const std::filesystem::path directory = std::filesystem::path(m_directory) / directoryName;
         std::error_code error;
@@ -372,7 +395,12 @@ class Reporter
                                      error.message());
         }
         OutputFile summary((directory / "summary.json").string());
-        const std::string text = SummaryJson(result).dump(2) + "\n";
+        nlohmann::json json = SummaryJson(result);
+        if (plausibility)
+        {
+            json["plausibility"] = PlausibilityJson(*plausibility);
+        }
+        const std::string text = json.dump(2) + "\n";
         std::fputs(text.c_str(), summary.Stream());
         OutputFile csv((directory / "divergence.csv").string());
         WriteDivergenceCsv(scene, result, csv.Stream());
@@ -383,6 +411,23 @@ class Reporter
         {
             std::filesystem::remove(directory / "errors.png", error);
         }
+    }
+
+    /// DIRECTORY/summary.json alone, for a scene held only to the plausibility checks.
+    void WriteSummary(const nlohmann::json& summary, const std::string& directoryName) const
+    {
+        const std::filesystem::path directory = std::filesystem::path(m_directory) / directoryName;
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
+        if (error)
+        {
+            throw std::runtime_error("cannot create " + directory.string() + ": " +
+                                     error.message());
+        }
+        OutputFile file((directory / "summary.json").string());
+        const std::string text = summary.dump(2) + "\n";
+        std::fputs(text.c_str(), file.Stream());
+        file.Commit();
     }
 
   private:
@@ -501,6 +546,8 @@ std::optional<std::vector<Scene>> LoadScenes(const std::vector<std::string>& pat
 struct SceneOutcome
 {
     ValidationResult result; ///< without perFrame, once the report is written
+    bool compared = true;    ///< false: only the plausibility checks ran (--solver not box2d)
+    std::optional<validation::PlausibilityResult> plausibility;
     double seconds = 0;
     std::string reportError;              ///< the report could not be written: why
     std::vector<std::string> sceneErrors; ///< the engine refused the scene
@@ -584,9 +631,21 @@ int Validate(const ValidateOptions& options)
     {
         const auto sceneStart = std::chrono::steady_clock::now();
         SceneOutcome& outcome = outcomes[i];
+        const Scene& scene = (*scenes)[i];
+        const std::optional<SolverKind> solver = SolverOption(options);
+        outcome.compared = solver.value_or(SolverKind::Box2D) == SolverKind::Box2D;
         try
         {
-            outcome.result = validation::Validate((*scenes)[i], run);
+            if (outcome.compared)
+            {
+                Scene compared = scene;
+                compared.world.solver.kind = SolverKind::Box2D;
+                outcome.result = validation::Validate(solver ? compared : scene, run);
+            }
+            if (!outcome.compared || options.plausibility)
+            {
+                outcome.plausibility = validation::CheckPlausibility(scene, solver, options.frames);
+            }
         }
         catch (const SceneError& error)
         {
@@ -597,7 +656,20 @@ int Validate(const ValidateOptions& options)
         {
             try
             {
-                reporter->Write((*scenes)[i], outcome.result, directories[i]);
+                if (outcome.compared)
+                {
+                    reporter->Write(scene, outcome.result, directories[i],
+                                    outcome.plausibility ? &*outcome.plausibility : nullptr);
+                }
+                else
+                {
+                    reporter->WriteSummary(
+                        {{"scene", scene.name},
+                         {"source", scene.sourcePath},
+                         {"passed", outcome.plausibility->passed},
+                         {"plausibility", PlausibilityJson(*outcome.plausibility)}},
+                        directories[i]);
+                }
             }
             catch (const std::runtime_error& error)
             {
@@ -622,15 +694,33 @@ int Validate(const ValidateOptions& options)
             refused = true;
             return;
         }
-        std::fputs(ResultText(outcome.result).c_str(), stdout);
+        JUnitCase testCase;
+        if (outcome.compared)
+        {
+            std::fputs(ResultText(outcome.result).c_str(), stdout);
+            testCase = JUnitCaseOf(outcome.result, outcome.seconds);
+            allPassed = allPassed && outcome.result.passed;
+        }
+        else
+        {
+            testCase.name = (*scenes)[i].name;
+            testCase.className = "meff.validate";
+            testCase.file = (*scenes)[i].sourcePath;
+            testCase.seconds = outcome.seconds;
+        }
+        if (outcome.plausibility)
+        {
+            std::fputs(PlausibilityText(*outcome.plausibility).c_str(), stdout);
+            AddPlausibilityToCase(*outcome.plausibility, testCase);
+            allPassed = allPassed && outcome.plausibility->passed;
+        }
         std::fflush(stdout);
         if (!outcome.reportError.empty())
         {
             std::fprintf(stderr, "meff validate: %s\n", outcome.reportError.c_str());
             writeFailed = true;
         }
-        allPassed = allPassed && outcome.result.passed;
-        cases.push_back(JUnitCaseOf(outcome.result, outcome.seconds));
+        cases.push_back(std::move(testCase));
         outcomes[i] = {}; // printed: keep only the JUnit case
         progress.Update(int(i + 1));
     };
@@ -671,7 +761,9 @@ Command AddValidateCommand(CLI::App& parent)
         "Run scenes in meff and in Box2D 2.4.1 side by side and compare them frame by frame: "
         "positions, angles, velocities, contact and joint impulses.\n"
         "Prints one line per scene, PASS or FAIL, with each maximum error and where it "
-        "happened. Exit status 0 when every scene passes, 1 when any fails, 2 for bad input.");
+        "happened. With --solver colour or soft_step, each scene is instead held to the "
+        "plausibility checks, a PASS or FAIL line per scene with each figure and its limit. "
+        "Exit status 0 when every scene passes, 1 when any fails, 2 for bad input.");
     app->add_option("scenes", options->scenePaths, "Scene files (JSON)")
         ->required()
         ->type_name("SCENE.json...");
@@ -696,6 +788,14 @@ Command AddValidateCommand(CLI::App& parent)
                     "divergence frame, each quantity that exceeded its tolerance, the body, "
                     "contact point or joint, and both engines' values there")
         ->type_name("FILE.xml");
+    app->add_option("--solver", options->solver,
+                    "Run every scene with this back end: box2d (compared with Box2D frame by "
+                    "frame), colour or soft_step (held to the plausibility checks instead: "
+                    "no NaN, energy, rebound, joint gaps, penetration, speed, rest; "
+                    "docs/validation.md), or each scene's own (scene, the default)")
+        ->check(CLI::IsMember({"scene", "box2d", "colour", "soft_step"}));
+    app->add_flag("--plausibility", options->plausibility,
+                  "Also run the plausibility checks where the scenes are compared with Box2D");
     // Hidden: makes meff differ from Box2D on purpose, to show that validation can fail.
     app->add_option("--meff-velocity-iterations", options->meffVelocityIterations,
                     "meff's velocity iterations (Box2D keeps the scene's)")

@@ -274,6 +274,9 @@ struct ScenePlausibility
     /// The fastest any point of a dynamic body may move (m/s), unchecked when absent
     /// ("max_speed").
     std::optional<double> maxSpeed;
+    /// How far any dynamic body's centre of mass may rise above where it started, against
+    /// gravity (m), unchecked when absent ("max_rise").
+    std::optional<double> maxRise;
     std::optional<ScenePlausibilityRest> rest; ///< "rest": absent, not checked
 
     friend bool operator==(const ScenePlausibility&, const ScenePlausibility&) = default;

@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""The plausibility checks on a folder of scenes under one back end (issue 31).
+
+Runs `meff validate --solver BACKEND` (with --plausibility for box2d, which is also compared
+with Box2D frame by frame) on every scene given, reads each scene's summary.json and asserts:
+- every scene passes every check, except
+- the scenes listed in KNOWN_FAILURES for this back end, which must still FAIL the checks
+  listed there (and only those): a listed failure that no longer happens fails this test, so
+  the list shrinks as the fixes land, and nothing else may start failing.
+
+The thresholds are the scenes' own ("plausibility" in the scene file, defaults otherwise);
+this script never relaxes them.
+
+usage: check_plausibility.py MEFF OUTPUT_DIR BACKEND SCENE.json...
+"""
+import json
+import os
+import subprocess
+import sys
+
+# The failures measured on main at the time the checks were added (issue 31: "Plausible in
+# every scene a game builds"). Key: (back end, scene name) -> {check: figure measured, with the
+# limit it broke}. Every entry is a bug to fix, not a threshold: remove an entry when its fix
+# lands (this test then fails until it is removed, so none is forgotten).
+KNOWN_FAILURES = {
+    # The soft step at its defaults (issue 31, parts 1 and 4: being fixed).
+    ("soft_step", "pulley_joint"): {"rebound": "4.91 m/s: box 2 thrown back off its wheel "
+                                               "(limit 0.25; Box2D 0)"},
+    ("soft_step", "pulley_elevator"): {"rebound": "1.15 m/s: the cabin off the floor "
+                                                  "(limit 0.25)"},
+    ("soft_step", "theo_jansen"): {"max_speed": "89.6 m/s: a leg at frame 1, its rods "
+                                                "starting long (limit 20 = 1.5 x Box2D's 13.2)"},
+    ("soft_step", "bullet_test"): {"rise": "0.807 m: the struck plank thrown up (limit 0, "
+                                           "Box2D 0)"},
+    ("soft_step", "friction"): {"rebound": "3.23 m/s: box 3 off a stop (limit 2.44 with its "
+                                           "spin; Box2D 1.11)"},
+    ("soft_step", "dominos"): {"rebound": "1.47 m/s: domino 8 off the shelf (limit 1.30 with "
+                                          "its spin)"},
+    ("soft_step", "pyramid"): {"rebound": "0.358 m/s: box 2 off the ground (limit 0.252)"},
+    ("soft_step", "sensor_gate"): {"rebound": "0.986 m/s: the tilted box off the ground "
+                                              "(limit 0.25)",
+                                   "penetration": "0.058 m: a ball into the ground "
+                                                  "(limit 0.05)"},
+    ("soft_step", "chain_shapes"): {"penetration": "0.136 m: the slider into the ramp "
+                                                   "(limit 0.097 = 1.5 x Box2D's 0.0645)"},
+    # The colour back end (found by these checks; Box2D's rows in another order).
+    ("colour", "circle_stack"): {"rebound": "0.602 m/s: the bottom ball off the ground under "
+                                            "the pile (limit 0.25; Box2D 0)"},
+    ("colour", "heavy2"): {"rebound": "0.740 m/s: a small ball off the ground under the heavy "
+                                      "one (limit 0.25; Box2D 0)"},
+    ("colour", "mobile_balanced"): {"joint_gap": "0.161 m (limit 0.16 = 1.5 x Box2D's 0.106)"},
+    ("colour", "mobile_unbalanced"): {"joint_gap": "0.161 m (limit 0.16 = 1.5 x Box2D's 0.106)"},
+    ("colour", "chain_heavy_weight"): {"joint_gap": "0.195 m (limit 0.15 = 1.5 x Box2D's "
+                                                    "0.0976)"},
+    # Box2D 2.4.1's restitution adds energy at e = 1 (its known weak spot; the Box2D back end
+    # is Box2D, bit for bit, and the colour back end shares its restitution; the scene option
+    # restitution_from_step_start: true removes it). Not a bug to fix in these back ends.
+    ("box2d", "long_bounce"): {"energy": "1091 J gained by the e = 1 ball over 100000 steps "
+                                         "(limit 56.4)"},
+    ("colour", "long_bounce"): {"energy": "1091 J, as Box2D's (limit 56.4)"},
+}
+
+
+def main():
+    if len(sys.argv) < 5:
+        print(__doc__)
+        return 2
+    meff, output, backend = sys.argv[1:4]
+    scenes = sys.argv[4:]
+    report = os.path.join(output, backend)
+    command = [meff, "validate", *scenes, "--solver", backend, "--report", report,
+               "--no-plot", "--jobs", "1"]
+    if backend == "box2d":
+        command.append("--plausibility")
+    run = subprocess.run(command, capture_output=True, text=True)
+    print(run.stdout, end="")
+    print(run.stderr, end="", file=sys.stderr)
+    if run.returncode not in (0, 1):
+        print(f"meff validate failed to run (exit status {run.returncode})")
+        return 1
+
+    problems = []
+    seen = set()
+    for summary_dir in sorted(os.listdir(report)):
+        path = os.path.join(report, summary_dir, "summary.json")
+        if not os.path.exists(path):
+            continue
+        with open(path) as f:
+            summary = json.load(f)
+        name = summary["scene"]
+        if not any(os.path.samefile(summary["source"], s) for s in scenes):
+            continue  # left from another run in the same folder
+        seen.add(name)
+        if "divergence_frame" in summary and summary["divergence_frame"] is not None:
+            problems.append(f"{name}: meff's Box2D back end diverged from Box2D 2.4.1 at frame "
+                            f"{summary['divergence_frame']}")
+        checks = summary["plausibility"]["checks"]
+        failed = {c for c, v in checks.items() if not v["passed"]}
+        expected = KNOWN_FAILURES.get((backend, name), {})
+        for check in sorted(failed - set(expected)):
+            v = checks[check]
+            problems.append(f"{name}: {check} {v['value']:.4g} {v['unit']} > limit "
+                            f"{v['limit']:.4g} at frame {v['frame']} ({v['where']})")
+        for check in sorted(set(expected) - failed):
+            v = checks[check]
+            problems.append(f"{name}: {check} now passes ({v['value']:.4g} {v['unit']}, limit "
+                            f"{v['limit']:.4g}; listed as failing with {expected[check]}): "
+                            f"remove it from KNOWN_FAILURES")
+        for check in sorted(failed & set(expected)):
+            v = checks[check]
+            print(f"known failure {backend} {name}: {check} {v['value']:.4g} {v['unit']} "
+                  f"(limit {v['limit']:.4g}; listed: {expected[check]})")
+    for path in scenes:
+        with open(path) as f:
+            name = json.load(f).get("name", os.path.splitext(os.path.basename(path))[0])
+        if name not in seen:
+            problems.append(f"{name}: no summary.json written")
+    if problems:
+        print(f"\n{len(problems)} problem(s) under {backend}:")
+        for problem in problems:
+            print("  " + problem)
+        return 1
+    print(f"\n{len(seen)} scenes plausible under {backend} "
+          f"(known failures as listed: {sum(1 for k in KNOWN_FAILURES if k[0] == backend)})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
