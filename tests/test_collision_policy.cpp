@@ -6,8 +6,8 @@
 // the throughput rule, and that a kept manifold stays within its bound of a freshly computed one.
 #include "analytic_support.h"
 #include "collision/broad_phase.h"
-#include "dynamics/contact.h"
-#include "dynamics/shape.h"
+#include "model/contact.h"
+#include "model/shape.h"
 #include "solvers/solver.h"
 #include "meff/world.h"
 

@@ -1,8 +1,8 @@
 // Micro-benchmarks of the pieces a step spends its time in (see docs/performance.md).
 #include "collision/broad_phase.h"
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
-#include "dynamics/shape.h"
+#include "model/body.h"
+#include "model/contact.h"
+#include "model/shape.h"
 #include "solvers/box2d/contact_solver.h"
 #include "meff/collision.h"
 #include "meff/ray_cast.h"

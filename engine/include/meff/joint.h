@@ -24,6 +24,13 @@ enum class JointType : std::uint8_t
     Gear = 9,
 };
 
+/// A joint's reaction on body B, as Box2D's GetReactionForce/GetReactionTorque.
+struct JointReaction
+{
+    Vec2 force{};    ///< N
+    Real torque = 0; ///< N·m
+};
+
 /// Pins two bodies together at one point (an anchored body when bodyA is static). Its point
 /// constraint is a 2×2 block solved at once (Box2D) or, with SolverSettings::blockJoints off,
 /// as two scalar rows, each with the scalar effective mass.

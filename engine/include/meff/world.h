@@ -1,16 +1,25 @@
-// The world: owns bodies, shapes, joints and contacts, and advances them in time.
+// The world: owns bodies, shapes, joints and contacts, and advances them in time. This header
+// holds only World; what it takes and gives lives by concept beside it (settings.h: WorldDef and
+// the solver settings; events.h; callbacks.h; queries.h; profile.h; snapshot.h; body.h, shape.h,
+// joint.h: the definitions), all included here so that including meff/world.h alone is enough.
 #pragma once
 
 #include "meff/body.h"
+#include "meff/callbacks.h"
 #include "meff/collision.h"
 #include "meff/debug_draw.h"
 #include "meff/error.h"
+#include "meff/events.h"
 #include "meff/function_ref.h"
 #include "meff/ids.h"
 #include "meff/joint.h"
 #include "meff/math.h"
 #include "meff/mover.h"
+#include "meff/profile.h"
+#include "meff/queries.h"
+#include "meff/settings.h"
 #include "meff/shape.h"
+#include "meff/snapshot.h"
 #include "meff/task_system.h"
 
 #include <cstdint>
@@ -21,324 +30,6 @@
 
 namespace meff
 {
-
-/// Tolerances of the solver, collision and sleeping. Defaults are Box2D 2.4.1's constants.
-struct Tolerances
-{
-    Real linearSlop = Real(0.005);        ///< allowed penetration / joint error (m)
-    Real polygonSkin = Real(0.01);        ///< radius added to polygons and segments (m)
-    Real aabbMargin = Real(0.1);          ///< fattening of broad-phase boxes (m)
-    Real maxLinearCorrection = Real(0.2); ///< largest position correction per iteration (m)
-    Real maxAngularCorrection = Real(8) / Real(180) * kPi; ///< rad
-    Real angularSlop = Real(2) / Real(180) * kPi;          ///< rad
-    Real maxTranslation = 2;            ///< largest move of a body in one step (m)
-    Real maxRotation = Real(0.5) * kPi; ///< largest turn of a body in one step (rad)
-    Real baumgarte = Real(0.2);         ///< fraction of overlap removed per position iteration
-    /// Fraction of overlap removed per position iteration of a time-of-impact sub-step.
-    Real toiBaumgarte = Real(0.75);
-    /// Sleeping (when WorldDef::allowSleep): a body whose speeds stay within both sleep
-    /// tolerances accumulates rest time; an island whose every body has rested this long falls
-    /// asleep together (Box2D 2.4.1's b2_timeToSleep, b2_linearSleepTolerance,
-    /// b2_angularSleepTolerance).
-    Real timeToSleep = Real(0.5);                           ///< s
-    Real linearSleepTolerance = Real(0.01);                 ///< m/s
-    Real angularSleepTolerance = Real(2) / Real(180) * kPi; ///< rad/s
-    /// Smallest approach speed that makes a contact hit event (m/s; Box2D v3's
-    /// hitEventThreshold). A speed, but in length units per second, so it scales with them.
-    Real hitEventThreshold = 1;
-};
-
-/// Tolerances for a world measured in `lengthUnitsPerMeter` units per metre (32 for a game
-/// that works in pixels at 32 px/m, say): every length tolerance — slop, skin, broad-phase
-/// margin, maximum correction, maximum translation, linear sleep tolerance, the hit-event
-/// speed — scales together; angles and times do not. Throws
-/// InvalidArgument unless the scale is finite and > 0. Gravity, sizes, speeds and each shape's
-/// restitution threshold (m/s) are yours to give in the same units.
-Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter);
-
-/// Which solver back end steps the world (SolverSettings::kind). Each is one way of trading
-/// speed for accuracy; all solve every constraint row with the scalar effective mass
-/// 1/k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB (docs/effective-mass.md).
-enum class SolverKind
-{
-    /// Box2D 2.4.1's step: velocityIterations sequential-impulse sweeps in island order, then
-    /// positionIterations non-linear Gauss-Seidel sweeps. Bit-identical to Box2D 2.4.1.
-    Box2D,
-    /// The same rows, effective masses, iteration counts, block solvers and position pass as
-    /// Box2D, visited colour by colour (Box2D v3's graph colouring): an island's contacts, and
-    /// apart from them its revolute joints without limit, motor or spring (with blockJoints on),
-    /// are sorted into colours that share no moving body, and each colour is solved four
-    /// constraints at a time in SIMD lanes (eight in a MEFF_AVX2 build). Another Gauss-Seidel
-    /// order, so results agree with Box2D 2.4.1 only up to that order's effect (settled-state
-    /// checks), not bit for bit. Other joints keep the island order after the lanes. Without sleep
-    /// (WorldDef::allowSleep off) and with every moving body awake, the whole world is solved as
-    /// one island, gathered from the arrays instead of searched: the position pass then stops when
-    /// the whole world is within tolerance, not island by island. A moving body kept asleep
-    /// (BodyDef::awake false, SetAwake(false)) brings back the island search.
-    Colour,
-    /// Sub-stepped soft constraints (SoftStepSettings): each step is cut into `substeps`
-    /// sub-steps integrated as velocity Verlet; in each, velocities are integrated, last
-    /// impulses applied, every row solved once with a soft position bias, positions integrated,
-    /// contacts corrected and the rows relaxed without bias. Far more accurate for joints
-    /// (pendulums, chains, ragdolls) than Box2D's step at about its cost, as stiff for stacks;
-    /// see docs/performance.md for the measured trade.
-    SoftStep,
-};
-
-/// How the soft step holds contacts (SoftStepSettings::contacts).
-enum class SoftContactModel
-{
-    /// Rigid velocity rows (two-point manifolds as a 2×2 block with SolverSettings::blockSolver)
-    /// and, after each sub-step's move, a position correction that removes contactCorrection of
-    /// the overlap beyond linearSlop without giving the bodies velocity: stacks do not sag
-    /// under their load and overlapping bodies separate gently.
-    Rigid,
-    /// Box2D v3's soft rows: the overlap is pushed out by a spring of contactHertz and
-    /// contactDampingRatio. Each point sinks in proportion to the load it carries, so stacks
-    /// sag (docs/soft-step.md).
-    Soft,
-};
-
-/// The sub-stepped soft solver (SolverKind::SoftStep). Each step is cut into `substeps`
-/// sub-steps of h = dt/substeps, integrated as velocity Verlet. A soft row drives its position
-/// error C to zero as a damped spring of natural frequency `hertz` and damping ratio ζ would,
-/// solved implicitly over h (docs/soft-step.md derives the coefficients from the effective
-/// mass). Every member may be changed between steps.
-struct SoftStepSettings
-{
-    int substeps = 4; ///< sub-steps per step, ≥ 1
-    /// Relax sweeps per sub-step (≥ 0): every row solved again rigidly, without position bias,
-    /// which takes back the velocity the bias added. Friction is solved in these sweeps (in the
-    /// biased sweep when there are none).
-    int relaxIterations = 1;
-    SoftContactModel contacts = SoftContactModel::Rigid; ///< rigid or soft contacts
-    /// Rigid contacts: fraction of the overlap beyond linearSlop removed per sub-step, in (0, 1].
-    Real contactCorrection = Real(0.1);
-    /// Soft contacts: stiffness (Hz, > 0) and damping ratio (≥ 0). The stiffness is capped at a
-    /// quarter of the sub-step rate, and doubled against a body that cannot move.
-    Real contactHertz = 30;
-    Real contactDampingRatio = 10; ///< soft contacts' damping ratio (≥ 0)
-    /// Largest speed at which overlapping shapes are pushed apart (m/s, > 0): the soft contacts'
-    /// bias, and the rigid contacts' correction per sub-step (at most this × h).
-    Real maxPushOutSpeed = 3;
-    /// Stiffness (Hz, > 0) and damping ratio (≥ 0) of the joints' rigid rows (points, angles,
-    /// limits) while solving, capped at 0.3 of the sub-step rate (72 Hz at 60 Hz × 4).
-    Real jointHertz = 72;
-    Real jointDampingRatio = 0; ///< the joints' rows' damping ratio (≥ 0)
-    /// Solve the point rows of revolute joints that join bodies as a tree (a chain, a ragdoll,
-    /// hanging from at most one fixed pivot) together, exactly, rather than joint by joint: a
-    /// load then passes through the whole tree at once, so light links holding a heavy body do
-    /// not stretch (docs/soft-step.md, "Joint trees").
-    bool jointTrees = true;
-
-    /// Every member equal.
-    friend bool operator==(const SoftStepSettings&, const SoftStepSettings&) = default;
-};
-
-/// How the solver works. Every member may be changed between steps.
-struct SolverSettings
-{
-    SolverKind kind = SolverKind::Box2D; ///< the back end (see SolverKind)
-    int velocityIterations = 8; ///< Box2D, Colour: sequential-impulse sweeps per step, ≥ 1
-    int positionIterations = 3; ///< Box2D, Colour: non-linear Gauss-Seidel sweeps per step, ≥ 0
-    bool warmStarting = true;   ///< start each step (sub-step) from last step's impulses
-    /// Box2D, Colour: solve a two-point manifold's normal rows together as a 2×2 block
-    /// (Box2D's block solver). Off: every row alone with its scalar effective mass.
-    bool blockSolver = true;
-    /// Solve a joint's coupled rows as one block (Box2D): the revolute and mouse point (2×2),
-    /// the prismatic's perpendicular and angular rows (2×2, with its axial limit row in the
-    /// position pass when active), the weld's point and angle (3×3; 2×2 point when soft), the
-    /// motor's linear part (2×2). Off: each row alone with its scalar effective mass.
-    bool blockJoints = true;
-    /// Where restitution's approach speed vn is measured (the bounce targets −e·vn).
-    /// Off (Box2D 2.4.1): after this step's gravity was added, so every bounce returns g·dt
-    /// more speed than arrived and e = 1 gains energy bounce after bounce. On: at the start of
-    /// the step, so restitution never adds energy (results then differ from Box2D's).
-    /// SoftStep always measures it before the first sub-step.
-    bool restitutionFromStepStart = false;
-    SoftStepSettings softStep{}; ///< SoftStep only
-
-    /// Every member equal.
-    friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
-};
-
-/// The name of a solver back end as scene files and the tools write it: "box2d", "colour",
-/// "soft_step".
-const char* SolverKindName(SolverKind kind);
-
-/// Everything needed to create a world.
-struct WorldDef
-{
-    Vec2 gravity{0, -10};    ///< m/s²
-    SolverSettings solver{}; ///< the back end and its settings
-    Tolerances tolerances{}; ///< Box2D's constants (see TolerancesForLengthUnits)
-    /// Let resting islands fall asleep (Box2D 2.4.1's rules, see Tolerances::timeToSleep): a
-    /// sleeping body is not integrated, solved, collided or moved in the broad phase until
-    /// something wakes it. Off by default (Box2D's default is on); World::SetAllowSleeping
-    /// changes it later.
-    bool allowSleep = false;
-    /// Continuous collision (Box2D's continuous physics, on by default there too): after each
-    /// step, fast dynamic bodies are moved back to their first time of impact with static and
-    /// kinematic shapes (bullets: with dynamic shapes too) and re-solved over the rest of the
-    /// step, so they do not tunnel through thin geometry. Off: only the discrete step runs,
-    /// and a body that moves further than a shape's thickness in one step can pass through it.
-    /// Whatever the solver back end, the time-of-impact sub-steps are Box2D 2.4.1's (its
-    /// position pass on the pair, then its velocity sweeps in island order).
-    bool continuous = true;
-};
-
-/// One contact point after a step: Box2D's PostSolve data plus where the point is.
-struct ContactPointReport
-{
-    BodyId bodyA{};               ///< shapeA's body
-    BodyId bodyB{};               ///< shapeB's body
-    ShapeId shapeA{};             ///< the contact's first shape
-    ShapeId shapeB{};             ///< the contact's second shape
-    Vec2 point{};                 ///< world point midway between the surfaces (m)
-    Vec2 normal{};                ///< unit normal from A to B
-    Real separation = 0;          ///< m, negative when overlapping
-    Real normalImpulse = 0;       ///< accumulated over the step's velocity iterations (N·s)
-    Real tangentImpulse = 0;      ///< friction impulse along the tangent cross(normal, 1) (N·s)
-    std::uint32_t featureKey = 0; ///< ContactFeature::Key(), the point's identity
-    int pointIndex = 0;           ///< 0 or 1 within its manifold
-};
-
-/// Two shapes started or stopped touching during the last step.
-struct ContactEvent
-{
-    ShapeId shapeA{}; ///< the contact's first shape
-    ShapeId shapeB{}; ///< the contact's second shape
-};
-
-/// A shape started or stopped overlapping a sensor during the last step. When both shapes are
-/// sensors, the event is reported once, with the contact's first shape as `sensorShape`.
-struct SensorEvent
-{
-    ShapeId sensorShape{};  ///< the sensor
-    ShapeId visitorShape{}; ///< the shape that entered or left it
-};
-
-/// A contact that hit faster than Tolerances::hitEventThreshold in the last step (Box2D v3's
-/// b2ContactHitEvent): its fastest point, measured before the solver's impulses.
-struct ContactHitEvent
-{
-    ShapeId shapeA{};       ///< the contact's first shape
-    ShapeId shapeB{};       ///< the contact's second shape
-    Vec2 point{};           ///< world point of the fastest approaching point, after the step (m)
-    Vec2 normal{};          ///< unit normal from A to B
-    Real approachSpeed = 0; ///< −(relative normal velocity) before impulses (m/s), > threshold
-};
-
-/// What a pre-solve callback sees of one touching contact (Box2D 2.4.1's PreSolve).
-struct PreSolveContact
-{
-    ShapeId shapeA{};                   ///< the contact's first shape
-    ShapeId shapeB{};                   ///< the contact's second shape
-    BodyId bodyA{};                     ///< shapeA's body
-    BodyId bodyB{};                     ///< shapeB's body
-    const Manifold* manifold = nullptr; ///< the fresh manifold (≥ 1 point), body frames
-    WorldManifold worldManifold{};      ///< its normal (A to B), points and separations (world)
-};
-
-/// Called inside World::Step for every touching, non-sensor contact each time its manifold is
-/// updated; returning false disables the contact until its next update (not solved, not
-/// reported, no hit event). Contact begin/end events are geometric and are not affected.
-using PreSolveCallback = std::function<bool(const PreSolveContact& contact)>;
-
-/// Decides whether two shapes get a contact (Box2D 2.4.1's b2ContactFilter::ShouldCollide,
-/// Box2D v3's custom filter). Asked only for pairs the built-in rules let through — filter
-/// bits and groups, a dynamic body among the two, no joint between them without
-/// collideConnected, not on one body — so it adds to them and never overrides them, as a
-/// b2ContactFilter that calls the base class first. Returning false: no contact; the pair is
-/// asked again the next time the broad phase finds it (when a shape's fat box moves).
-using CustomFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
-
-/// A joint's reaction on body B, as Box2D's GetReactionForce/GetReactionTorque.
-struct JointReaction
-{
-    Vec2 force{};    ///< N
-    Real torque = 0; ///< N·m
-};
-
-/// Which shapes a world query sees, as Box2D v3's b2QueryFilter: a shape is seen when its
-/// Filter::categoryBits share a bit with maskBits and its Filter::maskBits share a bit with
-/// categoryBits. The default sees every shape that can collide with anything (a shape whose
-/// categoryBits or maskBits are 0 is never seen). Group indices are not looked at.
-struct QueryFilter
-{
-    std::uint16_t categoryBits = 0xFFFF; ///< what the query is
-    std::uint16_t maskBits = 0xFFFF;     ///< what it wants to find
-};
-
-/// A radial impulse at one instant (Box2D v3's b2ExplosionDef, World::Explode).
-struct ExplosionDef
-{
-    Vec2 position{};                 ///< centre (m)
-    Real radius = 1;                 ///< full strength up to this distance from a shape (m, ≥ 0)
-    Real falloff = 0;                ///< then fading linearly to 0 over this distance (m, ≥ 0)
-    Real impulsePerLength = 1;       ///< N·s per metre of the shape's width facing the centre;
-                                     ///< negative pulls in (an implosion)
-    std::uint16_t maskBits = 0xFFFF; ///< only shapes whose category is in the mask
-};
-
-/// The closest hit of a ray or shape cast.
-struct RayResult
-{
-    ShapeId shape{}; ///< null when nothing was hit
-    Vec2 point{};    ///< world point on the hit shape's surface (m)
-    Vec2 normal{};   ///< unit normal of that surface at the point
-    /// Of the translation travelled to the hit, in [0, 1] (a CastRay callback that returns
-    /// more than 1 lengthens the ray, as in Box2D, and can report fractions beyond 1).
-    Real fraction = 0;
-    bool hit = false; ///< false when nothing was hit
-};
-
-/// Called for each shape a ray or shape cast hits, in broad-phase order (not sorted by
-/// distance), with the hit point, surface normal and fraction of the translation. What it
-/// returns steers the cast, as Box2D's b2RayCastCallback::ReportFixture:
-///   −1 (any negative): ignore this shape and go on, the ray unchanged;
-///    0: stop the cast now;
-///    the fraction it was given: clip the ray there, so only closer hits are reported next
-///    (returning fraction for every call finds the closest hit);
-///    1: go on with the whole ray (all hits).
-/// Any positive value clips the ray to that fraction, as Box2D.
-using CastCallback = FunctionRef<Real(ShapeId shape, Vec2 point, Vec2 normal, Real fraction)>;
-
-/// Called for each shape an overlap query finds; return false to stop the query.
-using OverlapCallback = FunctionRef<bool(ShapeId shape)>;
-
-namespace detail
-{
-struct WorldState;
-}
-
-/// Wall time of the last World::Step's stages, in milliseconds of the steady clock (as Box2D
-/// v3's b2Profile): where a step's time goes, for profiling a game or `meff bench --profile`.
-/// Timings only: they vary from run to run, are not part of the state hash and do not change
-/// the simulation.
-struct StepProfile
-{
-    double step = 0;         ///< ms, the whole step (the sum of the stages below and the rest)
-    double findContacts = 0; ///< ms, broad phase: new pairs become contacts (both passes)
-    double collide = 0;      ///< ms, narrow phase: every touching contact's manifold
-    double solve = 0;        ///< ms, the solver back end: integration, constraints, sleep
-    double synchronize = 0;  ///< ms, moving the moved bodies' shapes in the broad phase
-    double continuous = 0;   ///< ms, continuous collision (0 when it is off)
-};
-
-/// The whole state of a world at one moment — bodies, shapes, joints, contacts with their
-/// warm-starting impulses, the broad phase — for World::RestoreSnapshot. Cheap to copy (shared).
-class WorldSnapshot
-{
-  public:
-    WorldSnapshot() = default;
-    /// A default-constructed snapshot, which holds no world.
-    bool IsEmpty() const { return m_state == nullptr; }
-
-  private:
-    friend class World;
-    std::shared_ptr<const detail::WorldState> m_state;
-};
 
 /// A physics world: its bodies, shapes, joints and contacts, stepped by World::Step. Every
 /// object in it is named by an id and reached through the world's calls.
@@ -621,8 +312,10 @@ class World
     /// Lends the world threads for its steps (task_system.h: a game's job system, or
     /// MakeThreadPool's), or with null takes them back: one thread, the default. Not owned: it
     /// must outlive its use by the world. The results are the same, bit for bit, for any
-    /// thread count. For now only the colour back end uses them (its contact lanes, colour by
-    /// colour); the Box2D back end stays single-threaded and bit-identical to Box2D 2.4.1.
+    /// thread count. The colour and soft-step back ends use them (the narrow phase, the broad
+    /// phase's boxes and pairs, continuous collision's first search, their contact and joint
+    /// lanes, integration); the Box2D back end stays single-threaded and bit-identical to Box2D
+    /// 2.4.1.
     /// Configuration, not state: RestoreSnapshot keeps the current one, and it is outside
     /// snapshots and the state hash. Throws InvalidArgument during a step or when its
     /// ThreadCount() is below 1.

@@ -1,9 +1,7 @@
 // GJK distance with a Voronoi-region simplex solver in barycentric coordinates (after Christer
 // Ericson), and the GJK ray cast (after Gino van den Bergen), in the operation order of Box2D
 // 2.4.1's b2_distance.cpp so that both engines agree bit for bit.
-#include "collision/distance.h"
-
-#include "dynamics/shape.h"
+#include "meff/distance.h"
 
 namespace meff
 {
@@ -48,28 +46,6 @@ DistanceProxy MakeProxy(const ChainSegment& segment)
 {
     return MakeProxy(segment.segment);
 }
-
-namespace detail
-{
-
-DistanceProxy MakeProxy(const Shape& shape)
-{
-    switch (shape.type)
-    {
-    case ShapeType::Circle:
-        return meff::MakeProxy(shape.circle);
-    case ShapeType::Polygon:
-    case ShapeType::Capsule:
-        return meff::MakeProxy(shape.polygon);
-    case ShapeType::Segment:
-        return meff::MakeProxy(shape.segment);
-    case ShapeType::ChainSegment:
-        return meff::MakeProxy(shape.chainSegment);
-    }
-    return {};
-}
-
-} // namespace detail
 
 namespace
 {

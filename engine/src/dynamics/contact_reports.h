@@ -11,7 +11,7 @@
 
 #include "solvers/shared/contact_constraint.h"
 #include "solvers/solver.h"
-#include "meff/world.h"
+#include "meff/events.h"
 
 #include <cstdint>
 #include <span>

@@ -16,11 +16,11 @@
 // bodies rely on the discrete solver. A contact takes at most kMaxSubSteps + 1 events a step.
 #include "dynamics/step_stages.h"
 
-#include "collision/distance.h"
 #include "dynamics/contact_reports.h"
 #include "dynamics/events.h"
 #include "dynamics/impact_event.h"
 #include "dynamics/world_state.h"
+#include "model/shape_proxy.h"
 #include "solvers/shared/island_step.h"
 #include "tasks/parallel_ranges.h"
 

@@ -2,7 +2,7 @@
 // (sensor or contact events), the pre-solve callback, and contact hit events.
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 
 #include <cstdint>
 #include <span>

@@ -3,8 +3,8 @@
 // The impulse on a shape is J = p·w·s along the line from the centre to the shape's closest
 // point, w the shape's width across that line (its projection on the perpendicular, radius
 // included) and s the falloff scale, so a wide box takes more than a thin edge-on one.
-#include "collision/distance.h"
 #include "dynamics/world_state.h"
+#include "model/shape_proxy.h"
 #include "meff/distance.h"
 #include "meff/world.h"
 

@@ -1,7 +1,7 @@
 // The named stages of World::Step (step.cpp) and the contact lifecycle (contact_manager.cpp).
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 
 #include <cstdint>
 

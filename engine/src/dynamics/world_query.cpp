@@ -8,8 +8,8 @@
 //
 // Every query only reads the world.
 #include "collision/broad_phase.h"
-#include "collision/distance.h"
 #include "dynamics/world_state.h"
+#include "model/shape_proxy.h"
 #include "meff/distance.h"
 #include "meff/ray_cast.h"
 #include "meff/validity.h"

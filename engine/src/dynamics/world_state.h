@@ -3,19 +3,22 @@
 #pragma once
 
 #include "collision/broad_phase.h"
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
 #include "dynamics/contact_reports.h"
 #include "dynamics/impact_queue.h"
-#include "dynamics/joint_slot.h"
 #include "dynamics/pair_set.h"
-#include "dynamics/shape.h"
 #include "dynamics/step_scratch.h"
 #include "joints/joint.h"
+#include "model/body.h"
+#include "model/contact.h"
+#include "model/joint_slot.h"
+#include "model/shape.h"
 #include "solvers/box2d/contact_solver.h"
 #include "solvers/shared/island.h"
 #include "solvers/solver.h"
-#include "meff/world.h"
+#include "meff/callbacks.h"
+#include "meff/events.h"
+#include "meff/profile.h"
+#include "meff/settings.h"
 
 #include <cstddef>
 #include <cstdint>

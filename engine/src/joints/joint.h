@@ -10,11 +10,11 @@
 // writes them back at the end (`data.velocities[joint.indexA] = {vA, wA};`).
 #pragma once
 
-#include "dynamics/solver_types.h"
 #include "joints/mat33.h"
 #include "joints/softness.h" // the soft row shared by every back end's springs
+#include "model/solver_types.h"
 #include "meff/joint.h"
-#include "meff/world.h"
+#include "meff/settings.h"
 
 #include <cstdint>
 #include <variant>

@@ -12,7 +12,7 @@
 #pragma once
 
 #include "collision/collision_policy.h"
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 
 #include <cstdint>
 #include <memory>

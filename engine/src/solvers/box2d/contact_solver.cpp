@@ -1,7 +1,7 @@
 #include "solvers/box2d/contact_solver.h"
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
+#include "model/body.h"
+#include "model/contact.h"
 
 namespace meff::detail
 {

@@ -6,7 +6,7 @@
 // Optionally, a two-point manifold's normal rows are solved together (Box2D's block solver).
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 #include "solvers/shared/contact_constraint.h"
 #include "solvers/shared/island_step.h"
 

@@ -1,8 +1,8 @@
 #include "solvers/box2d/joint_solver.h"
 
-#include "dynamics/body.h"
-#include "dynamics/joint_slot.h"
 #include "joints/joint.h"
+#include "model/body.h"
+#include "model/joint_slot.h"
 
 namespace meff::detail
 {

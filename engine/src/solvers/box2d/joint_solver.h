@@ -3,8 +3,8 @@
 // SolvePositionConstraints of each joint type).
 #pragma once
 
-#include "dynamics/solver_types.h"
 #include "joints/joint.h"
+#include "model/solver_types.h"
 #include "solvers/shared/island_step.h"
 #include "solvers/shared/sequential_joints.h"
 

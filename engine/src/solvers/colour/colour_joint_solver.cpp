@@ -1,8 +1,8 @@
 #include "solvers/colour/colour_joint_solver.h"
 
-#include "dynamics/body.h"
-#include "dynamics/joint_slot.h"
 #include "joints/joint.h"
+#include "model/body.h"
+#include "model/joint_slot.h"
 #include "solvers/shared/sequential_joints.h"
 #include "tasks/parallel_ranges.h"
 

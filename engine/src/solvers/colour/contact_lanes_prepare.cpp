@@ -10,8 +10,8 @@
 // where a body has several contacts their sum is rounded in another order than in Box2D's.
 #include "solvers/colour/contact_lanes.h"
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
+#include "model/body.h"
+#include "model/contact.h"
 #include "solvers/lanes/lane_bodies.h"
 
 #include <algorithm>

@@ -13,7 +13,7 @@
 // their warm start colour by colour.
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 #include "solvers/lanes/colour_groups.h"
 #include "solvers/lanes/wide_real.h"
 

@@ -6,7 +6,7 @@
 // (WithWorkerStores), so the results are the same bit for bit for any thread count.
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 #include "solvers/lanes/graph_colouring.h"
 #include "solvers/lanes/lane_bodies.h"
 #include "tasks/parallel_ranges.h"

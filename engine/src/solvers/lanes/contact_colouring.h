@@ -1,10 +1,10 @@
 // The graph colouring (graph_colouring.h) of an island's contacts.
 #pragma once
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
-#include "solvers/shared/contact_constraint.h"
+#include "model/body.h"
+#include "model/contact.h"
 #include "solvers/lanes/graph_colouring.h"
+#include "solvers/shared/contact_constraint.h"
 
 #include <cstddef>
 

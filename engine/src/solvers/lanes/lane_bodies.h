@@ -3,7 +3,7 @@
 // joint solvers that work by colour (graph_colouring.h).
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 #include "solvers/lanes/graph_colouring.h"
 #include "solvers/lanes/wide_real.h"
 

@@ -4,8 +4,8 @@
 // soft step on its rigid contacts.
 #include "solvers/shared/contact_constraint.h"
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
+#include "model/body.h"
+#include "model/contact.h"
 
 namespace meff::detail
 {

@@ -5,7 +5,7 @@
 // solver and the coloured solver's overflow.
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 #include "meff/collision.h"
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 #include "solvers/shared/island.h"
 
-#include "dynamics/joint_slot.h"
+#include "model/joint_slot.h"
 #include "tasks/parallel_ranges.h"
 #include "meff/error.h"
 

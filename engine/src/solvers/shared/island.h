@@ -8,8 +8,8 @@
 // walk through each body's contact and joint lists (a cache miss per edge).
 #pragma once
 
-#include "dynamics/body.h"
-#include "dynamics/solver_types.h"
+#include "model/body.h"
+#include "model/solver_types.h"
 #include "solvers/solver.h"
 
 #include <cstdint>

@@ -1,8 +1,8 @@
 #include "solvers/shared/island_step.h"
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
-#include "dynamics/joint_slot.h"
+#include "model/body.h"
+#include "model/contact.h"
+#include "model/joint_slot.h"
 #include "tasks/parallel_ranges.h"
 
 #include <cmath>

@@ -8,7 +8,7 @@
 //   bodies → report solved contacts → sleep
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 #include "solvers/shared/contact_constraint.h"
 #include "solvers/shared/island.h"
 #include "solvers/solver.h"

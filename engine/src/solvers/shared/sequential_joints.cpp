@@ -1,7 +1,7 @@
 #include "solvers/shared/sequential_joints.h"
 
-#include "dynamics/body.h"
 #include "joints/joint.h"
+#include "model/body.h"
 
 namespace meff::detail
 {

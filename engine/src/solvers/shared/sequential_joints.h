@@ -4,8 +4,8 @@
 // soft step when it prepares a joint.
 #pragma once
 
-#include "dynamics/solver_types.h"
 #include "joints/joint.h"
+#include "model/solver_types.h"
 
 #include <span>
 

@@ -1,6 +1,6 @@
 #include "solvers/soft_step/soft_bodies.h"
 
-#include "dynamics/body.h"
+#include "model/body.h"
 #include "solvers/soft_step/soft_delta_lanes.h"
 #include "tasks/parallel_ranges.h"
 

@@ -4,7 +4,7 @@
 // recomputing transforms (Box2D v3's body state).
 #pragma once
 
-#include "dynamics/solver_types.h"
+#include "model/solver_types.h"
 #include "solvers/shared/island.h"
 #include "solvers/solver.h"
 

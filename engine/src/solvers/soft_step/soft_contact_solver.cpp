@@ -2,8 +2,8 @@
 
 #include "solvers/soft_step/soft_contact_direct.h"
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
+#include "model/body.h"
+#include "model/contact.h"
 #include "tasks/parallel_ranges.h"
 
 namespace meff::detail

@@ -7,9 +7,9 @@
 // point block whose diagonal entries are the seed's k along x̂ and ŷ.
 #pragma once
 
-#include "dynamics/solver_types.h"
-#include "solvers/soft_step/soft_bodies.h"
 #include "joints/softness.h"
+#include "model/solver_types.h"
+#include "solvers/soft_step/soft_bodies.h"
 
 #include <cstdint>
 

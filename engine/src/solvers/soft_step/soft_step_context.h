@@ -2,10 +2,10 @@
 // joints, and the island's bodies.
 #pragma once
 
-#include "dynamics/solver_types.h"
-#include "solvers/soft_step/soft_bodies.h"
 #include "joints/softness.h"
-#include "meff/world.h"
+#include "model/solver_types.h"
+#include "solvers/soft_step/soft_bodies.h"
+#include "meff/settings.h"
 
 namespace meff::detail
 {

@@ -1,7 +1,7 @@
 #include "solvers/soft_step/soft_step_solver.h"
 
-#include "dynamics/body.h"
-#include "dynamics/joint_slot.h"
+#include "model/body.h"
+#include "model/joint_slot.h"
 #include "solvers/shared/sequential_joints.h"
 #include "tasks/parallel_ranges.h"
 

@@ -2,9 +2,9 @@
 // world's joint list and on its two bodies' joint edge lists (newest first, as Box2D 2.4.1).
 #pragma once
 
-#include "dynamics/body.h"
-#include "dynamics/contact.h"
 #include "joints/joint.h"
+#include "model/body.h"
+#include "model/contact.h"
 
 #include <cstdint>
 

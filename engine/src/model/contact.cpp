@@ -1,7 +1,7 @@
-#include "dynamics/contact.h"
+#include "model/contact.h"
 
-#include "collision/distance.h"
-#include "dynamics/shape.h"
+#include "model/shape.h"
+#include "model/shape_proxy.h"
 
 namespace meff::detail
 {

@@ -1,4 +1,4 @@
-// Engine-internal side of the distance queries (meff/distance.h): proxies for world shapes.
+// The distance queries' proxy (meff/distance.h) of a world shape.
 #pragma once
 
 #include "meff/distance.h"

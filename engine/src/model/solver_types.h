@@ -3,7 +3,8 @@
 #pragma once
 
 #include "meff/math.h"
-#include "meff/world.h"
+#include "meff/settings.h"
+#include "meff/task_system.h"
 
 namespace meff::detail
 {
