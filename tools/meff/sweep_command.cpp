@@ -44,6 +44,7 @@
 #include "progress.h"
 #include "threads_option.h"
 
+#include "meff/analytic.h"
 #include "meff/box2d_mirror.h"
 #include "meff/box2d_v3_features.h"
 
@@ -539,45 +540,13 @@ Timing TimeRun(const Scene& scene, TaskSystem* threads, double seconds)
 // ---------------------------------------------------------------------------------------------
 // The exact answers
 
-/// A rigid pendulum: angle ψ from hanging straight down along gravity, ψ'' = −k sin ψ.
-/// Integrated with classical RK4 in double at a step 500 times finer than the sampling
-/// (67 µs): its error, ~h⁴ per unit time, is far below float round-off in the engines.
-class PendulumSolution
+/// A rigid pendulum's exact motion (meff/analytic.h), sampled at kSampleHz and integrated at a
+/// step 500 times finer than the sampling (67 µs).
+analytic::PendulumMotion PendulumSolution(double k, double psi0, double omega0, int samples)
 {
-  public:
-    PendulumSolution(double k, double psi0, double omega0, int samples)
-    {
-        constexpr int kSubsteps = 500;
-        const double h = 1.0 / kSampleHz / kSubsteps;
-        double psi = psi0;
-        double omega = omega0;
-        const auto accel = [k](double angle) { return -k * std::sin(angle); };
-        m_psi.push_back(psi);
-        for (int s = 0; s < samples; ++s)
-        {
-            for (int i = 0; i < kSubsteps; ++i)
-            {
-                const double k1p = omega;
-                const double k1w = accel(psi);
-                const double k2p = omega + 0.5 * h * k1w;
-                const double k2w = accel(psi + 0.5 * h * k1p);
-                const double k3p = omega + 0.5 * h * k2w;
-                const double k3w = accel(psi + 0.5 * h * k2p);
-                const double k4p = omega + h * k3w;
-                const double k4w = accel(psi + h * k3p);
-                psi += h / 6 * (k1p + 2 * k2p + 2 * k3p + k4p);
-                omega += h / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
-            }
-            m_psi.push_back(psi);
-        }
-    }
-
-    /// ψ at sample k (time k/kSampleHz).
-    double Angle(std::size_t k) const { return m_psi.at(k); }
-
-  private:
-    std::vector<double> m_psi;
-};
+    constexpr int kSubsteps = 500;
+    return analytic::PendulumMotion(k, psi0, omega0, 1.0 / kSampleHz, kSubsteps, samples);
+}
 
 /// Where a body on a rod of length `d` from `pivot` is at angle ψ from `down` (unit).
 Vec2d OnRod(Vec2d pivot, Vec2d down, double d, double psi)
@@ -732,7 +701,7 @@ std::unique_ptr<ErrorModel> PendulumModel(const Scene& scene, double seconds)
     const BuiltScene built = BuildWorld(scene);
     const PendulumSetup p = SetUpPendulum(scene, built, scene.analytic->joints.at(0));
     const int samples = SampleCount(seconds);
-    const PendulumSolution solution(p.k, p.psi0, p.omega0, samples);
+    const analytic::PendulumMotion solution = PendulumSolution(p.k, p.psi0, p.omega0, samples);
     std::vector<std::vector<Vec2d>> expected;
     for (int k = 0; k <= samples; ++k)
     {
@@ -770,7 +739,8 @@ std::unique_ptr<ErrorModel> CradleModel(const Scene& scene, double seconds)
                                                  "cradle must be equal");
     }
     const int samples = SampleCount(seconds);
-    const PendulumSolution solution(first.k, first.psi0, first.omega0, samples);
+    const analytic::PendulumMotion solution =
+        PendulumSolution(first.k, first.psi0, first.omega0, samples);
     std::vector<std::vector<Vec2d>> expected;
     for (int k = 0; k <= samples; ++k)
     {
