@@ -19,6 +19,10 @@ import time
 MEFF, SOURCE, WORK, CASE = sys.argv[1:5]
 ROD = os.path.join(SOURCE, "samples", "scenes", "anchored_rod.json")
 STACK = os.path.join(SOURCE, "samples", "scenes", "stack10.json")
+# The resident memory the largest scene the defaults accept may take (docs/hostile-input.md;
+# measured 336 MiB), three times that under AddressSanitizer (its shadow memory and freed-block
+# quarantine).
+MEMORY_BOUND_MIB = 1024
 
 
 def fail(message):
@@ -309,6 +313,45 @@ def case_out_of_memory():
     expect_one_line_error(status, stderr, 1, "out of memory")
     if leftovers() or os.path.exists(output):
         fail("left behind: %s" % os.listdir(WORK))
+
+
+# --- the largest scene the defaults accept, within a stated memory bound -----------------
+
+
+def asan_build():
+    """Whether MEFF was built with AddressSanitizer (its allocator and shadow memory)."""
+    linked = subprocess.run(["ldd", MEFF], capture_output=True, text=True).stdout
+    return "libasan" in linked
+
+
+def case_largest_scene():
+    """50,000 bodies (the ground and 49,999 of two shapes each: 99,999 shapes), 49,999 joints
+    and about 200,000 overlapping pairs, every default limit reached or nearly: loaded, built
+    and stepped twice by each back end within MEMORY_BOUND_MIB of resident memory."""
+    columns, rows = 1000, 50
+    bodies, joints = [{"name": "ground", "type": "static", "shapes": [
+        {"type": "segment", "points": [[-1.0, 0.0], [2.0 * columns, 0.0]]}]}], []
+    for c in range(columns):
+        for r in range(rows if c + 1 < columns else rows - 1):
+            name = "b%d_%d" % (c, r)
+            bodies.append({"name": name, "type": "dynamic", "position": [2.0 * c, 0.5 + 0.99 * r],
+                           "shapes": [{"type": "box", "half_width": 0.5, "half_height": 0.5},
+                                      {"type": "circle", "radius": 0.45}]})
+            below = "ground" if r == 0 else "b%d_%d" % (c, r - 1)
+            joints.append({"name": "j" + name, "type": "revolute", "body_a": below, "body_b": name,
+                           "anchor": [2.0 * c, 0.99 * r]})
+    bound = MEMORY_BOUND_MIB * (3 if asan_build() else 1)
+    for solver in ("box2d", "colour", "soft_step"):
+        scene = os.path.join(WORK, "largest_%s.json" % solver)
+        write_json(scene, {"meff_scene": 1, "world": {"frames": 2, "solver": solver},
+                           "bodies": bodies, "joints": joints})
+        print("%d bodies, %d joints, %.1f MB" % (len(bodies), len(joints),
+                                                 os.path.getsize(scene) / 1e6))
+        status, _, stderr, peak = run_measured(["run", scene], timeout=900)
+        if status != 0:
+            fail("%s: the largest scene the defaults accept was refused: %r" % (solver, stderr))
+        if peak > bound:
+            fail("%s: peak %.0f MiB, over the stated %d MiB" % (solver, peak, bound))
 
 
 def main():
