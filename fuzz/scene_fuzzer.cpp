@@ -5,12 +5,11 @@
 // SimulationError (the engine's documented stop on a non-finite state). Anything
 // else — a crash, a sanitizer report, another exception, a message without its file name —
 // is a finding. Built only with -DMEFF_FUZZ=ON and clang (fuzz/CMakeLists.txt).
+#include "fuzz_checks.h"
 #include "meff/scene.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 
@@ -22,29 +21,7 @@ constexpr const char* kSource = "fuzz.json";
 /// few enough that a 200-body sample still runs thousands of inputs per second.
 constexpr int kMaxSteps = 3;
 
-[[noreturn]] void Finding(const char* what)
-{
-    // abort() is what libFuzzer reports as a crash, with the input saved.
-    std::fprintf(stderr, "scene_fuzzer finding: %s\n", what);
-    std::abort();
-}
-
-void CheckRejection(const meff::SceneError& error)
-{
-    if (error.messages().empty())
-    {
-        Finding("SceneError without messages");
-    }
-    for (const std::string& message : error.messages())
-    {
-        // "FILE: FIELD.PATH: MESSAGE" (docs/scene-format.md): at least the file and a message.
-        if (message.rfind(std::string(kSource) + ": ", 0) != 0 ||
-            message.size() <= std::char_traits<char>::length(kSource) + 2)
-        {
-            Finding(("rejection message without the file name: " + message).c_str());
-        }
-    }
-}
+constexpr const char* kTarget = "scene_fuzzer";
 
 } // namespace
 
@@ -58,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     catch (const meff::SceneError& error)
     {
-        CheckRejection(error);
+        meff::fuzz::CheckRejection(kTarget, error, kSource);
         return 0;
     }
     try
@@ -74,8 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
         // The loader applies the engine's own rules (meff/validity.h): a scene it accepts is
         // one the engine builds. A refusal here means the two disagree.
-        Finding(("the engine refused a scene the loader accepted: " + std::string(error.what()))
-                    .c_str());
+        meff::fuzz::Finding(kTarget, "the engine refused a scene the loader accepted: " +
+                                         std::string(error.what()));
     }
     catch (const meff::SimulationError&)
     {
