@@ -713,7 +713,8 @@ void ReadDistanceFields(ObjectReader& reader, const Scene& scene, SceneJoint& jo
     const double longest = double(MaxDistanceJointLength());
     if (length && *length > longest)
     {
-        reader.Fail("length", "must be at most " + scene_detail::FormatNumber(longest) +
+        reader.Fail("length", "must be at most " +
+                                  scene_detail::FormatReal(MaxDistanceJointLength()) +
                                   " m (the solvers square it)");
         length.reset();
     }
@@ -726,7 +727,8 @@ void ReadDistanceFields(ObjectReader& reader, const Scene& scene, SceneJoint& jo
         reader.Number("max_length", length ? length : std::optional<double>(0.0));
     if (minLength && *minLength > longest)
     {
-        reader.Fail("min_length", "must be at most " + scene_detail::FormatNumber(longest) +
+        reader.Fail("min_length", "must be at most " +
+                                      scene_detail::FormatReal(MaxDistanceJointLength()) +
                                       " m (the solvers square it)");
     }
     else if (minLength && maxLength && *maxLength < *minLength)
