@@ -82,6 +82,24 @@ World MakePile()
 
 } // namespace
 
+TEST_CASE("UsesThreads says whether the back end hands work to the task system", "[world]")
+{
+    World world{WorldDef{}};
+    CHECK_FALSE(world.UsesThreads()); // no task system
+    const std::unique_ptr<TaskSystem> pool = MakeThreadPool(2);
+    world.SetTaskSystem(pool.get());
+    CHECK_FALSE(world.UsesThreads()); // the default back end, Box2D's, stays on one thread
+    for (const SolverKind kind : {SolverKind::Colour, SolverKind::SoftStep})
+    {
+        SolverSettings settings = world.GetSolverSettings();
+        settings.kind = kind;
+        world.SetSolverSettings(settings);
+        CHECK(world.UsesThreads());
+    }
+    world.SetTaskSystem(nullptr);
+    CHECK_FALSE(world.UsesThreads());
+}
+
 TEST_CASE("a warmed-up world does not allocate while stepping", "[world]")
 {
     World world = MakePile();

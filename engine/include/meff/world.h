@@ -315,13 +315,17 @@ class World
     /// thread count. The colour and soft-step back ends use them (the narrow phase, the broad
     /// phase's boxes and pairs, continuous collision's first search, their contact and joint
     /// lanes, integration); the Box2D back end stays single-threaded and bit-identical to Box2D
-    /// 2.4.1.
+    /// 2.4.1, whatever task system it is lent (UsesThreads says which).
     /// Configuration, not state: RestoreSnapshot keeps the current one, and it is outside
     /// snapshots and the state hash. Throws InvalidArgument during a step or when its
     /// ThreadCount() is below 1.
     void SetTaskSystem(TaskSystem* tasks);
     /// The task system the world steps on; null: the calling thread.
     TaskSystem* GetTaskSystem() const;
+    /// Whether Step hands work to the task system: true when one is set and the back end is
+    /// Colour or SoftStep; false without one, and always with the Box2D back end, which steps
+    /// on the calling thread (Box2D 2.4.1's serial order) even when lent threads.
+    bool UsesThreads() const;
 
     // Reports of the last step
     /// Every point of every touching, solved contact, with its impulses (Box2D's PostSolve).

@@ -1586,6 +1586,11 @@ TaskSystem* World::GetTaskSystem() const
     return State().tasks;
 }
 
+bool World::UsesThreads() const
+{
+    return State().StageTasks() != nullptr;
+}
+
 std::span<const ContactPointReport> World::GetContactReports() const
 {
     // Built on the first read after a step (contact_reports.h): the world's visible state does
