@@ -103,8 +103,8 @@ struct SoftStepSettings
     /// quarter of the sub-step rate, and doubled against a body that cannot move.
     Real contactHertz = 30;
     Real contactDampingRatio = 10; ///< soft contacts' damping ratio (≥ 0)
-    /// Largest speed at which overlapping shapes are pushed apart (m/s, > 0): the soft contacts'
-    /// bias, and the rigid contacts' correction per sub-step (at most this × h).
+    /// Largest speed (m/s, > 0) of the soft contacts' push-out, of a rigid contact's correction
+    /// (× h per sub-step) and of a joint's gap closed by velocity (beyond it: bodies moved).
     Real maxPushOutSpeed = 3;
     /// Stiffness (Hz, > 0) and damping ratio (≥ 0) of the joints' rigid rows (points, angles,
     /// limits) while solving, capped at 0.3 of the sub-step rate (72 Hz at 60 Hz × 4).
