@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -325,7 +326,12 @@ TEST_CASE("b2dJson import: world settings and bodies, in every convention")
 
 TEST_CASE("b2dJson import: circle, polygon, edge, chain and loop fixtures, filters, sensors")
 {
-    const LoadedScene loaded = LoadSceneFile(Level("fixtures.json"));
+    // Read as Box2D 2.4.1 reads them (one-sided chains); the default, two-sided as 2.3, is the
+    // next test's.
+    B2dJsonImportOptions oneSided;
+    oneSided.twoSidedChains = false;
+    const LoadedScene loaded =
+        LoadSceneFile(Level("fixtures.json"), SceneFormat::Auto, {}, oneSided);
     const std::vector<SceneShape>& terrain = loaded.scene.bodies.at(0).shapes;
     // The open chain, the old-style loop, the edge with ghosts, the chain closed by repeating
     // its first point, the two-point polygon, the sensor.
@@ -369,13 +375,41 @@ TEST_CASE("b2dJson import: circle, polygon, edge, chain and loop fixtures, filte
     CHECK(blue.filter.mask == 0xFFFF); // absent: Box2D's default
     CHECK(blue.vertices.size() == 3);
     REQUIRE(loaded.warnings.size() == 1);
-    CHECK(loaded.warnings[0].find("edges with ghost vertices are one-sided, as in Box2D 2.4") !=
+    CHECK(loaded.warnings[0].find("chains and edges with ghost vertices kept one-sided, as in "
+                                  "Box2D 2.4.1") != std::string::npos);
+    CHECK(loaded.warnings[0].find("body[0].fixture[0], body[0].fixture[1], body[0].fixture[2]") !=
           std::string::npos);
+}
+
+TEST_CASE("b2dJson import: chains and ghosted edges two-sided by default, one segment per edge")
+{
+    const LoadedScene loaded = LoadSceneFile(Level("fixtures.json"));
+    const std::vector<SceneShape>& terrain = loaded.scene.bodies.at(0).shapes;
+    // The open chain's 3 edges, the old-style loop's 4, the ghosted edge, the closed chain's 4,
+    // the two-point polygon, the sensor.
+    REQUIRE(terrain.size() == 14);
+    for (std::size_t k = 0; k < 13; ++k)
+    {
+        CHECK(terrain[k].type == SceneShapeType::Segment);
+        CHECK_FALSE(terrain[k].oneSided);
+    }
+    CHECK(terrain[0].point1 == SceneVec2{12, 4});
+    CHECK(terrain[2].point2 == SceneVec2{-12, 4});
+    CHECK(terrain[6].point1 == SceneVec2{-1, 7}); // the loop's closing edge
+    CHECK(terrain[6].point2 == SceneVec2{-1, 6});
+    CHECK(terrain[7].point1 == SceneVec2{4, 0});  // the edge, its ghosts dropped
+    CHECK(terrain[11].point2 == SceneVec2{3, 9}); // the closed chain's last edge
+    REQUIRE(loaded.warnings.size() == 1);
+    CHECK(loaded.warnings[0].find("imported two-sided, as Box2D 2.3") != std::string::npos);
 }
 
 TEST_CASE("b2dJson import: every joint kind, anchors in the bodies' frames")
 {
-    const Scene scene = LoadSceneFile(Level("joints.json")).scene;
+    // The springs' numbers as Box2D 2.4.1 reads them; the default keeps 2.3's sizing, which
+    // rescales the wheel's (its spring mass is not its bodies' mass): tested below.
+    B2dJsonImportOptions as241;
+    as241.springsAs23 = false;
+    const Scene scene = LoadSceneFile(Level("joints.json"), SceneFormat::Auto, {}, as241).scene;
     REQUIRE(scene.joints.size() == 9);
     const SceneJoint& shoulder = scene.joints[0];
     CHECK(shoulder.type == JointType::Revolute);
@@ -521,4 +555,82 @@ TEST_CASE("b2dJson and meff files are told apart by their content")
     // LoadSceneFile goes by content, or by the format it is told.
     CHECK(LoadSceneFile(Level("joints.json")).scene.joints.size() == 9);
     CHECK_THROWS_AS(LoadSceneFile(Level("joints.json"), SceneFormat::Meff), SceneError);
+}
+
+namespace
+{
+
+/// The ball of chain_ground.json after `frames` steps of the level read with `options`.
+double BallHeightAfter(const B2dJsonImportOptions& options, int frames)
+{
+    const Scene scene =
+        LoadSceneFile(Level("chain_ground.json"), SceneFormat::Auto, {}, options).scene;
+    BuiltScene built = BuildWorld(scene);
+    for (int frame = 0; frame < frames; ++frame)
+    {
+        built.Step(Real(scene.world.dt));
+    }
+    return double(built.world.GetPosition(built.bodyByName.at("ball")).y);
+}
+
+} // namespace
+
+TEST_CASE("b2dJson import: a Box2D 2.3 chain is two-sided, so a ball dropped on it stays on it")
+{
+    // The ground chain runs left to right, so Box2D 2.4.1's one-sided chain is solid below it;
+    // R.U.B.E. targets 2.3, whose chains collide on both sides. The ball (radius 0.5 m) starts
+    // 3 m up over the chain's flat middle at y = 0.
+    const LoadedScene loaded = LoadSceneFile(Level("chain_ground.json"));
+    const std::vector<SceneShape>& ground = loaded.scene.bodies.at(0).shapes;
+    REQUIRE(ground.size() == 3); // one two-sided segment per edge
+    for (const SceneShape& segment : ground)
+    {
+        CHECK(segment.type == SceneShapeType::Segment);
+        CHECK_FALSE(segment.oneSided);
+        CHECK(segment.friction == 0.6);
+    }
+    CHECK(ground[1].point1 == SceneVec2{-2, 0});
+    CHECK(ground[1].point2 == SceneVec2{2, 0});
+    int chainWarnings = 0;
+    for (const std::string& warning : loaded.warnings)
+    {
+        chainWarnings += warning.find("imported two-sided") != std::string::npos ? 1 : 0;
+    }
+    CHECK(chainWarnings == 1);
+    // At rest on the segment after 3 s: its centre at the radius, within the contact slop the
+    // solver leaves (Box2D's linear slop, 0.005 m).
+    CHECK(BallHeightAfter({}, 180) == Approx(0.5).margin(0.005));
+    // Kept one-sided (2.4.1's chain): the ball falls through, far below the ground.
+    B2dJsonImportOptions oneSided;
+    oneSided.twoSidedChains = false;
+    const Scene kept =
+        LoadSceneFile(Level("chain_ground.json"), SceneFormat::Auto, {}, oneSided).scene;
+    REQUIRE(kept.bodies.at(0).shapes.size() == 1);
+    CHECK(kept.bodies[0].shapes[0].type == SceneShapeType::Chain);
+    CHECK(BallHeightAfter(oneSided, 180) < -20);
+}
+
+TEST_CASE("b2dJson import: a Box2D 2.3 spring keeps its stiffness from the joint's effective mass")
+{
+    // The crate (1 m box, 1 kg, I = 1/6 kg·m²) hangs from a static hanger by a spring whose
+    // anchor is 0.5 m off its centre, across the spring's line: Box2D 2.3's effective mass is
+    // 1/(1/m + 0.5²/I) = 1/(1 + 1.5) = 0.4 kg, 2.4.1's is the crate's mass, 1 kg. So 2.3's
+    // 2 Hz, ζ 0.5 spring is 2.4.1's 2·√0.4 Hz, ζ 0.5·√0.4 (same k = m·ω², d = 2·m·ζ·ω).
+    const LoadedScene loaded = LoadSceneFile(Level("chain_ground.json"));
+    const SceneJoint& spring = loaded.scene.joints.at(0);
+    // The masses are float sums of the engine; 1e-6 relative is float round-off.
+    CHECK(spring.stiffnessHz == Approx(2 * std::sqrt(0.4)).epsilon(1e-6));
+    CHECK(spring.dampingRatio == Approx(0.5 * std::sqrt(0.4)).epsilon(1e-6));
+    int springWarnings = 0;
+    for (const std::string& warning : loaded.warnings)
+    {
+        springWarnings += warning.find("keep Box2D 2.3's stiffness") != std::string::npos ? 1 : 0;
+    }
+    CHECK(springWarnings == 1);
+    B2dJsonImportOptions as241;
+    as241.springsAs23 = false;
+    const Scene kept =
+        LoadSceneFile(Level("chain_ground.json"), SceneFormat::Auto, {}, as241).scene;
+    CHECK(kept.joints.at(0).stiffnessHz == 2);
+    CHECK(kept.joints.at(0).dampingRatio == 0.5);
 }

@@ -434,7 +434,10 @@ std::optional<Json> PropertyJson(Converter& converter, const CustomProperties& p
 class Importer
 {
   public:
-    explicit Importer(Converter& converter) : m_converter(converter) {}
+    Importer(Converter& converter, const B2dJsonImportOptions& options)
+        : m_converter(converter), m_options(options)
+    {
+    }
 
     Out Convert(const Json& level)
     {
@@ -836,7 +839,11 @@ class Importer
             // missing one is the end segment continued, as the scene loader fills it in.
             const bool before = geometry.Boolean("hasVertex0", false);
             const bool after = geometry.Boolean("hasVertex3", false);
-            if (before || after)
+            if ((before || after) && TwoSidedChains())
+            {
+                m_twoSidedChains.push_back(fixture.Path()); // Box2D 2.3's edge: two-sided
+            }
+            else if (before || after)
             {
                 shape["one_sided"] = true;
                 Ghost(geometry, before, "vertex0", "prev", shape, from);
@@ -902,7 +909,22 @@ class Importer
         {
             list.push_back(Pair(point));
         }
+        if (TwoSidedChains())
+        {
+            // Box2D 2.3's chain: each edge collides on both sides, as a two-sided segment.
+            const std::size_t edges = shape.contains("loop") ? points->size() : points->size() - 1;
+            for (std::size_t i = 0; i < edges; ++i)
+            {
+                add(Out{{"type", "segment"},
+                        {"points",
+                         {Pair((*points)[i]), Pair((*points)[(i + 1) % points->size()])}}},
+                    {{"type", fixture.PathOf(key)}, {"points", geometry.PathOf("vertices")}});
+            }
+            m_twoSidedChains.push_back(fixture.Path());
+            return;
+        }
         shape["points"] = list;
+        m_oneSidedEdges.push_back(fixture.Path());
         if (!oldLoop && !closed)
         {
             Ghost(geometry, geometry.Boolean("hasPrevVertex", false), "prevVertex", "prev", shape,
@@ -1251,6 +1273,12 @@ class Importer
         {
             UseAuthoringForm(*form, *a, *b, out);
         }
+        // 2.3 sizes these springs from the joint's effective mass (Importer::Springs23).
+        if ((type == "distance" || type == "wheel" || type == "weld") &&
+            out.contains("stiffness_hz") && out["stiffness_hz"].get<double>() > 0)
+        {
+            m_springs23.emplace_back(sceneIndex, joint.Path());
+        }
         return out;
     }
 
@@ -1452,6 +1480,7 @@ class Importer
 
     // ---- what was left out -----------------------------------------------------------------
 
+  public:
     /// "body[1], body[4], ... (7 in all)"
     static std::string List(const std::vector<std::string>& items)
     {
@@ -1467,6 +1496,7 @@ class Importer
         return text;
     }
 
+  private:
     static std::string Count(std::size_t n, const char* one, const char* many)
     {
         return std::to_string(n) + " " + (n == 1 ? one : many);
@@ -1501,9 +1531,18 @@ class Importer
         }
         if (!m_oneSidedEdges.empty() && !m_writtenByMeff)
         {
-            m_converter.Warn("edges with ghost vertices are one-sided, as in Box2D 2.4 (two-sided "
-                             "in 2.3, which R.U.B.E. targets): " +
+            m_converter.Warn("chains and edges with ghost vertices kept one-sided, as in Box2D "
+                             "2.4.1 (two-sided in 2.3, which R.U.B.E. targets; without "
+                             "--b2djson-chains one_sided they import two-sided): " +
                              List(m_oneSidedEdges));
+        }
+        if (!m_twoSidedChains.empty())
+        {
+            m_converter.Warn("chains and edges with ghost vertices imported two-sided, as Box2D "
+                             "2.3 (which R.U.B.E. targets) collides them: one two-sided segment "
+                             "per edge (--b2djson-chains one_sided keeps 2.4.1's one-sided "
+                             "chains): " +
+                             List(m_twoSidedChains));
         }
         std::vector<std::string> renamed = m_bodyNames.Changed();
         for (const std::string& name : m_jointNames.Changed())
@@ -1539,7 +1578,24 @@ class Importer
     std::vector<std::string> m_inactiveJoints;
     std::vector<std::string> m_immovableJoints;
     std::vector<std::string> m_oneSidedEdges;
+    std::vector<std::string> m_twoSidedChains;
+    /// Scene index and level path of each spring joint (distance frequency, wheel
+    /// springFrequency, weld frequency > 0) whose 2.3 sizing is to be kept.
+    std::vector<std::pair<std::size_t, std::string>> m_springs23;
     bool m_writtenByMeff = false;
+    B2dJsonImportOptions m_options;
+
+  public:
+    /// Spring joints to resize as Box2D 2.3 (see ResizeSprings23): scene index, level path.
+    const std::vector<std::pair<std::size_t, std::string>>& Springs23() const
+    {
+        return m_springs23;
+    }
+    /// Whether the level is read as Box2D 2.3 authored it (not a level meff exported).
+    bool As23() const { return !m_writtenByMeff; }
+
+  private:
+    bool TwoSidedChains() const { return m_options.twoSidedChains && !m_writtenByMeff; }
 };
 
 /// The loader's messages, "FILE: SCENE.PATH: MESSAGE", said about the level's paths.
@@ -1612,6 +1668,164 @@ void CheckHandMass(Converter& converter, const BuiltScene& built, const Scene& s
                        "fixture densities): " +
                        list);
     }
+}
+
+/// The joint's effective mass on its spring's row as Box2D 2.3 computes it (the inverse of
+/// invMass in b2DistanceJoint's, b2WheelJoint's and b2WeldJoint's InitVelocityConstraints), over
+/// the mass Box2D 2.4.1's b2LinearStiffness or b2AngularStiffness takes from the bodies; 0
+/// when either is 0 (then nothing is resized).
+double SpringMassRatio23(const World& world, const SceneJoint& joint, JointId id)
+{
+    const BodyId a = world.GetBodyA(id);
+    const BodyId b = world.GetBodyB(id);
+    const auto inverse = [](double value) { return value > 0 ? 1 / value : 0.0; };
+    const double mA = world.GetType(a) == BodyType::Dynamic ? double(world.GetMass(a)) : 0;
+    const double mB = world.GetType(b) == BodyType::Dynamic ? double(world.GetMass(b)) : 0;
+    const double iA =
+        world.GetType(a) == BodyType::Dynamic ? double(world.GetRotationalInertia(a)) : 0;
+    const double iB =
+        world.GetType(b) == BodyType::Dynamic ? double(world.GetRotationalInertia(b)) : 0;
+    const auto cross = [](double ax, double ay, double bx, double by) { return ax * by - ay * bx; };
+    double invMass23 = 0;
+    double mass241 = 0;
+    if (joint.type == JointType::Weld)
+    {
+        // 2.3: the angular row's inertia 1/(1/IA + 1/IB), about the centres of mass; 2.4.1:
+        // b2AngularStiffness on b2Body::GetInertia, about the body origins.
+        invMass23 = inverse(iA) + inverse(iB);
+        const auto aboutOrigin = [&](BodyId body, double mass, double inertia)
+        {
+            const Vec2 c = world.GetLocalCenter(body);
+            return inertia + mass * (double(c.x) * c.x + double(c.y) * c.y);
+        };
+        const double IA = mA > 0 ? aboutOrigin(a, mA, iA) : 0;
+        const double IB = mB > 0 ? aboutOrigin(b, mB, iB) : 0;
+        mass241 = IA > 0 && IB > 0 ? IA * IB / (IA + IB) : (IA > 0 ? IA : IB);
+    }
+    else
+    {
+        const Vec2 pA = world.GetAnchorA(id);
+        const Vec2 pB = world.GetAnchorB(id);
+        const Vec2 cA = world.GetWorldCenter(a);
+        const Vec2 cB = world.GetWorldCenter(b);
+        const double rAx = double(pA.x) - cA.x;
+        const double rAy = double(pA.y) - cA.y;
+        const double rBx = double(pB.x) - cB.x;
+        const double rBy = double(pB.y) - cB.y;
+        double ux = 0;
+        double uy = 0;
+        double sA = 0; // the arm of body A's row
+        if (joint.type == JointType::Distance)
+        {
+            ux = double(pB.x) - pA.x;
+            uy = double(pB.y) - pA.y;
+            const double length = std::hypot(ux, uy);
+            if (length <= 0)
+            {
+                return 0;
+            }
+            ux /= length;
+            uy /= length;
+            sA = cross(rAx, rAy, ux, uy);
+        }
+        else // wheel: the axis in body A's frame, and d + rA from A's centre to B's anchor
+        {
+            const SceneVec2 local = joint.localAxisA.value_or(joint.axis);
+            Vec2 axis{Real(local.x), Real(local.y)};
+            if (joint.localAxisA)
+            {
+                const Vec2 origin = world.GetWorldPoint(a, Vec2{});
+                const Vec2 tip = world.GetWorldPoint(a, axis);
+                axis = Vec2{tip.x - origin.x, tip.y - origin.y};
+            }
+            const double length = std::hypot(double(axis.x), double(axis.y));
+            ux = axis.x / length;
+            uy = axis.y / length;
+            sA = cross(double(pB.x) - cA.x, double(pB.y) - cA.y, ux, uy);
+        }
+        const double sB = cross(rBx, rBy, ux, uy);
+        invMass23 = inverse(mA) + inverse(mB) + inverse(iA) * sA * sA + inverse(iB) * sB * sB;
+        mass241 = mA > 0 && mB > 0 ? mA * mB / (mA + mB) : (mA > 0 ? mA : mB);
+    }
+    if (!(invMass23 > 0) || !(mass241 > 0))
+    {
+        return 0;
+    }
+    return 1 / invMass23 / mass241;
+}
+
+/// Keeps Box2D 2.3's spring sizing (ImportB2dJson's springsAs23): 2.3 takes stiffness m·ω² and
+/// damping 2·m·ζ·ω on the joint's effective mass m, 2.4.1 (and meff's box2d back end) on the
+/// bodies' mass M; with r = m/M at the level's pose, frequency·√r and ratio·√r give 2.4.1 the
+/// same stiffness and damping. Rewrites `document`'s joints; returns "PATH: f -> f' Hz" for each
+/// spring changed.
+std::vector<std::string> ResizeSprings23(
+    const Scene& scene, const std::vector<std::pair<std::size_t, std::string>>& springs,
+    Out& document)
+{
+    std::vector<std::string> changed;
+    if (springs.empty())
+    {
+        return changed;
+    }
+    const BuiltScene built = BuildWorld(scene);
+    for (const auto& [index, path] : springs)
+    {
+        const SceneJoint& joint = scene.joints[index];
+        const double ratio = SpringMassRatio23(built.world, joint, built.joints[index]);
+        // The same masses by both sizings (anchors on the centres of mass, say) give a ratio
+        // within double round-off of 1 (a few 1e-16): left as the level says.
+        if (ratio <= 0 || std::abs(ratio - 1) <= 1e-12)
+        {
+            continue;
+        }
+        const double scale = std::sqrt(ratio);
+        Out& out = document["joints"][index];
+        out["stiffness_hz"] = joint.stiffnessHz * scale;
+        if (joint.dampingRatio > 0)
+        {
+            out["damping_ratio"] = joint.dampingRatio * scale;
+        }
+        char text[96];
+        std::snprintf(text, sizeof text, " %.6g -> %.6g Hz", joint.stiffnessHz,
+                      joint.stiffnessHz * scale);
+        changed.push_back(path + text);
+    }
+    return changed;
+}
+
+/// The springs' choice, said in one warning line; with springsAs23, the springs resized and the
+/// scene read again from the rewritten document.
+void SaySprings(Converter& converter, const B2dJsonImportOptions& options, LoadedScene& loaded,
+                const std::vector<std::pair<std::size_t, std::string>>& springs, Out& document,
+                const std::string& sourcePath)
+{
+    std::vector<std::string> paths;
+    for (const auto& [index, path] : springs)
+    {
+        paths.push_back(path);
+    }
+    if (!options.springsAs23)
+    {
+        converter.Warn("springs (distance frequency, wheel springFrequency, weld frequency) "
+                       "sized as Box2D 2.4.1 does, from the bodies' masses (2.3, which R.U.B.E. "
+                       "targets, sizes them from the joint's effective mass; without "
+                       "--b2djson-springs 2.4.1 its stiffness is kept): " +
+                       Importer::List(paths));
+        return;
+    }
+    const std::vector<std::string> changed = ResizeSprings23(loaded.scene, springs, document);
+    if (!changed.empty())
+    {
+        loaded.scene = scene_detail::ReadSceneDocument(Json(document), sourcePath);
+    }
+    converter.Warn("springs (distance frequency, wheel springFrequency, weld frequency) keep "
+                   "Box2D 2.3's stiffness and damping, which R.U.B.E. targets (2.3 sizes them "
+                   "from the joint's effective mass, 2.4.1 from the bodies' masses; "
+                   "--b2djson-springs 2.4.1 takes the numbers as 2.4.1 reads them): " +
+                   (changed.empty()
+                        ? std::string("the same in both for ") + Importer::List(paths)
+                        : "frequency and damping ratio rescaled: " + Importer::List(changed)));
 }
 
 } // namespace
@@ -1699,7 +1913,7 @@ bool LooksLikeB2dJson(std::string_view text)
 }
 
 LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath,
-                          const SceneLimits& limits)
+                          const SceneLimits& limits, const B2dJsonImportOptions& options)
 {
     Converter converter(sourcePath);
     const std::optional<Json> level = scene_detail::ParseDocument(text, converter.Diag());
@@ -1720,8 +1934,8 @@ LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath,
                                       "--format meff, or let the content decide)");
         converter.Diag().Throw();
     }
-    Importer importer(converter);
-    const Out document = importer.Convert(*level);
+    Importer importer(converter, options);
+    Out document = importer.Convert(*level);
     if (converter.Diag().HasErrors())
     {
         converter.Diag().Throw();
@@ -1733,6 +1947,10 @@ LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath,
         const BuiltScene built = BuildWorld(loaded.scene);
         scene_detail::CheckPairs(built, limits, sourcePath);
         CheckHandMass(converter, built, loaded.scene, importer.HandMass());
+        if (importer.As23() && !importer.Springs23().empty())
+        {
+            SaySprings(converter, options, loaded, importer.Springs23(), document, sourcePath);
+        }
     }
     catch (const SceneError& error)
     {
@@ -1743,12 +1961,13 @@ LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath,
     return loaded;
 }
 
-LoadedScene LoadSceneFile(const std::string& path, SceneFormat format, const SceneLimits& limits)
+LoadedScene LoadSceneFile(const std::string& path, SceneFormat format, const SceneLimits& limits,
+                          const B2dJsonImportOptions& options)
 {
     const std::string text = scene_detail::ReadTextFile(path, limits.fileBytes);
     if (format == SceneFormat::B2dJson || (format == SceneFormat::Auto && LooksLikeB2dJson(text)))
     {
-        return ImportB2dJson(text, path, limits);
+        return ImportB2dJson(text, path, limits, options);
     }
     LoadedScene loaded;
     loaded.scene = ParseScene(text, path, limits);

@@ -43,18 +43,37 @@ enum class SceneFormat
     B2dJson, ///< R.U.B.E.'s export
 };
 
+/// How a level authored for Box2D 2.3 (what R.U.B.E. targets) is read where 2.3 and 2.4.1
+/// differ (docs/b2djson.md, "Box2D 2.3 levels"). A level meff exported is read as 2.4.1 wrote
+/// it whatever these say.
+struct B2dJsonImportOptions
+{
+    /// Box2D 2.3's chains, and its edges with ghost vertices, collide on both sides; 2.4.1's
+    /// are one-sided. true (default): each chain becomes two-sided segments, one per edge (and
+    /// a ghosted edge a two-sided segment), as authored; false: 2.4.1's one-sided chains.
+    bool twoSidedChains = true;
+    /// Box2D 2.3 sizes the springs of distance (`frequency`), wheel (`springFrequency`) and
+    /// weld (`frequency`) joints from the joint's effective mass, 2.4.1 from the bodies'
+    /// masses. true (default): keep 2.3's stiffness and damping (at the level's pose): the
+    /// frequency and damping ratio are rescaled so that 2.4.1's sizing gives them; false: the
+    /// level's numbers as 2.4.1 reads them.
+    bool springsAs23 = true;
+};
+
 /// True when `text` is a JSON object without "meff_scene" that has one of b2dJson's world
 /// fields. Text that is not JSON is not b2dJson (the meff loader then says why).
 bool LooksLikeB2dJson(std::string_view text);
 
 /// Converts a b2dJson level to a scene. Throws SceneError listing every problem, each naming
 /// `sourcePath` and the JSON path in the level.
+/// Each choice of `options` where the level uses it is said in one warning line.
 LoadedScene ImportB2dJson(std::string_view text, const std::string& sourcePath,
-                          const SceneLimits& limits = {});
+                          const SceneLimits& limits = {}, const B2dJsonImportOptions& options = {});
 
-/// Reads a scene file in `format` (Auto: by its content). Throws SceneError.
+/// Reads a scene file in `format` (Auto: by its content); `options` for a b2dJson level.
+/// Throws SceneError.
 LoadedScene LoadSceneFile(const std::string& path, SceneFormat format = SceneFormat::Auto,
-                          const SceneLimits& limits = {});
+                          const SceneLimits& limits = {}, const B2dJsonImportOptions& options = {});
 
 struct B2dJsonExportOptions
 {
