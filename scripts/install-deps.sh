@@ -12,6 +12,7 @@ $SUDO apt-get update -qq
 # test that draws an SVG frame and compares it with the PNG.
 # clang-14 and libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes; only recommended
 # by clang-14, so named here): the scene loader's fuzz target, fuzz/, which .ci/run runs.
+# chromium: the browser check of `meff validate --report`'s page (tests/cli/check_report.py).
 $SUDO apt-get install -y -qq --no-install-recommends \
     g++ cmake make pkg-config \
     catch2 libbox2d-dev libosmesa6-dev libpng-dev nlohmann-json3-dev libcli11-dev \
@@ -19,4 +20,4 @@ $SUDO apt-get install -y -qq --no-install-recommends \
     libglfw3-dev libimgui-dev libgl1-mesa-dri xvfb xauth ffmpeg librsvg2-bin \
     libbenchmark-dev python3 python3-matplotlib \
     doxygen \
-    clang-14 libclang-rt-14-dev >/dev/null
+    clang-14 libclang-rt-14-dev chromium >/dev/null

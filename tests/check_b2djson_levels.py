@@ -77,7 +77,7 @@ frames = os.path.join(WORK, "frames")
 run(["render", first, "--frames", "2", "--size", "80x60", "--out", frames])
 if sorted(os.listdir(frames)) != [f"frame_{k:05d}.png" for k in range(3)]:
     sys.exit(f"FAIL: render of {first} wrote {sorted(os.listdir(frames))}")
-benched = run(["bench", "--format", "b2djson", first, "--steps", "10", "--runs", "1"])
+benched = run(["bench", "--format", "b2djson", first, "--frames", "10", "--runs", "1"])
 if os.path.splitext(os.path.basename(first))[0] not in benched.stdout:
     sys.exit(f"FAIL: bench of {first} does not name it:\n{benched.stdout}")
 swept = os.path.join(WORK, "sweep")

@@ -122,13 +122,15 @@ detail = re.search(rf"frame {frame}: {quantity} \S+ > \S+ at (\S+): meff (.+), B
 if not detail or detail.group(2) == detail.group(3):
     sys.exit(f"FAIL: failure text does not give where and both (differing) values: {text!r}")
 import json  # noqa: E402 (only needed here)
-with open(os.path.join(report, os.listdir(report)[0], "summary.json")) as summary_file:
+folders = [name for name in os.listdir(report) if os.path.isdir(os.path.join(report, name))]
+with open(os.path.join(report, folders[0], "summary.json")) as summary_file:
     summary = json.load(summary_file)
 if not summary["divergence"] or summary["divergence"][0]["quantity"] != quantity:
     sys.exit(f"FAIL: summary.json's divergence does not match: {summary['divergence']}")
 
 for bad in (["--shard", "0/3"], ["--shard", "4/3"], ["--shard", "1-3"], ["--jobs", "0"],
-            ["--junit", os.path.join(WORK, "no", "such", "folder.xml")]):
+            # (a missing folder is created; one under a regular file cannot be)
+            ["--junit", os.path.join(junit, "under", "a_file.xml")]):
     run(["validate", SCENES[0], "--no-plot"] + bad, 2)
 print(f"validate --jobs/--shard/--junit: {len(SCENES)} scenes, jobs 1 = jobs 2, 3 shards cover "
       f"each once, failure at frame {frame} ({quantity} at {detail.group(1)})")

@@ -286,7 +286,7 @@ def case_box2d_assertions():
     m_I > 0) abort nothing: validate, bench and render --overlay-box2d refuse the scene, exit
     status 2, naming the field."""
     scene = os.path.join(SOURCE, "tests", "bad_scenes", "box2d_assertion.json")
-    for args in (["validate", scene, "--no-plot"], ["bench", scene, "--runs", "1", "--steps", "2"],
+    for args in (["validate", scene, "--no-plot"], ["bench", scene, "--runs", "1", "--frames", "2"],
                  ["render", scene, "--out", os.path.join(WORK, "frames"), "--frames", "1",
                   "--overlay-box2d"]):
         status, stdout, stderr = run(args)
@@ -331,13 +331,13 @@ def case_bench_threads():
     for command in ("bench", "run"):
         for threads in ("0", "1.5", "1025"):
             status, stdout, stderr = run([command, STACK, "--threads", threads, "--runs", "1",
-                                          "--steps", "2"] if command == "bench" else
+                                          "--frames", "2"] if command == "bench" else
                                          [command, STACK, "--threads", threads, "--frames", "2"])
             if status != 2 or "--threads" not in stderr or stdout:
                 fail("%s --threads %s: status %d" % (command, threads, status))
     report = os.path.join(WORK, "bench.json")
     status, stdout, stderr = run(["bench", STACK, "--threads", "2", "--solver", "colour",
-                                  "--against", "none", "--runs", "1", "--steps", "3",
+                                  "--against", "none", "--runs", "1", "--frames", "3",
                                   "--json", report])
     if status != 0 or stderr:
         fail("--threads 2: status %d, stderr %r" % (status, stderr))
@@ -392,7 +392,7 @@ def case_bench_scenes():
         bodies[content["name"]] = len(content["bodies"])
     for solver in ("box2d", "colour", "soft_step"):
         report = os.path.join(WORK, solver + ".json")
-        status, stdout, stderr = run(["bench"] + scenes + ["--against", "none", "--steps", "3",
+        status, stdout, stderr = run(["bench"] + scenes + ["--against", "none", "--frames", "3",
                                                            "--runs", "1", "--solver", solver,
                                                            "--json", report], timeout=600)
         if status != 0 or stderr:
@@ -438,7 +438,7 @@ def case_bench_against_meff_profile():
     "peer_..."; an unknown peer is refused up front naming --against."""
     report = os.path.join(WORK, "bench.json")
     status, stdout, stderr = run(["bench", STACK, "--against", "meff:box2d", "--profile",
-                                  "--runs", "2", "--steps", "30", "--json", report])
+                                  "--runs", "2", "--frames", "30", "--json", report])
     if status != 0 or stderr:
         fail("status %d, stderr %r" % (status, stderr))
     lines = stdout.splitlines()
@@ -471,7 +471,7 @@ def case_bench_against_meff_profile():
     if abs(parts - profile["step"]) > 1e-9 * profile["step"]:
         fail("the JSON's stages add up to %r, its step is %r" % (parts, profile["step"]))
     status, stdout, stderr = run(["bench", STACK, "--against", "meff:fast", "--runs", "1",
-                                  "--steps", "2"])
+                                  "--frames", "2"])
     if status != 2 or "--against" not in stderr or "meff:fast" not in stderr or stdout:
         fail("--against meff:fast: status %d" % status)
 

@@ -380,10 +380,7 @@ int RunBench(const BenchOptions& options)
         {
             return kExitBadInput;
         }
-        if (options.solver)
-        {
-            scene->world.solver.kind = *options.solver; // Box2D keeps its own order
-        }
+        ApplySolverOption(options.solver, *scene); // Box2D keeps its own order
         scenes.push_back(std::move(*scene));
     }
     std::optional<OutputFile> json;
@@ -480,8 +477,22 @@ Command AddBenchCommand(CLI::App& parent)
         ->required()
         ->check(CLI::ExistingFile);
     AddFormatOption(app);
-    app->add_option("--steps", options->steps, "Steps per run (default: the scene's frames)")
-        ->check(CLI::Range(2, 1000000));
+    CLI::Option* frames =
+        app->add_option("--frames", options->steps, "Steps per run (default: the scene's frames)")
+            ->type_name("N")
+            ->check(CLI::Range(2, 1000000));
+    // --steps, the older spelling of --frames: still accepted, with a warning, and not listed.
+    app->add_option_function<int>(
+           "--steps",
+           [options](int steps)
+           {
+               std::fprintf(stderr, "meff bench: --steps is deprecated, use --frames\n");
+               options->steps = steps;
+           },
+           "")
+        ->check(CLI::Range(2, 1000000))
+        ->excludes(frames)
+        ->group("");
     app->add_option("--runs", options->runs, "Runs per engine and scene (default 5)")
         ->check(CLI::Range(1, 1000));
     AddThreadsOption(*app, options->threads, "Threads for meff's world (its peer steps on one)");
@@ -505,7 +516,9 @@ Command AddBenchCommand(CLI::App& parent)
     app->add_flag("--profile", options->profile,
                   "Also print meff's ms/step stage by stage (find contacts, collide, solve, "
                   "synchronize, continuous, other: World::GetProfile), medians over the runs");
-    AddSolverOption(*app, options->solver);
+    AddSolverOption(*app, options->solver,
+                    "meff's solver back end instead of the scene's world.solver (the Box2D 2.4.1 "
+                    "peer keeps its own)");
     // The older spelling of `--solver colour`.
     app->add_flag_callback(
            "--graph-coloring", [options] { options->solver = SolverKind::Colour; },

@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace meff::cli
 {
@@ -54,9 +55,15 @@ Command AddBenchCommand(CLI::App& parent);
 /// [--jobs N] [--threads T]`
 Command AddSweepCommand(CLI::App& parent);
 
-/// Adds `--solver box2d|colour|soft_step`: the solver back end to run instead of the scene's
-/// (world.solver); `kind` stays empty when the option is not given.
-CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind);
+/// Adds `--solver box2d|colour|soft_step` to a subcommand; `kind` stays empty when the option is
+/// not given. `what` opens its help: what the choice does in this command (most commands run
+/// it instead of the scene's world.solver: ApplySolverOption).
+CLI::Option* AddSolverOption(
+    CLI::App& app, std::optional<SolverKind>& kind,
+    const std::string& what = "Solver back end to run instead of the scene's world.solver");
+
+/// The scene as `--solver` asks (its world.solver.kind replaced), or unchanged without it.
+void ApplySolverOption(const std::optional<SolverKind>& kind, Scene& scene);
 
 /// `meff import LEVEL.json -o SCENE.json`: a b2dJson level as a meff scene file
 Command AddImportCommand(CLI::App& parent);
@@ -65,7 +72,7 @@ Command AddImportCommand(CLI::App& parent);
 Command AddExportCommand(CLI::App& parent);
 
 /// Adds `--format auto|meff|b2djson` to a subcommand: how LoadSceneOrReport reads files; and
-/// the limits' options (AddLimitOptions).
+/// the limits' options (AddLimitOptions) and AddImportOptions.
 void AddFormatOption(CLI::App* app);
 
 /// Adds `--max-bodies`, `--max-shapes`, `--max-joints`, `--max-pairs` and `--max-file-size`:
@@ -73,13 +80,22 @@ void AddFormatOption(CLI::App* app);
 void AddLimitOptions(CLI::App* app);
 const SceneLimits& SceneLimitsOfOptions();
 
+/// Adds `--b2djson-chains two_sided|one_sided` and `--b2djson-springs 2.3|2.4.1`: how a
+/// b2dJson level authored for Box2D 2.3 is read (ImportOptions()).
+void AddImportOptions(CLI::App* app);
+
+/// The options AddImportOptions set in this process.
+const B2dJsonImportOptions& ImportOptions();
+
 /// Loads a scene in either format (see AddFormatOption); prints what a b2dJson level loses
 /// (one warning line each) to stderr. On failure prints every problem to stderr, one per line,
-/// and returns nullopt.
-std::optional<Scene> LoadSceneOrReport(const std::string& path);
+/// and returns nullopt; `problems`, when given, receives the same lines.
+std::optional<Scene> LoadSceneOrReport(const std::string& path,
+                                       std::vector<std::string>* problems = nullptr);
 
 /// Builds a loaded scene's world; on failure prints every problem to stderr, one per line, and
-/// returns nullopt.
-std::optional<BuiltScene> BuildWorldOrReport(const Scene& scene);
+/// returns nullopt; `problems`, when given, receives the same lines.
+std::optional<BuiltScene> BuildWorldOrReport(const Scene& scene,
+                                             std::vector<std::string>* problems = nullptr);
 
 } // namespace meff::cli

@@ -49,7 +49,8 @@ int Import(const ConvertOptions& options)
     LoadedScene loaded;
     try
     {
-        loaded = LoadSceneFile(options.inputPath, SceneFormat::B2dJson, SceneLimitsOfOptions());
+        loaded = LoadSceneFile(options.inputPath, SceneFormat::B2dJson, SceneLimitsOfOptions(),
+                               ImportOptions());
     }
     catch (const SceneError& error)
     {
@@ -112,6 +113,7 @@ Command AddImportCommand(CLI::App& parent)
         ->required()
         ->type_name("SCENE.json");
     AddLimitOptions(app);
+    AddImportOptions(app);
     return {app, [options] { return Import(*options); }};
 }
 

@@ -1,5 +1,7 @@
 #include "junit.h"
 
+#include "meff_version.h"
+
 #include <cstdio>
 
 namespace meff::cli
@@ -60,17 +62,22 @@ std::string JUnitDocument(const std::string& suiteName, const std::vector<JUnitC
 {
     int failures = 0;
     int errors = 0;
+    int skipped = 0;
     for (const JUnitCase& testCase : cases)
     {
         failures += testCase.outcome == JUnitCase::Outcome::Failed ? 1 : 0;
         errors += testCase.outcome == JUnitCase::Outcome::Error ? 1 : 0;
+        skipped += testCase.outcome == JUnitCase::Outcome::Skipped ? 1 : 0;
     }
     std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n";
     xml += "<testsuite" + Attribute("name", suiteName) +
            Attribute("tests", std::to_string(cases.size())) +
            Attribute("failures", std::to_string(failures)) +
-           Attribute("errors", std::to_string(errors)) + Attribute("skipped", "0") +
-           Attribute("time", Seconds(seconds)) + ">\n";
+           Attribute("errors", std::to_string(errors)) +
+           Attribute("skipped", std::to_string(skipped)) + Attribute("time", Seconds(seconds)) +
+           ">\n";
+    xml += "  <properties><property" + Attribute("name", "meff.version") +
+           Attribute("value", MEFF_VERSION) + "/></properties>\n";
     for (const JUnitCase& testCase : cases)
     {
         xml += "  <testcase" + Attribute("classname", testCase.className) +
@@ -82,7 +89,11 @@ std::string JUnitDocument(const std::string& suiteName, const std::vector<JUnitC
             continue;
         }
         xml += ">\n";
-        if (testCase.outcome != JUnitCase::Outcome::Passed)
+        if (testCase.outcome == JUnitCase::Outcome::Skipped)
+        {
+            xml += "    <skipped" + Attribute("message", testCase.message) + "/>\n";
+        }
+        else if (testCase.outcome != JUnitCase::Outcome::Passed)
         {
             const char* element =
                 testCase.outcome == JUnitCase::Outcome::Failed ? "failure" : "error";

@@ -16,8 +16,9 @@ struct JUnitCase
     enum class Outcome
     {
         Passed,
-        Failed, ///< <failure>: the check ran and did not hold
-        Error,  ///< <error>: the check could not run to its end
+        Failed,  ///< <failure>: the check ran and did not hold
+        Error,   ///< <error>: the check could not run to its end
+        Skipped, ///< <skipped>: the check does not apply (the message says why)
     };
 
     std::string name;      ///< testcase name
@@ -25,13 +26,14 @@ struct JUnitCase
     std::string file;      ///< the input file, as the "file" attribute
     double seconds = 0;    ///< wall time
     Outcome outcome = Outcome::Passed;
-    std::string message; ///< one line: the failure's or error's "message"
+    std::string message; ///< one line: the failure's, error's or skip's "message"
     std::string type;    ///< the failure's or error's "type"
     std::string text;    ///< the body of <failure>/<error>: the details, several lines
     std::string output;  ///< <system-out>: what the run printed about the case (may be empty)
 };
 
-/// The XML text of one test suite in a <testsuites> document.
+/// The XML text of one test suite in a <testsuites> document. The suite's <properties> hold
+/// meff's version ("meff.version").
 std::string JUnitDocument(const std::string& suiteName, const std::vector<JUnitCase>& cases,
                           double seconds);
 

@@ -2,6 +2,8 @@
 #include "commands.h"
 #include "output_file.h"
 
+#include "meff_version.h"
+
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -14,11 +16,14 @@ int main(int argc, char** argv)
     CLI::App app{"meff: a 2D rigid-body physics engine.\n"
                  "Scenes are JSON files (see docs/scene-format.md), or b2dJson levels "
                  "(R.U.B.E.'s export, docs/b2djson.md); samples are in samples/scenes/.\n"
-                 "Three solver back ends, chosen by a scene's world.solver or --solver: box2d (the "
+                 "Three solver back ends, chosen by a scene's world.solver or by --solver (run, "
+                 "validate, render, sweep and bench take it): box2d (the "
                  "default: Box2D 2.4.1's step, bit for bit), colour (the same rows solved by graph "
                  "colour in SIMD lanes: fastest), soft_step (sub-stepped soft constraints: far "
                  "more accurate for joints, pendulums and chains; see docs/soft-step.md).",
                  "meff"};
+    app.set_version_flag("--version", std::string("meff ") + MEFF_VERSION,
+                         "Print meff's version and exit");
     app.require_subcommand(1);
     app.footer("Exit status: 0 success, 1 the simulation failed or output could not be "
                "written, 2 bad input (scene file or command line).\n"

@@ -76,8 +76,9 @@ struct RenderOptions
     std::string gifPath;
     std::string mp4Path;
     bool overwrite = false;
-    int jobs = 0;    ///< 0: one per core
-    int threads = 1; ///< to step the world on (--threads)
+    int jobs = 0;                     ///< 0: one per core
+    int threads = 1;                  ///< to step the world on (--threads)
+    std::optional<SolverKind> solver; ///< instead of the scene's world.solver
     Shard shard;
 };
 
@@ -472,11 +473,12 @@ int Run(const RenderOptions& options)
         return kExitBadInput;
     }
 
-    const std::optional<Scene> scene = LoadSceneOrReport(options.scenePath);
+    std::optional<Scene> scene = LoadSceneOrReport(options.scenePath);
     if (!scene)
     {
         return kExitBadInput;
     }
+    ApplySolverOption(options.solver, *scene);
     std::optional<BuiltScene> built = BuildWorldOrReport(*scene);
     if (!built)
     {
@@ -824,6 +826,9 @@ Command AddRenderCommand(CLI::App& parent)
                      "Threads to step the world on (the frames are drawn on --jobs)");
     AddShardOption(app, options->shard,
                    "frames (frame k to shard k mod N + 1; each shard steps the whole run)");
+    AddSolverOption(*app, options->solver,
+                    "meff's solver back end instead of the scene's world.solver "
+                    "(--overlay-box2d draws Box2D 2.4.1's own)");
     return {app, [options] { return Run(*options); }};
 }
 

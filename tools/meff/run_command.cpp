@@ -28,6 +28,7 @@ struct RunOptions
     std::string contactsPath;
     std::string jointsPath;
     int threads = 1;
+    std::optional<SolverKind> solver; ///< instead of the scene's world.solver
 };
 
 /// Enough digits that every Real reads back as the same value.
@@ -218,11 +219,12 @@ bool OutputsAreDistinct(const RunOptions& options)
 int Run(const RunOptions& options)
 {
     const auto start = std::chrono::steady_clock::now();
-    const std::optional<Scene> scene = LoadSceneOrReport(options.scenePath);
+    std::optional<Scene> scene = LoadSceneOrReport(options.scenePath);
     if (!scene || !OutputsAreDistinct(options))
     {
         return kExitBadInput;
     }
+    ApplySolverOption(options.solver, *scene);
     const int frames = options.frames.value_or(scene->world.frames);
 
     std::optional<BuiltScene> built = BuildWorldOrReport(*scene);
@@ -292,20 +294,35 @@ int Run(const RunOptions& options)
 
 } // namespace
 
-CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind)
+CLI::Option* AddSolverOption(CLI::App& app, std::optional<SolverKind>& kind,
+                             const std::string& what)
 {
     std::map<std::string, SolverKind> names;
+    std::string typeName;
     for (const SolverKind k : {SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep})
     {
         names.emplace(SolverKindName(k), k);
+        typeName += typeName.empty() ? "" : "|";
+        typeName += SolverKindName(k);
     }
+    // The transformer's own description (its map, as "{box2d->0,...}") is left out of the
+    // help: the type name lists the choices.
     return app
         .add_option("--solver", kind,
-                    "Solver back end instead of the scene's world.solver: box2d (Box2D "
-                    "2.4.1, bit-identical), colour (Box2D's rows by colour, SIMD: fastest), "
-                    "soft_step (sub-stepped soft joints, rigid contacts: most accurate for joints "
-                    "and fast motion; world.soft_step holds its settings)")
-        ->transform(CLI::CheckedTransformer(names));
+                    what + ": box2d (Box2D 2.4.1, bit-identical), colour (Box2D's rows by "
+                           "colour, SIMD: fastest), soft_step (sub-stepped soft joints, rigid "
+                           "contacts: most accurate for joints and fast motion; world.soft_step "
+                           "holds its settings)")
+        ->transform(CLI::CheckedTransformer(names).description(""))
+        ->type_name(typeName);
+}
+
+void ApplySolverOption(const std::optional<SolverKind>& kind, Scene& scene)
+{
+    if (kind)
+    {
+        scene.world.solver.kind = *kind;
+    }
 }
 
 namespace
@@ -345,6 +362,37 @@ const SceneLimits& SceneLimitsOfOptions()
     return g_sceneLimits;
 }
 
+namespace
+{
+/// --b2djson-chains and --b2djson-springs of the subcommand that runs.
+B2dJsonImportOptions g_importOptions;
+} // namespace
+
+void AddImportOptions(CLI::App* app)
+{
+    app->add_option_function<std::string>(
+           "--b2djson-chains",
+           [](const std::string& form) { g_importOptions.twoSidedChains = form == "two_sided"; },
+           "How a b2dJson level's chains (and edges with ghost vertices) are read: two_sided "
+           "(default: as Box2D 2.3, which R.U.B.E. targets, collides them; one two-sided segment "
+           "per edge) or one_sided (Box2D 2.4.1's chains)")
+        ->check(CLI::IsMember({"two_sided", "one_sided"}).description(""))
+        ->type_name("two_sided|one_sided");
+    app->add_option_function<std::string>(
+           "--b2djson-springs",
+           [](const std::string& form) { g_importOptions.springsAs23 = form == "2.3"; },
+           "How a b2dJson level's distance, wheel and weld springs are sized: 2.3 (default: "
+           "Box2D 2.3's stiffness and damping, from the joint's effective mass, kept) or 2.4.1 "
+           "(the level's frequency and damping ratio on the bodies' masses, as 2.4.1 reads them)")
+        ->check(CLI::IsMember({"2.3", "2.4.1"}).description(""))
+        ->type_name("2.3|2.4.1");
+}
+
+const B2dJsonImportOptions& ImportOptions()
+{
+    return g_importOptions;
+}
+
 void AddFormatOption(CLI::App* app)
 {
     app->add_option_function<std::string>(
@@ -357,15 +405,33 @@ void AddFormatOption(CLI::App* app)
            },
            "Format of the scene files: meff (docs/scene-format.md), b2djson (R.U.B.E.'s "
            "export, docs/b2djson.md), or auto: by the content (default)")
-        ->check(CLI::IsMember({"auto", "meff", "b2djson"}));
+        ->check(CLI::IsMember({"auto", "meff", "b2djson"}).description(""))
+        ->type_name("auto|meff|b2djson");
     AddLimitOptions(app);
+    AddImportOptions(app);
 }
 
-std::optional<Scene> LoadSceneOrReport(const std::string& path)
+namespace
+{
+/// Prints each message of a refused scene on a line of its own; keeps them if asked.
+void ReportProblems(const SceneError& error, std::vector<std::string>* problems)
+{
+    for (const std::string& message : error.messages())
+    {
+        std::fprintf(stderr, "%s\n", message.c_str());
+        if (problems != nullptr)
+        {
+            problems->push_back(message);
+        }
+    }
+}
+} // namespace
+
+std::optional<Scene> LoadSceneOrReport(const std::string& path, std::vector<std::string>* problems)
 {
     try
     {
-        LoadedScene loaded = LoadSceneFile(path, g_sceneFormat, g_sceneLimits);
+        LoadedScene loaded = LoadSceneFile(path, g_sceneFormat, g_sceneLimits, g_importOptions);
         // What a b2dJson level loses on the way, and what the loader warns about.
         for (const std::string& warning : loaded.warnings)
         {
@@ -379,15 +445,12 @@ std::optional<Scene> LoadSceneOrReport(const std::string& path)
     }
     catch (const SceneError& error)
     {
-        for (const std::string& message : error.messages())
-        {
-            std::fprintf(stderr, "%s\n", message.c_str());
-        }
+        ReportProblems(error, problems);
         return std::nullopt;
     }
 }
 
-std::optional<BuiltScene> BuildWorldOrReport(const Scene& scene)
+std::optional<BuiltScene> BuildWorldOrReport(const Scene& scene, std::vector<std::string>* problems)
 {
     try
     {
@@ -395,10 +458,7 @@ std::optional<BuiltScene> BuildWorldOrReport(const Scene& scene)
     }
     catch (const SceneError& error)
     {
-        for (const std::string& message : error.messages())
-        {
-            std::fprintf(stderr, "%s\n", message.c_str());
-        }
+        ReportProblems(error, problems);
         return std::nullopt;
     }
 }
@@ -434,6 +494,7 @@ Command AddRunCommand(CLI::App& parent)
                     "(N·m) on body_b after each step, i.e. its impulse divided by dt")
         ->type_name("OUT.csv");
     AddThreadsOption(*app, options->threads, "Threads to step the world on");
+    AddSolverOption(*app, options->solver);
     return {app, [options] { return Run(*options); }};
 }
 

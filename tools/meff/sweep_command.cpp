@@ -94,6 +94,8 @@ struct SweepOptions
     /// Threads each meff world steps on (--threads); Box2D 2.4.1 steps on one.
     int threads = 1;
     Shard shard;
+    /// Only the settings of this back end (Box2D's rows run in both engines).
+    std::optional<SolverKind> solver;
 };
 
 struct Setting
@@ -1077,7 +1079,12 @@ int RunSweep(const SweepOptions& options)
                      kSampleHz, seconds);
         return kExitBadInput;
     }
-    const std::vector<Setting> grid = MakeGrid(options.quick);
+    std::vector<Setting> grid = MakeGrid(options.quick);
+    if (options.solver)
+    {
+        std::erase_if(grid,
+                      [&](const Setting& setting) { return setting.solver != *options.solver; });
+    }
     const std::filesystem::path directory = options.outDir.empty()
                                                 ? std::filesystem::path("out/sweep") / scene.name
                                                 : std::filesystem::path(options.outDir);
@@ -1375,6 +1382,9 @@ Command AddSweepCommand(CLI::App& parent)
     AddThreadsOption(*app, options->threads,
                      "Threads each meff world steps on (Box2D 2.4.1 steps on one; with --cost "
                      "cpu only the stepping thread's CPU time is counted, not the pool's)");
+    AddSolverOption(*app, options->solver,
+                    "Sweep only the settings of one back end (box2d: the rows run in both "
+                    "engines; default: all three)");
     AddShardOption(app, options->shard,
                    "settings (setting n to shard n mod N + 1; sweep.csv then holds that share)");
     return {app, [options] { return RunSweep(*options); }};

@@ -1,12 +1,15 @@
 // `meff validate`: runs scenes in meff and in Box2D 2.4.1 side by side and compares them frame
 // by frame (see validation/include/meff/validation.h for what is compared and how).
 #include "commands.h"
+#include "html_report.h"
 #include "junit.h"
 #include "output_file.h"
 #include "parallel.h"
 #include "plausibility_report.h"
 #include "plot_program.h"
 #include "progress.h"
+
+#include "meff_version.h"
 
 #include "meff/validation.h"
 
@@ -45,33 +48,16 @@ struct ValidateOptions
     std::string reportDir;
     std::string blockSolver = "scene";
     bool noPlot = false;
-    int jobs = 0; ///< 0: one per core
+    bool pngPlots = false; ///< also errors.png, drawn by matplotlib
+    int jobs = 0;          ///< 0: one per core
     Shard shard;
     std::string junitPath;
     std::optional<int> meffVelocityIterations; // hidden: proves the comparison can fail
-    /// --solver: every scene's back end ("scene": each its own). Another than box2d cannot be
+    /// --solver: every scene's back end (unset: each its own). Another than box2d cannot be
     /// compared with Box2D frame by frame, so it is held to the plausibility checks instead.
-    std::string solver = "scene";
+    std::optional<SolverKind> solver;
     bool plausibility = false; ///< --plausibility: the checks also beside the comparison
 };
-
-/// The back end --solver names, or nullopt for "scene".
-std::optional<SolverKind> SolverOption(const ValidateOptions& options)
-{
-    if (options.solver == "colour")
-    {
-        return SolverKind::Colour;
-    }
-    if (options.solver == "soft_step")
-    {
-        return SolverKind::SoftStep;
-    }
-    if (options.solver == "box2d")
-    {
-        return SolverKind::Box2D;
-    }
-    return std::nullopt;
-}
 
 std::string Number(double value)
 {
@@ -109,6 +95,13 @@ std::string ResultText(const ValidationResult& result)
     line += "; contact points only in meff " + std::to_string(result.onlyInMeff) +
             ", only in Box2D " + std::to_string(result.onlyInBox2D) + "; awake flags differing " +
             std::to_string(result.awakeMismatches);
+    // With a setting Box2D cannot mirror (and no chaotic horizon), frames after the first are
+    // reported, not judged: the line says what was compared, never "PASS ... diverged".
+    const bool judgedFrameByFrame = result.unmirrored.empty() || result.chaotic;
+    if (!judgedFrameByFrame)
+    {
+        line += "; compared: frame 0 and the settled state";
+    }
     if (result.divergenceFrame)
     {
         std::string what;
@@ -116,8 +109,10 @@ std::string ResultText(const ValidationResult& result)
         {
             what += (what.empty() ? "" : ", ") + quantity;
         }
-        line +=
-            "; diverged at frame " + std::to_string(*result.divergenceFrame) + " (" + what + ")";
+        line += (judgedFrameByFrame || *result.divergenceFrame == 0
+                     ? "; diverged at frame "
+                     : "; frame by frame (not judged) first apart at frame ") +
+                std::to_string(*result.divergenceFrame) + " (" + what + ")";
     }
     else
     {
@@ -154,6 +149,14 @@ std::string ResultText(const ValidationResult& result)
     {
         text += "  " + result.failure + "\n";
     }
+    for (const validation::CheckFailure& failure : result.checkFailures)
+    {
+        text += "  " + failure.check + ": " + failure.message + "\n";
+        for (const std::string& detail : failure.details)
+        {
+            text += "    " + detail + "\n";
+        }
+    }
     for (const std::string& note : result.notes)
     {
         text += "  note: " + note + "\n";
@@ -173,7 +176,7 @@ std::string DetailText(const validation::DivergenceDetail& detail)
 JUnitCase JUnitCaseOf(const ValidationResult& result, double seconds)
 {
     JUnitCase testCase;
-    testCase.name = result.scene;
+    testCase.name = result.sourcePath;
     testCase.className = "meff.validate";
     testCase.file = result.sourcePath;
     testCase.seconds = seconds;
@@ -191,33 +194,50 @@ JUnitCase JUnitCaseOf(const ValidationResult& result, double seconds)
         return testCase;
     }
     testCase.outcome = JUnitCase::Outcome::Failed;
-    if (result.divergenceFrame &&
-        (!result.chaotic || *result.divergenceFrame <= result.horizonFrames))
+    if (!result.comparisonPassed)
     {
-        testCase.type = "divergence";
-        std::string what;
-        for (const std::string& quantity : result.divergenceQuantities)
+        if (result.divergenceFrame &&
+            (!result.chaotic || *result.divergenceFrame <= result.horizonFrames))
         {
-            what += (what.empty() ? "" : ", ") + quantity;
+            testCase.type = "divergence";
+            std::string what;
+            for (const std::string& quantity : result.divergenceQuantities)
+            {
+                what += (what.empty() ? "" : ", ") + quantity;
+            }
+            testCase.message = "diverged from Box2D at frame " +
+                               std::to_string(*result.divergenceFrame) + ": " + what;
+            for (const validation::DivergenceDetail& detail : result.divergenceDetails)
+            {
+                testCase.text += "frame " + std::to_string(*result.divergenceFrame) + ": " +
+                                 DetailText(detail) + "\n";
+            }
         }
-        testCase.message =
-            "diverged from Box2D at frame " + std::to_string(*result.divergenceFrame) + ": " + what;
-        for (const validation::DivergenceDetail& detail : result.divergenceDetails)
+        else
         {
-            testCase.text += "frame " + std::to_string(*result.divergenceFrame) + ": " +
-                             DetailText(detail) + "\n";
+            testCase.type = "settle";
+            testCase.message = "not settled where Box2D settled";
+        }
+        if (result.settle)
+        {
+            for (const std::string& failure : result.settle->failures)
+            {
+                testCase.text += failure + "\n";
+            }
         }
     }
-    else
+    // The extra checks' failures: the first names the case's type when the comparison held.
+    for (const validation::CheckFailure& failure : result.checkFailures)
     {
-        testCase.type = "settle";
-        testCase.message = "not settled where Box2D settled";
-    }
-    if (result.settle)
-    {
-        for (const std::string& failure : result.settle->failures)
+        if (testCase.type.empty())
         {
-            testCase.text += failure + "\n";
+            testCase.type = failure.check;
+            testCase.message = failure.message;
+        }
+        testCase.text += failure.check + ": " + failure.message + "\n";
+        for (const std::string& detail : failure.details)
+        {
+            testCase.text += "  " + detail + "\n";
         }
     }
     return testCase;
@@ -233,6 +253,8 @@ nlohmann::json MaximumJson(const RunMaximum& maximum)
 nlohmann::json SummaryJson(const ValidationResult& result)
 {
     nlohmann::json summary;
+    summary["meff_version"] = MEFF_VERSION;
+    summary["status"] = result.passed ? "passed" : "failed";
     summary["scene"] = result.scene;
     summary["source"] = result.sourcePath;
     summary["frames"] = result.frames;
@@ -294,6 +316,13 @@ nlohmann::json SummaryJson(const ValidationResult& result)
     summary["unmirrored"] = result.unmirrored;
     summary["notes"] = result.notes;
     summary["failure"] = result.failure.empty() ? nlohmann::json() : nlohmann::json(result.failure);
+    nlohmann::json checks = nlohmann::json::array();
+    for (const validation::CheckFailure& failure : result.checkFailures)
+    {
+        checks.push_back(
+            {{"check", failure.check}, {"message", failure.message}, {"details", failure.details}});
+    }
+    summary["check_failures"] = checks;
     return summary;
 }
 
@@ -365,10 +394,11 @@ std::string DirectoryName(const std::string& sceneName, std::set<std::string>& u
 class Reporter
 {
   public:
-    /// Looks for python3 with matplotlib once, before any thread writes.
-    Reporter(std::string directory, bool plot) : m_directory(std::move(directory))
+    /// Looks for python3 with matplotlib once, before any thread writes (`pngPlots`).
+    Reporter(std::string directory, bool plot, bool pngPlots)
+        : m_directory(std::move(directory)), m_plot(plot)
     {
-        if (plot)
+        if (plot && pngPlots)
         {
             m_python = FindPlottingPython();
             if (m_python.empty())
@@ -380,19 +410,36 @@ class Reporter
         }
     }
 
-    /// Writes DIRECTORY/summary.json, divergence.csv and errors.png; throws
-    /// std::runtime_error when a file cannot be written. A plot that cannot be drawn is said,
-    /// not fatal. Several threads may write at once, each to its own scene's folder.
+    /// Writes DIRECTORY/summary.json (with the plausibility checks' results, when they ran),
+    /// divergence.csv, errors.png (with --png-plots) and, for a level that diverged, the frames
+    /// before and at the divergence; puts the page's plot and pictures in `row`. Throws
+    /// std::runtime_error when a file cannot be written. A plot or picture that cannot be drawn
+    /// is said, not fatal. Several threads may write at once, each to its own scene's folder.
     void Write(const Scene& scene, const ValidationResult& result, const std::string& directoryName,
-               const validation::PlausibilityResult* plausibility) const
+               const validation::PlausibilityResult* plausibility, ReportRow& row) const
     {
-        const std::filesystem::path directory = std::filesystem::path(m_directory) / directoryName;
+        const std::filesystem::path directory = Folder(directoryName);
         std::error_code error;
-        std::filesystem::create_directories(directory, error);
-        if (error)
+        if (m_plot)
         {
-            throw std::runtime_error("cannot create " + directory.string() + ": " +
-                                     error.message());
+            row.plotSvg = ErrorPlotSvg(result);
+        }
+        if (!result.passed && result.divergenceFrame)
+        {
+            try
+            {
+                row.images = DrawDivergenceFrames(scene, result, m_directory, directoryName);
+            }
+            catch (const Error& error) // render::RenderError, and what the engines throw
+            {
+                std::fprintf(stderr, "meff validate: %s: the divergence could not be drawn: %s\n",
+                             result.sourcePath.c_str(), error.what());
+            }
+        }
+        else
+        {
+            std::filesystem::remove(directory / "before.png", error);
+            std::filesystem::remove(directory / "at.png", error);
         }
         OutputFile summary((directory / "summary.json").string());
         nlohmann::json json = SummaryJson(result);
@@ -413,8 +460,25 @@ class Reporter
         }
     }
 
-    /// DIRECTORY/summary.json alone, for a scene held only to the plausibility checks.
+    /// Writes DIRECTORY/summary.json alone (a level not compared: skipped, refused, or held
+    /// only to the plausibility checks), and removes what an earlier run left beside it.
     void WriteSummary(const nlohmann::json& summary, const std::string& directoryName) const
+    {
+        const std::filesystem::path directory = Folder(directoryName);
+        std::error_code error;
+        OutputFile file((directory / "summary.json").string());
+        const std::string text = summary.dump(2) + "\n";
+        std::fputs(text.c_str(), file.Stream());
+        file.Commit();
+        for (const char* stale : {"divergence.csv", "errors.png", "before.png", "at.png"})
+        {
+            std::filesystem::remove(directory / stale, error);
+        }
+    }
+
+  private:
+    /// The level's folder, created if missing; throws std::runtime_error when it cannot be.
+    std::filesystem::path Folder(const std::string& directoryName) const
     {
         const std::filesystem::path directory = std::filesystem::path(m_directory) / directoryName;
         std::error_code error;
@@ -424,13 +488,9 @@ class Reporter
             throw std::runtime_error("cannot create " + directory.string() + ": " +
                                      error.message());
         }
-        OutputFile file((directory / "summary.json").string());
-        const std::string text = summary.dump(2) + "\n";
-        std::fputs(text.c_str(), file.Stream());
-        file.Commit();
+        return directory;
     }
 
-  private:
     /// Draws errors.png; false when it could not be drawn.
     bool Plot(const ValidationResult& result, const std::filesystem::path& directory,
               const std::string& csvPath) const
@@ -490,7 +550,8 @@ class Reporter
     }
 
     std::string m_directory;
-    std::string m_python; ///< empty: no plots
+    bool m_plot = true;   ///< the page's plots
+    std::string m_python; ///< empty: no errors.png
 };
 
 /// Creates `directory` if needed and proves a file can be written in it (a trial file,
@@ -517,41 +578,202 @@ bool CanWriteInto(const std::string& directory)
     return true;
 }
 
-/// Loads the scenes and builds each once: bad input (a file that does not load, or a scene the
-/// engine refuses) is reported before anything runs, and then nothing runs.
-std::optional<std::vector<Scene>> LoadScenes(const std::vector<std::string>& paths)
+/// What became of one level given on the command line.
+enum class LevelStatus
 {
-    std::vector<Scene> scenes;
-    bool bad = false;
-    for (const std::string& path : paths)
-    {
-        std::optional<Scene> scene = LoadSceneOrReport(path);
-        if (scene && BuildWorldOrReport(*scene))
-        {
-            scenes.push_back(std::move(*scene));
-        }
-        else
-        {
-            bad = true;
-        }
-    }
-    if (bad)
-    {
-        return std::nullopt;
-    }
-    return scenes;
-}
+    Runnable, ///< loaded and built: it is validated
+    Skipped,  ///< uses what Box2D 2.4.1 lacks (validation::Unmirrorable): documented, not run
+    Refused,  ///< could not be loaded or built: bad input, said as an error case
+};
 
-/// One scene's outcome, kept until its turn to be printed comes.
-struct SceneOutcome
+/// One level given on the command line, loaded (or why not), and what its run gave.
+struct Level
 {
+    std::string path;
+    LevelStatus status = LevelStatus::Runnable;
+    std::optional<Scene> scene;
+    std::vector<std::string> problems; ///< why it was skipped or refused, one line each
+    std::string directory;             ///< its folder under --report
+
     ValidationResult result; ///< without perFrame, once the report is written
     bool compared = true;    ///< false: only the plausibility checks ran (--solver not box2d)
     std::optional<validation::PlausibilityResult> plausibility;
     double seconds = 0;
-    std::string reportError;              ///< the report could not be written: why
-    std::vector<std::string> sceneErrors; ///< the engine refused the scene
+    std::string reportError;   ///< the report could not be written: why
+    bool refusedByRun = false; ///< refused by validation::Validate: problems not printed yet
+    ReportRow row;             ///< its part of index.html (--report)
 };
+
+/// Loads and builds each level once. A level that does not load or build is refused (its
+/// messages printed to stderr), and one to be compared with Box2D that needs what Box2D 2.4.1
+/// lacks is skipped; the others run. `solver` (--solver) decides which are compared: all with
+/// box2d or unset, none with another back end (plausibility checks instead).
+std::vector<Level> LoadLevels(const std::vector<std::string>& paths,
+                              const std::optional<SolverKind>& solver)
+{
+    std::vector<Level> levels;
+    for (const std::string& path : paths)
+    {
+        Level& level = levels.emplace_back();
+        level.path = path;
+        level.scene = LoadSceneOrReport(path, &level.problems);
+        if (!level.scene)
+        {
+            level.status = LevelStatus::Refused;
+            continue;
+        }
+        level.compared = solver.value_or(SolverKind::Box2D) == SolverKind::Box2D;
+        if (level.compared)
+        {
+            level.problems = validation::Unmirrorable(*level.scene);
+        }
+        if (!level.problems.empty())
+        {
+            level.status = LevelStatus::Skipped; // NotRunText names each field
+        }
+        else if (!BuildWorldOrReport(*level.scene, &level.problems))
+        {
+            level.status = LevelStatus::Refused;
+        }
+    }
+    return levels;
+}
+
+/// The test case name of each level: its file path, made unique when a path is given twice.
+std::vector<std::string> CaseNames(const std::vector<Level>& levels)
+{
+    std::vector<std::string> names;
+    std::set<std::string> used;
+    for (const Level& level : levels)
+    {
+        std::string name = level.path;
+        for (int n = 2; !used.insert(name).second; ++n)
+        {
+            name = level.path + " #" + std::to_string(n);
+        }
+        names.push_back(name);
+    }
+    return names;
+}
+
+/// A level that was not run, as its PASS/FAIL line would stand: "SKIP ..." with each field
+/// Box2D lacks, or "ERROR ..." (its problems are on stderr, as every command says bad input).
+std::string NotRunText(const Level& level)
+{
+    if (level.status == LevelStatus::Refused)
+    {
+        return "ERROR " + level.path + ": cannot be loaded or built (" +
+               std::to_string(level.problems.size()) +
+               (level.problems.size() == 1 ? " problem" : " problems") + ", on stderr)\n";
+    }
+    std::string text =
+        "SKIP " + level.path + ": uses what Box2D 2.4.1 does not have, so it cannot be compared\n";
+    for (const std::string& problem : level.problems)
+    {
+        text += "  " + problem + "\n";
+    }
+    return text;
+}
+
+JUnitCase NotRunCase(const Level& level, const std::string& name)
+{
+    JUnitCase testCase;
+    testCase.name = name;
+    testCase.className = "meff.validate";
+    testCase.file = level.path;
+    testCase.output = NotRunText(level);
+    testCase.outcome = level.status == LevelStatus::Skipped ? JUnitCase::Outcome::Skipped
+                                                            : JUnitCase::Outcome::Error;
+    testCase.type = level.status == LevelStatus::Skipped ? "unmirrored" : "scene";
+    testCase.message =
+        level.problems.empty() ? std::string("cannot be loaded") : level.problems.front();
+    for (const std::string& problem : level.problems)
+    {
+        testCase.text += problem + "\n";
+    }
+    return testCase;
+}
+
+/// summary.json of a level that was not run: why.
+nlohmann::json NotRunSummary(const Level& level)
+{
+    return {{"meff_version", MEFF_VERSION},
+            {"status", level.status == LevelStatus::Skipped ? "skipped" : "error"},
+            {"scene", level.scene ? nlohmann::json(level.scene->name) : nlohmann::json()},
+            {"source", level.path},
+            {"passed", false},
+            {"problems", level.problems}};
+}
+
+/// A level's row of index.html: its outcome, errors and pictures.
+ReportRow RowOf(Level& level, const JUnitCase& testCase)
+{
+    ReportRow row = std::move(level.row);
+    row.path = level.path;
+    row.scene = level.scene ? level.scene->name : "";
+    row.directory = level.directory;
+    row.text = testCase.output;
+    if (level.status != LevelStatus::Runnable)
+    {
+        row.status = level.status == LevelStatus::Skipped ? "skipped" : "error";
+        if (level.status == LevelStatus::Refused) // its problems went to stderr
+        {
+            for (const std::string& problem : level.problems)
+            {
+                row.text += "  " + problem + "\n";
+            }
+        }
+        return row;
+    }
+    const bool plausible = !level.plausibility || level.plausibility->passed;
+    if (level.plausibility)
+    {
+        row.text = (level.compared ? ResultText(level.result) : "") +
+                   PlausibilityText(*level.plausibility);
+    }
+    if (!level.compared) // held to the plausibility checks alone
+    {
+        row.status = plausible ? "passed" : "failed";
+        return row;
+    }
+    const ValidationResult& result = level.result;
+    row.status = result.passed && plausible ? "passed" : "failed";
+    row.ran = true;
+    row.frames = result.frames;
+    row.divergenceFrame = result.divergenceFrame;
+    for (const validation::DivergenceDetail& detail : result.divergenceDetails)
+    {
+        row.divergence += (row.divergence.empty() ? "" : "; ") + DetailText(detail);
+    }
+    if (!row.divergence.empty())
+    {
+        row.divergence = "frame " + std::to_string(*result.divergenceFrame) + ": " + row.divergence;
+    }
+    row.position = result.position.value;
+    row.angle = result.angle.value;
+    row.velocity = result.velocity.value;
+    row.contactImpulse = result.contactImpulse.value;
+    row.jointImpulse = result.jointImpulse.value;
+    return row;
+}
+
+/// Creates the folder a file is to be written in, if missing; false (said) when it cannot.
+bool CreateParentFolder(const std::string& path)
+{
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code error;
+    if (!parent.empty())
+    {
+        std::filesystem::create_directories(parent, error);
+    }
+    if (error)
+    {
+        std::fprintf(stderr, "meff validate: cannot create %s: %s\n", parent.string().c_str(),
+                     error.message().c_str());
+        return false;
+    }
+    return true;
+}
 
 void WriteJUnit(const ValidateOptions& options, const std::vector<JUnitCase>& cases, double seconds)
 {
@@ -575,12 +797,10 @@ int Validate(const ValidateOptions& options)
     {
         paths.push_back(options.scenePaths[index]);
     }
-    // Every scene is loaded and built before anything runs: bad input runs nothing.
-    const std::optional<std::vector<Scene>> scenes = LoadScenes(paths);
-    if (!scenes)
-    {
-        return kExitBadInput;
-    }
+    // Every level is loaded and built before anything runs; one that cannot be is reported
+    // as its own case, and the others still run.
+    std::vector<Level> levels = LoadLevels(paths, options.solver);
+    const std::vector<std::string> caseNames = CaseNames(levels);
 
     validation::RunOptions run;
     run.frames = options.frames;
@@ -592,7 +812,12 @@ int Validate(const ValidateOptions& options)
 
     if (!options.junitPath.empty())
     {
-        // As for the report folder: a JUnit file that cannot be written is said before the run.
+        // As for the report folder: its folder is created, and a JUnit file that cannot be
+        // written is said before the run.
+        if (!CreateParentFolder(options.junitPath))
+        {
+            return kExitBadInput;
+        }
         try
         {
             OutputFile probe(options.junitPath);
@@ -604,7 +829,6 @@ int Validate(const ValidateOptions& options)
         }
     }
     std::optional<Reporter> reporter;
-    std::vector<std::string> directories;
     if (!options.reportDir.empty())
     {
         // A report folder that cannot be written is bad input, said before anything runs.
@@ -612,124 +836,139 @@ int Validate(const ValidateOptions& options)
         {
             return kExitBadInput;
         }
-        reporter.emplace(options.reportDir, !options.noPlot);
+        reporter.emplace(options.reportDir, !options.noPlot, options.pngPlots);
         // Named in input order, whatever order the threads finish in.
         std::set<std::string> used;
-        for (const Scene& scene : *scenes)
+        for (Level& level : levels)
         {
-            directories.push_back(DirectoryName(scene.name, used));
+            level.directory = DirectoryName(
+                level.scene ? level.scene->name : std::filesystem::path(level.path).stem().string(),
+                used);
         }
     }
 
-    std::vector<SceneOutcome> outcomes(scenes->size());
     std::vector<JUnitCase> cases;
+    std::vector<ReportRow> rows; // index.html's, in input order
     bool allPassed = true;
+    bool anyRefused = false;
     bool writeFailed = false;
-    bool refused = false;
-    Progress progress("validate", int(scenes->size()), "scenes");
+    Progress progress("validate", int(levels.size()), "scenes");
     const auto work = [&](std::size_t i)
     {
-        const auto sceneStart = std::chrono::steady_clock::now();
-        SceneOutcome& outcome = outcomes[i];
-        const Scene& scene = (*scenes)[i];
-        const std::optional<SolverKind> solver = SolverOption(options);
-        outcome.compared = solver.value_or(SolverKind::Box2D) == SolverKind::Box2D;
-        try
+        const auto levelStart = std::chrono::steady_clock::now();
+        Level& level = levels[i];
+        if (level.status == LevelStatus::Runnable)
         {
-            if (outcome.compared)
+            try
             {
-                Scene compared = scene;
-                compared.world.solver.kind = SolverKind::Box2D;
-                outcome.result = validation::Validate(solver ? compared : scene, run);
+                if (level.compared)
+                {
+                    Scene compared = *level.scene;
+                    compared.world.solver.kind = SolverKind::Box2D;
+                    level.result =
+                        validation::Validate(options.solver ? compared : *level.scene, run);
+                }
+                if (!level.compared || options.plausibility)
+                {
+                    level.plausibility =
+                        validation::CheckPlausibility(*level.scene, options.solver, options.frames);
+                }
             }
-            if (!outcome.compared || options.plausibility)
+            catch (const SceneError& error)
             {
-                outcome.plausibility = validation::CheckPlausibility(scene, solver, options.frames);
+                // Built before the run, so not expected (Box2D's mirror refusing, say); said as
+                // the level's error all the same.
+                level.status = LevelStatus::Refused;
+                level.problems = error.messages();
+                level.refusedByRun = true;
             }
-        }
-        catch (const SceneError& error)
-        {
-            outcome.sceneErrors = error.messages();
-            return;
         }
         if (reporter)
         {
             try
             {
-                if (outcome.compared)
+                if (level.status == LevelStatus::Runnable && level.compared)
                 {
-                    reporter->Write(scene, outcome.result, directories[i],
-                                    outcome.plausibility ? &*outcome.plausibility : nullptr);
+                    reporter->Write(*level.scene, level.result, level.directory,
+                                    level.plausibility ? &*level.plausibility : nullptr, level.row);
+                }
+                else if (level.status == LevelStatus::Runnable)
+                {
+                    reporter->WriteSummary(
+                        {{"meff_version", MEFF_VERSION},
+                         {"status", level.plausibility->passed ? "passed" : "failed"},
+                         {"scene", level.scene->name},
+                         {"source", level.path},
+                         {"passed", level.plausibility->passed},
+                         {"plausibility", PlausibilityJson(*level.plausibility)}},
+                        level.directory);
                 }
                 else
                 {
-                    reporter->WriteSummary(
-                        {{"scene", scene.name},
-                         {"source", scene.sourcePath},
-                         {"passed", outcome.plausibility->passed},
-                         {"plausibility", PlausibilityJson(*outcome.plausibility)}},
-                        directories[i]);
+                    reporter->WriteSummary(NotRunSummary(level), level.directory);
                 }
             }
             catch (const std::runtime_error& error)
             {
-                outcome.reportError = error.what();
+                level.reportError = error.what();
             }
         }
-        outcome.result.perFrame = {}; // written: no need to hold every frame until the end
-        outcome.seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - sceneStart).count();
+        level.result.perFrame = {}; // written: no need to hold every frame until the end
+        level.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - levelStart).count();
     };
     const auto finish = [&](std::size_t i)
     {
-        const SceneOutcome& outcome = outcomes[i];
+        Level& level = levels[i];
         progress.Clear();
-        if (refused || !outcome.sceneErrors.empty())
+        if (level.status == LevelStatus::Runnable && level.compared)
         {
-            // Checked before the run, so not expected; said as bad input all the same.
-            for (const std::string& message : outcome.sceneErrors)
-            {
-                std::fprintf(stderr, "%s\n", message.c_str());
-            }
-            refused = true;
-            return;
+            std::fputs(ResultText(level.result).c_str(), stdout);
+            allPassed = allPassed && level.result.passed;
+            cases.push_back(JUnitCaseOf(level.result, level.seconds));
+            cases.back().name = caseNames[i];
         }
-        JUnitCase testCase;
-        if (outcome.compared)
+        else if (level.status == LevelStatus::Runnable)
         {
-            std::fputs(ResultText(outcome.result).c_str(), stdout);
-            testCase = JUnitCaseOf(outcome.result, outcome.seconds);
-            allPassed = allPassed && outcome.result.passed;
-        }
-        else
-        {
-            testCase.name = (*scenes)[i].name;
+            JUnitCase testCase;
+            testCase.name = caseNames[i];
             testCase.className = "meff.validate";
-            testCase.file = (*scenes)[i].sourcePath;
-            testCase.seconds = outcome.seconds;
+            testCase.file = level.path;
+            testCase.seconds = level.seconds;
+            cases.push_back(std::move(testCase));
         }
-        if (outcome.plausibility)
+        if (level.status == LevelStatus::Runnable && level.plausibility)
         {
-            std::fputs(PlausibilityText(*outcome.plausibility).c_str(), stdout);
-            AddPlausibilityToCase(*outcome.plausibility, testCase);
-            allPassed = allPassed && outcome.plausibility->passed;
+            std::fputs(PlausibilityText(*level.plausibility).c_str(), stdout);
+            AddPlausibilityToCase(*level.plausibility, cases.back());
+            allPassed = allPassed && level.plausibility->passed;
+        }
+        if (level.status != LevelStatus::Runnable)
+        {
+            for (const std::string& problem :
+                 level.refusedByRun ? level.problems : std::vector<std::string>{})
+            {
+                std::fprintf(stderr, "%s\n", problem.c_str());
+            }
+            std::fputs(NotRunText(level).c_str(), stdout);
+            anyRefused = anyRefused || level.status == LevelStatus::Refused;
+            cases.push_back(NotRunCase(level, caseNames[i]));
         }
         std::fflush(stdout);
-        if (!outcome.reportError.empty())
+        if (reporter)
         {
-            std::fprintf(stderr, "meff validate: %s\n", outcome.reportError.c_str());
+            rows.push_back(RowOf(level, cases.back()));
+        }
+        if (!level.reportError.empty())
+        {
+            std::fprintf(stderr, "meff validate: %s\n", level.reportError.c_str());
             writeFailed = true;
         }
-        cases.push_back(std::move(testCase));
-        outcomes[i] = {}; // printed: keep only the JUnit case
+        level = {}; // printed: keep only the JUnit case
         progress.Update(int(i + 1));
     };
-    RunInOrder(scenes->size(), ResolveJobs(options.jobs), work, finish);
+    RunInOrder(levels.size(), ResolveJobs(options.jobs), work, finish);
     progress.Finish();
-    if (refused)
-    {
-        return kExitBadInput;
-    }
     if (!options.junitPath.empty())
     {
         try
@@ -744,9 +983,26 @@ int Validate(const ValidateOptions& options)
             writeFailed = true;
         }
     }
+    if (reporter)
+    {
+        try
+        {
+            WriteHtmlReport(options.reportDir, rows);
+        }
+        catch (const std::runtime_error& error)
+        {
+            std::fprintf(stderr, "meff validate: %s\n", error.what());
+            writeFailed = true;
+        }
+    }
     if (reporter && !writeFailed)
     {
-        std::printf("reports in %s/\n", options.reportDir.c_str());
+        std::printf("reports in %s/ (open %s/index.html)\n", options.reportDir.c_str(),
+                    options.reportDir.c_str());
+    }
+    if (anyRefused)
+    {
+        return kExitBadInput;
     }
     return allPassed && !writeFailed ? kExitOk : kExitRunFailed;
 }
@@ -763,7 +1019,10 @@ Command AddValidateCommand(CLI::App& parent)
         "Prints one line per scene, PASS or FAIL, with each maximum error and where it "
         "happened. With --solver colour or soft_step, each scene is instead held to the "
         "plausibility checks, a PASS or FAIL line per scene with each figure and its limit. "
-        "Exit status 0 when every scene passes, 1 when any fails, 2 for bad input.");
+        "A level that cannot be loaded or built is an ERROR case and one that uses what Box2D "
+        "2.4.1 lacks (Box2D v3's shapes, joint springs, characters; rolling resistance) a SKIP "
+        "case when it is to be compared; the other levels still run. Exit status 0 when every "
+        "level passes or is skipped, 1 when any fails, 2 when any could not be loaded or built.");
     app->add_option("scenes", options->scenePaths, "Scene files (JSON)")
         ->required()
         ->type_name("SCENE.json...");
@@ -773,14 +1032,19 @@ Command AddValidateCommand(CLI::App& parent)
         ->type_name("N")
         ->check(CLI::NonNegativeNumber);
     app->add_option("--report", options->reportDir,
-                    "Write DIR/<scene>/summary.json, divergence.csv (one row per frame) and "
-                    "errors.png (a plot of the errors, if python3 with matplotlib is present)")
+                    "Write DIR/index.html (a row per level: outcome, first divergent frame, "
+                    "largest errors; each level's errors plotted; for a divergence, the frames "
+                    "before and at it zoomed on the body, Box2D's outlines over meff's) and "
+                    "DIR/<level>/summary.json, divergence.csv (one row per frame)")
         ->type_name("DIR");
     app->add_option("--block-solver", options->blockSolver,
                     "Contact block solver in both engines: on, off (pure scalar form), or as "
                     "the scene says (default)")
         ->check(CLI::IsMember({"on", "off", "scene"}));
-    app->add_flag("--no-plot", options->noPlot, "Skip the PNG plots");
+    app->add_flag("--no-plot", options->noPlot, "Skip the plots (the page's and errors.png)");
+    app->add_flag("--png-plots", options->pngPlots,
+                  "Also draw DIR/<level>/errors.png with matplotlib (python3-matplotlib; slow: "
+                  "seconds per level)");
     AddJobsOption(app, options->jobs, "Validate scenes");
     AddShardOption(app, options->shard, "scenes");
     app->add_option("--junit", options->junitPath,
@@ -788,12 +1052,11 @@ Command AddValidateCommand(CLI::App& parent)
                     "divergence frame, each quantity that exceeded its tolerance, the body, "
                     "contact point or joint, and both engines' values there")
         ->type_name("FILE.xml");
-    app->add_option("--solver", options->solver,
+    AddSolverOption(*app, options->solver,
                     "Run every scene with this back end: box2d (compared with Box2D frame by "
                     "frame), colour or soft_step (held to the plausibility checks instead: "
                     "no NaN, energy, rebound, joint gaps, penetration, speed, rest; "
-                    "docs/validation.md), or each scene's own (scene, the default)")
-        ->check(CLI::IsMember({"scene", "box2d", "colour", "soft_step"}));
+                    "docs/validation.md); default: each scene's own");
     app->add_flag("--plausibility", options->plausibility,
                   "Also run the plausibility checks where the scenes are compared with Box2D");
     // Hidden: makes meff differ from Box2D on purpose, to show that validation can fail.

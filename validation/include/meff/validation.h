@@ -180,6 +180,15 @@ struct SettleResult
     std::vector<std::string> failures; ///< one line per failed check
 };
 
+/// A check beside the frame-by-frame comparison that did not hold (a back end's own
+/// invariants, say): it fails the scene, and every report carries it.
+struct CheckFailure
+{
+    std::string check;                ///< what was checked: the JUnit failure type
+    std::string message;              ///< one line
+    std::vector<std::string> details; ///< the evidence, one line each (may be empty)
+};
+
 struct ValidationResult
 {
     std::string scene;       ///< scene name
@@ -215,11 +224,25 @@ struct ValidationResult
     std::vector<std::string> unmirrored;
     std::vector<std::string> notes; ///< what the mirror cannot reproduce, and other warnings
     std::string failure;            ///< a simulation that stopped (non-finite state), or empty
+    /// Extra checks that failed (AddCheckFailure); each fails the scene.
+    std::vector<CheckFailure> checkFailures;
+    /// The comparison with Box2D held (frame by frame, or as the notes say); `passed` also
+    /// needs every extra check to hold and the simulation to run to its end.
+    bool comparisonPassed = false;
     bool passed = false;
 };
 
+/// Records a failed extra check on a result; the scene then fails.
+void AddCheckFailure(ValidationResult& result, CheckFailure failure);
+
+/// What the scene uses that Box2D 2.4.1 has no form of at all (Box2D v3's shapes, joint
+/// springs and character mover; rolling resistance): one message per field, naming it. A scene
+/// with any cannot be validated: Validate refuses it (these are documented, so a run of many
+/// levels skips it rather than failing).
+std::vector<std::string> Unmirrorable(const Scene& scene);
+
 /// Builds both worlds from the scene, steps them in lockstep and compares every frame.
-/// Throws SceneError when the scene cannot be built.
+/// Throws SceneError when the scene cannot be built or is Unmirrorable.
 ValidationResult Validate(const Scene& scene, const RunOptions& options = {});
 
 /// The same point in both engines: the same unordered pair of shapes and the same feature key.
