@@ -12,6 +12,9 @@ runs the scene once with the solver (and settings) given, and prints what the sc
   heavy_dropped_on_light  whether the heavy box stays on top, and how far the light one is pressed
                           beyond rest (m)
   stack12_small           the largest drift of a box between 1 s and 10 s (m)
+  pulley_joint, theo_jansen, bullet_test (samples/testbed/): how far box 1 is pulled back up
+                          after its lowest point, the fastest body, the plank's rise above its
+                          start
 and, for every scene, the largest kinetic energy and whether any number was not finite. Masses and
 inertias are computed from the scene's boxes and circles (the only shapes these scenes use).
 """
@@ -73,7 +76,7 @@ def run(meff, scene, solver, settings, continuous):
 
 
 def kinetic(state, masses):
-    return sum(0.5 * masses[b][0] * (s["vx"] ** 2 + s["vy"] ** 2) + 0.5 * masses[b][1] * s["omega"] ** 2
+    return sum(0.5 * masses.get(b, (0, 0))[0] * (s["vx"] ** 2 + s["vy"] ** 2) + 0.5 * masses.get(b, (0, 0))[1] * s["omega"] ** 2
                for b, s in state.items())
 
 
@@ -131,6 +134,16 @@ def main():
         drift = max(math.hypot(last[b]["x"] - first[b]["x"], last[b]["y"] - first[b]["y"])
                     for b in first)
         print(f"  largest drift between 1 s and 10 s {drift:.6g} m")
+    elif name == "pulley_joint":
+        ys = [s["box1"]["y"] for s in frames]
+        low = min(range(len(ys)), key=lambda i: ys[i])
+        print(f"  box 1 pulled back up by {max(ys[low:]) - ys[low]:.6g} m after its lowest point")
+    elif name == "theo_jansen":
+        fastest = max(math.hypot(b["vx"], b["vy"]) for s in frames for b in s.values())
+        print(f"  fastest body {fastest:.6g} m/s")
+    elif name == "bullet_test":
+        rise = max(s["plank"]["y"] for s in frames) - frames[0]["plank"]["y"]
+        print(f"  the plank's highest point above its start {rise:.6g} m")
     return 0 if finite else 1
 
 
