@@ -42,18 +42,25 @@ void RowBodiesOf(const SoftContact& c, const SoftContactPoint& p, RowOnBody out[
               SolverMoves(c.mB, c.iB)};
 }
 
+/// A condition test row by row (as Box2D's k11² < 1000·det for its two-point block, looser: a
+/// light box under a 1000 times heavier one keeps about 1e-3): a row whose pivot keeps less
+/// than this fraction of its diagonal says nearly what the rows before it say, and solving it
+/// gave huge, opposed impulses (impact_storm's pile flew apart at 3e5 m/s).
+constexpr double kMinPivotFraction = 1e-6;
+
 /// In-place Cholesky factor (lower) of the m×m matrix `a` (row-major); false if a pivot is not
-/// positive.
+/// positive or keeps less than kMinPivotFraction of its diagonal.
 bool Cholesky(int m, double* a)
 {
     for (int j = 0; j < m; ++j)
     {
-        double d = a[j * m + j];
+        const double diagonal = a[j * m + j];
+        double d = diagonal;
         for (int k = 0; k < j; ++k)
         {
             d -= a[j * m + k] * a[j * m + k];
         }
-        if (!(d > 0))
+        if (!(d > kMinPivotFraction * diagonal))
         {
             return false;
         }
@@ -211,7 +218,8 @@ void SoftContactDirect::Prepare(std::span<const SoftContact> contacts, std::int3
             }
         }
         // Rows that say the same thing (a box's corners pressed by two neighbours) make A
-        // singular; a relative 1e-9 on the diagonal keeps them solvable, well below float.
+        // singular; a relative 1e-9 on the diagonal keeps Cholesky's pivots positive (the
+        // condition test then sends such a group to the rows one by one).
         for (std::size_t i = 0; i < n; ++i)
         {
             A[i * n + i] *= 1 + 1e-9;

@@ -18,10 +18,11 @@
 //
 // the exact answer the sweeps converge to. It is found by principal pivoting (Murty's rule: the
 // set of rows that push is changed one row at a time, the largest infeasible index first, each
-// guess solved by Cholesky in double), which ends for every positive definite A; A gains a
-// relative 1e-9 on its diagonal so that rows that say the same thing stay solvable. A group that
-// does not converge within its pivot budget is left to the sweeps for that sweep. Friction stays
-// with each contact's rows, solved after the group's normal rows.
+// guess solved by Cholesky in double), which ends for every positive definite A. A group whose
+// pushing rows say nearly the same thing (a pivot below 1e-6 of its diagonal: a condition test as
+// Box2D's for its two-point block) or that does not converge within its pivot budget is left to the
+// rows one by one for that sweep. Friction stays with each contact's rows, solved after the
+// group's normal rows.
 #pragma once
 
 #include "solvers/soft_step/soft_contact_solver.h"
