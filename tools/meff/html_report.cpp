@@ -142,11 +142,6 @@ render::Camera CameraOn(const World& world, BodyId body, double apart)
     return camera;
 }
 
-std::string Escape(const std::string& text)
-{
-    return XmlEscape(text);
-}
-
 std::string StatusWord(const std::string& status)
 {
     return status == "passed"    ? "PASS"
@@ -382,7 +377,7 @@ void WriteHtmlReport(const std::string& directory, const std::vector<ReportRow>&
         const ReportRow& row = rows[i];
         html += "<tr class=\"" + row.status + "\"><td class=\"s\">" + StatusWord(row.status) +
                 "</td><td class=\"l\"><a href=\"#level-" + std::to_string(i) + "\">" +
-                Escape(row.path) + "</a></td><td class=\"l\">" + Escape(row.scene) + "</td>";
+                XmlEscape(row.path) + "</a></td><td class=\"l\">" + XmlEscape(row.scene) + "</td>";
         if (row.ran)
         {
             html += "<td>" + std::to_string(row.frames) + "</td><td>" +
@@ -402,23 +397,24 @@ void WriteHtmlReport(const std::string& directory, const std::vector<ReportRow>&
     {
         const ReportRow& row = rows[i];
         html += "<section id=\"level-" + std::to_string(i) + "\"><h2>" + StatusWord(row.status) +
-                " " + Escape(row.path) + "</h2>";
+                " " + XmlEscape(row.path) + "</h2>";
         if (!row.divergence.empty())
         {
-            html += "<p>" + Escape(row.divergence) + "</p>";
+            html += "<p>" + XmlEscape(row.divergence) + "</p>";
         }
-        html += "<pre>" + Escape(row.text) + "</pre>";
+        html += "<pre>" + XmlEscape(row.text) + "</pre>";
         for (const ReportImage& image : row.images)
         {
-            html += "<figure><img src=\"" + Escape(image.file) + "\" alt=\"" +
-                    Escape(image.caption) + "\" width=\"480\" height=\"360\"><figcaption>" +
-                    Escape(image.caption) + "</figcaption></figure>";
+            html += "<figure><img src=\"" + XmlEscape(image.file) + "\" alt=\"" +
+                    XmlEscape(image.caption) + "\" width=\"480\" height=\"360\"><figcaption>" +
+                    XmlEscape(image.caption) + "</figcaption></figure>";
         }
         html += row.plotSvg;
         if (!row.directory.empty())
         {
-            html += "<p><a href=\"" + Escape(row.directory) + "/summary.json\">summary.json</a>" +
-                    (row.ran ? " · <a href=\"" + Escape(row.directory) +
+            html += "<p><a href=\"" + XmlEscape(row.directory) +
+                    "/summary.json\">summary.json</a>" +
+                    (row.ran ? " · <a href=\"" + XmlEscape(row.directory) +
                                    "/divergence.csv\">divergence.csv</a>"
                              : std::string()) +
                     "</p>";
