@@ -149,7 +149,7 @@ std::vector<std::pair<std::string, std::string>> Unmirrored(const Scene& scene)
         const std::string name = SolverKindName(solver.kind);
         settings.emplace_back("world.solver \"" + name + "\"",
                               "world.solver is \"" + name +
-                                  "\" (or --solver), which Box2D 2.4.1 does not "
+                                  "\", which Box2D 2.4.1 does not "
                                   "have: it solves its rows in "
                                   "another order or way, so the engines part by round-off (or "
                                   "more) once constraints act");
