@@ -99,6 +99,10 @@ class Exporter
         {
             Property(custom, "meff.validate", "string", validate->dump());
         }
+        if (const std::optional<Json> plausibility = Plausibility())
+        {
+            Property(custom, "meff.plausibility", "string", plausibility->dump());
+        }
         if (m_scene.camera)
         {
             const Json render = {
@@ -182,6 +186,47 @@ class Exporter
     }
 
     /// The "validate" section when anything in it differs from the defaults.
+    /// The scene's "plausibility" section, each field that differs from its default (none:
+    /// nothing to carry).
+    std::optional<Json> Plausibility() const
+    {
+        const ScenePlausibility& p = m_scene.plausibility;
+        const ScenePlausibility defaults;
+        if (p == defaults)
+        {
+            return std::nullopt;
+        }
+        Json out = Json::object();
+        const std::tuple<const char*, double, double> thresholds[] = {
+            {"energy_gain", p.energyGain, defaults.energyGain},
+            {"energy_lift", p.energyLift, defaults.energyLift},
+            {"energy_speed", p.energySpeed, defaults.energySpeed},
+            {"rebound_speed", p.reboundSpeed, defaults.reboundSpeed},
+            {"rebound_approach", p.reboundApproach, defaults.reboundApproach},
+            {"penetration", p.penetration, defaults.penetration},
+            {"joint_gap", p.jointGap, defaults.jointGap}};
+        for (const auto& [name, value, fallback] : thresholds)
+        {
+            if (value != fallback)
+            {
+                out[name] = value;
+            }
+        }
+        if (p.maxSpeed)
+        {
+            out["max_speed"] = *p.maxSpeed;
+        }
+        if (p.maxRise)
+        {
+            out["max_rise"] = *p.maxRise;
+        }
+        if (p.rest)
+        {
+            out["rest"] = {{"after", p.rest->after}, {"speed", p.rest->speed}};
+        }
+        return out;
+    }
+
     std::optional<Json> Validate() const
     {
         const SceneTolerances& t = m_scene.tolerances;

@@ -550,7 +550,7 @@ class Importer
         }
         scene["world"] = settings;
         m_converter.From("world", "");
-        for (const char* section : {"validate", "render", "analytic"})
+        for (const char* section : {"validate", "render", "analytic", "plausibility"})
         {
             const std::string name = kMeffPrefix + std::string(section);
             if (std::optional<Json> value = PropertyJson(m_converter, custom, name, 1 /* root */))
