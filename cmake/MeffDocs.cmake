@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # The API reference: `cmake --build BUILD --target docs` runs Doxygen (Debian's `doxygen`
 # package) over the engine's public headers into BUILD/docs/html/index.html. Every public
 # symbol of engine/include/meff must have a `///` comment: an undocumented one, or any other

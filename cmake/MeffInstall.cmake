@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # `cmake --install BUILD [--prefix DIR]`: the libraries that were built, their headers, the
 # CMake package (find_package(meff CONFIG): meffConfig.cmake, meffConfigVersion.cmake and the
 # targets meff::engine, and meff::scene, meff::validation, meff::render when built) and a

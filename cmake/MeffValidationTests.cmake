@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # meff_add_validation_tests(DIR [NAME_PREFIX PREFIX] [FORMAT auto|meff|b2djson] [FRAMES N]
 #                           [JUNIT_DIR DIR] [LABELS LABEL...] [ARGS ARG...])
 #

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // libFuzzer targets for the b2dJson importer (issue 36), built from this one file:
 //
 // * b2djson_fuzzer: any bytes given to meff::ImportB2dJson either import or are refused with a

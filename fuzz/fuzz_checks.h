@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // What every fuzz target checks of a refusal, and how it reports a finding.
 #pragma once
 

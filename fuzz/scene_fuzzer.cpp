@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // libFuzzer target for the scene loader (issue 7): any bytes given to meff::ParseScene either
 // load or are refused with a SceneError whose every message is a clear "FILE: ..." line; a
 // scene that loads is built into a World (which must accept it: the loader and the engine

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # Times meff beside Box2D v3 on samples/bench/ scenes, paired and alternating (docs/
 # performance.md): per scene and round, v3 on 1 worker, meff by colour and by the soft step on 1
 # thread, v3 on 2 workers, meff by colour and by the soft step on 2 threads. Prints ms/step per

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # Configures and builds meff into ${MEFF_BUILD_DIR:-build}. Extra arguments go to cmake.
 # MEFF_BUILD_TARGET=NAME builds that target (and what it needs) instead of everything.
 set -euo pipefail

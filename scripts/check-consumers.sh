@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # meff used from outside its repository, as games use it (what CI runs after the test suite):
 #   1. `cmake --install` of the build directory (default: build, already built) into a prefix,
 #      with the licence files (LICENSE, THIRD_PARTY_NOTICES) in share/doc/meff;

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # Installs everything meff needs from Debian 12's packages. Needs root (or sudo).
 set -euo pipefail
 SUDO=""

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # Regenerates the renderer's and the viewer's images in docs/images/ from today's code:
 #   render-strip.png   newtons_cradle, frames 0, 30, 60, 90 and 120, side by side (README)
 #   render-follow.png  terrain_car with --follow chassis, every second, side by side

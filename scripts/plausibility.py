@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Measures the plausibility figures of issue 31 from `meff run --trajectory` (docs/soft-step.md,
 "Plausible in every scene").
 

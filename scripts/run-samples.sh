@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # The main job: installs what is needed, builds the meff tool (only it and the libraries it
 # links: the test suite is scripts/test.sh's), runs every bundled sample scene, validates each
 # against Box2D 2.4.1, and renders one sample to PNG frames. Everything is written under out/.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # Builds meff and runs the whole test suite through CTest. With --fast: builds only the engine
 # and its unit tests (meff_unit_tests: the compiler and Catch2) and runs the unit tier alone
 # (`ctest -L unit`, under a minute). Other arguments go to cmake.

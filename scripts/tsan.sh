@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # Builds the test suite with ThreadSanitizer (-DMEFF_SANITIZE_THREAD=ON) into
 # ${MEFF_BUILD_DIR:-build-tsan} and runs the thread tests under it: every test case tagged
 # [threads] (tests/test_threads.cpp, and the thread-pool cases of tests/test_world_lifecycle.cpp,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Helpers shared by the analytic-oracle tests of the World (test_effective_mass.cpp,
 // test_collisions.cpp, test_pendulum.cpp, test_ramp.cpp, test_stacking.cpp,
 // test_world_analytic.cpp). Every oracle there is a closed form of rigid-body mechanics; the

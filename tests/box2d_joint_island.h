@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A Box2D 2.4.1 island of joints only (no shapes, so no contacts), mirrored body by body and
 // joint by joint, and stepped through meff's joint functions by a copy of b2Island::Solve's
 // order of operations. Shared by the joint golden tests (test_joints_box2d*.cpp), which step

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Random shapes and poses built identically in meff and in Box2D 2.4.1, for golden tests that
 // compare distance, shape cast, time of impact and manifolds between the engines.
 #pragma once

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest (issue 20, the CI job for Box2D users' levels):
 check_b2djson_levels.py MEFF LEVEL_DIR WORK_DIR SAMPLE_SCENE
 

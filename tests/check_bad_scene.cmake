@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # cmake -DMEFF=... -DSCENE=... -DEXPECTED=... -P check_bad_scene.cmake
 # Passes when `meff run SCENE` exits with status 2, writes exactly the EXPECTED text to stderr
 # and nothing to stdout.

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """The plausibility checks on a folder of scenes under one back end (issue 31).
 
 Runs `meff validate --solver BACKEND` (with --plausibility for box2d, which is also compared

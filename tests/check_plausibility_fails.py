@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """The plausibility checks can fail (issue 31): scenes held to thresholds no solver meets.
 
 tests/plausibility/tight_*.json each set one threshold below what every back end does (a

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # cmake -DMEFF=... -DSCENE=... -DOUTPUT_DIR=... -P check_run_scene.cmake
 # Passes when `meff run SCENE` with all three CSV outputs exits with status 0, prints its
 # one-line summary, and each file starts with its header and has data rows where data must be.

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest for `meff sweep --quick` (issue 6): check_sweep.py MEFF SCENE OUTPUT_DIR
 
 Runs the quick sweep on a pendulum scene (one with "analytic": {"kind": "pendulum"}) and

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest (issue 20): check_sweep_parallel.py MEFF SCENE WORK_DIR
 
 `meff sweep --quick` with --jobs 2 gives the rows --jobs 1 gives, in the same order, equal in

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest for `meff validate --jobs/--shard/--junit` (issue 20):
 check_validate_parallel.py MEFF WORK_DIR SCENE...
 

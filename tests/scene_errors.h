@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // What the scene loader says about a text: shared by the loader's tests.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // b2dJson (R.U.B.E.'s format): the round trip meff → b2dJson → meff gives every sample back
 // field for field, the level alone (without meff's authoring forms) builds the same world bit
 // for bit, hand-written levels (tests/b2djson/) import to exactly the values they spell in each

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Tests of the dynamic AABB tree and the broad phase (engine/src/collision/broad_phase.h).
 #include "collision/broad_phase.h"
 

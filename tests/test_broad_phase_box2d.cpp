@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Golden check of the broad phase against Box2D 2.4.1 itself (Debian's libbox2d-dev, link with
 // -lbox2d): the same operations on b2BroadPhase/b2DynamicTree and on ours must give the same
 // proxy ids, bit-identical fat boxes, the same tree height, the same query visiting order and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The user's callbacks (issue 36): installing a pre-solve callback that enables every contact,
 // or a custom filter that allows every pair, changes no result in any back end; a callback may
 // not change the world (itself included) while a step runs, and a refusal names the callback

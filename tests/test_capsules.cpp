@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Capsules and rounded polygons (Box2D v3's shapes): mass against the closed forms, manifolds
 // against hand-worked contacts, ray and shape casts against the analytic outline, resting and
 // sliding bodies under every solver back end, and the scene fields with their errors.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Chains and one-sided segments through the API and the scene format: what CreateChain makes
 // (segments, ghosts, order), what it refuses, what one-sidedness and the ghosts do to bodies
 // and rays, snapshots, and the scene fields with their errors. Agreement with Box2D 2.4.1 bit

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Golden checks of chains and one-sided segments against Box2D 2.4.1 itself (libbox2d): the
 // segment manifolds against b2CollideEdgeAndPolygon and b2CollideEdgeAndCircle for one-sided
 // edges with random ghost vertices (and for two-sided ones), the ray casts against

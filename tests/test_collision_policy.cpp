@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The collision policy each back end chooses (engine/src/collision/collision_policy.h): the
 // Box2D back end keeps Box2D 2.4.1's fat boxes and recomputes every manifold; colour and the
 // soft step use smaller boxes, unstretched (and unswept without continuous collision), a tree

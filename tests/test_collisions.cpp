@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Oracles 2 and 5: collision impulses from the seed (shared/seed/effective-mass.md),
 //   P = (1 + e)(u2 − u1)·m_red,   m_red⁻¹ = m1eff⁻¹ + m2eff⁻¹,   m_eff⁻¹ = m⁻¹ + I⁻¹(r × n)²,
 // for head-on circles, for a circle striking a free box off its centre, and for a ball

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The contact solver by colours (SolverKind::Colour, engine/src/solvers/colour/
 // colour_contact_solver.cpp): the colouring's invariant, the SIMD sine and cosine, analytic
 // answers, agreement with the island-order solver where order cannot matter, and the settled

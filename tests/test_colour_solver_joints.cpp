@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Revolute joints by colour (SolverKind::Colour, engine/src/solvers/colour/
 // colour_joint_solver.cpp): a lone joint in a lane against the island-order solver, static
 // equilibria whose joint reactions are known exactly (which also checks that the lanes'

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Continuous collision (WorldDef::continuous, the SolveContinuous stage).
 //
 // Documented behaviour: with continuous on, a fast body does not pass through static geometry

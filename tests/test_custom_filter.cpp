@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The custom collision filter (World::SetCustomFilterCallback): asked exactly when and about
 // what Box2D 2.4.1 asks its b2ContactFilter (checked call by call against libbox2d through the
 // validation mirror, the two worlds stepping bit for bit), and what its answers do.

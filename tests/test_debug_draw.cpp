@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // World::Draw through the DebugDraw interface: which primitives a world turns into, in which
 // colours, and that the flags switch each part on and off. No graphics involved.
 #include "meff/debug_draw.h"

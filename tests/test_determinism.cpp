@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Determinism (the same inputs give bit-identical runs, checked by the state hash every step)
 // and rollback (stepping on from a restored snapshot is bit-identical to the original run).
 #include <catch2/catch.hpp>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // GJK distance, overlap and shape cast (meff/distance.h): analytic cases, and golden checks
 // against Box2D 2.4.1 itself (libbox2d): for random pairs of circles, polygons and segments at
 // random poses, b2Distance, b2TestOverlap and b2ShapeCast must give bit-identical results.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Oracle 1: the effective mass at an offset point (shared/seed/effective-mass.md),
 //   m_eff⁻¹ = m⁻¹ + I⁻¹ (r × n)²,
 // checked through the public API: an impulse P along n applied at the world point c + r of a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Game events: sensors (begin/end overlap events), contact hit events and the pre-solve
 // callback.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Shape filters (meff::Filter) decide which shapes collide, by Box2D 2.4.1's rule
 // (b2ContactFilter::ShouldCollide): two shapes of the same non-zero group collide when the
 // group is positive and never when it is negative; otherwise each one's category must share a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Polygon construction, mass properties and bounding boxes (engine/src/collision/geometry.cpp).
 //
 // Tolerances: meff::Real is float (relative rounding 6e-8 per operation). The mass routines do a

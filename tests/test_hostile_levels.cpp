@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Hostile levels (issue 36): what a crafted b2dJson level or scene file could do to the
 // importer and the loader, each refused in words naming the file and the JSON path.
 #include "meff/b2djson.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The continuous stage's queue of candidate impacts (engine/src/dynamics/impact_queue.h). It
 // must find what Box2D 2.4.1's walk of the contact list finds: the smallest alpha, the first in
 // list order among equals, from the contacts an event may have changed. The whole stage is

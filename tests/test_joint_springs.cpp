@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Springs on revolute and prismatic joints (Box2D v3's): analytic oracles under every solver back
 // end — the undamped period 2π/ω and the damped decay e^(−ζωt) of a torsional oscillator, a
 // hanging mass settling at target − m·g/k on a prismatic spring, an arm held near its target

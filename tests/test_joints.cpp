@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Joint solvers driven directly with hand-built SolverData: the revolute joint (block and
 // scalar-row point constraint, motor, limits, position pass), the distance joint (rigid rod,
 // spring, limits) and MakeJoint's validation. Expected values are derived independently

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Cross-check of the joint solvers against Box2D 2.4.1 itself (Debian's libbox2d-dev): a
 // small world of joints only (no shapes, so no contacts) is stepped in Box2D and, in
 // parallel, through our joint functions driven by a mirror of b2Island::Solve. Both run in

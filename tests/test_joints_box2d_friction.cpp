@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Cross-check of the friction joint against Box2D 2.4.1's b2FrictionJoint (libbox2d): an
 // island of joints only (no shapes, so no contacts) stepped in Box2D and, beside it, through
 // meff's joint functions driven by a mirror of b2Island::Solve (box2d_joint_island.h). Both

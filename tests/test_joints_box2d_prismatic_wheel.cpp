@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Cross-check of the prismatic and wheel joints against Box2D 2.4.1 itself: islands of joints
 // only are stepped in Box2D and, in parallel, through meff's joint functions (see
 // box2d_joint_island.h). Same inputs and the same float operations in the same order must give

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Cross-check of the weld, motor and mouse joint solvers against Box2D 2.4.1 itself: small
 // islands of joints only (no shapes, so no contacts) are stepped in Box2D and, in parallel,
 // through our joint functions driven by a mirror of b2Island::Solve (box2d_joint_island.h).

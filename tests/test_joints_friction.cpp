@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Friction joint (Box2D 2.4.1's b2FrictionJoint): analytic checks under every solver back end
 // (a box sliding on a top-down floor decelerates at maxForce/m, a spinning box stops at
 // maxTorque/I), the reaction it reports, argument and scene-field errors, snapshots.

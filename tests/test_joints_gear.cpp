@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Gear joint (Box2D 2.4.1's b2GearJoint): torque passed through a gear against its analytic
 // answer under every solver back end, a rack and pinion, the sample scene gear_train.json,
 // destroying a geared joint, and argument and scene-field errors.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Prismatic and wheel joints through the World API: what they must do physically (motor force
 // balance, spring frequency), that the scalar-row form converges, and that bad definitions and
 // calls are refused. Their bit-for-bit agreement with Box2D is

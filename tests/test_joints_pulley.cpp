@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Pulley joint (Box2D 2.4.1's b2PulleyJoint): an Atwood machine against its analytic answer
 // under every solver back end, the rope length kept (lengthA + ratio·lengthB), the sample
 // scene pulley_elevator.json under every back end, argument and scene-field errors, debug draw.

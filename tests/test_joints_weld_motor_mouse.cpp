@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Weld, motor and mouse joints through the World API: what each joint is for (analytic checks),
 // both solver modes (block and scalar rows), the runtime setters, and argument validation.
 // Bit-for-bit agreement with Box2D is in test_joints_box2d_weld_motor_mouse.cpp.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A world in other length units (pixels) behaves as the same world in metres, scaled, when its
 // tolerances come from TolerancesForLengthUnits.
 #include <catch2/catch.hpp>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Contact manifolds (engine/src/collision/manifold_*.cpp, world_manifold.cpp).
 //
 // Every case is checked through WorldManifold: point count, normal (unit, from A to B),

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Golden checks of the polygon manifold against Box2D 2.4.1 itself (libbox2d): for random
 // convex polygons of 3 to 8 vertices and boxes at random, mostly overlapping poses,
 // CollidePolygons must give b2CollidePolygons' manifold bit for bit (type, reference face,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The character mover (meff/mover.h, World::CollideMover, World::CastMover): the plane solver
 // and the velocity clip against hand-worked answers, and a capsule character walking into a
 // wall, falling onto a floor and climbing a ramp in a world.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The open-addressing set of shape pairs (engine/src/dynamics/pair_set.h) against std::set,
 // under random inserts and erases: erasing shifts later keys of a probe run back, which is
 // where such tables go wrong (a key no longer found from its home slot).

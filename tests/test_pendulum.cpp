@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Oracles 3, 4 and 8: pinned bodies and pendulums.
 //   3. A rod pinned at one end, released horizontally: α = 3g/(2L) and a pin reaction of
 //      m·g/4 upward on the first step.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // World queries (ray casts, box and point overlaps, shape casts) against brute force over every
 // shape of random worlds, single-shape ray casts and point tests against Box2D 2.4.1's, and
 // CastRayClosest / OverlapAABB against b2World::RayCast / QueryAABB on the same world.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Oracle 6: a box on a static ramp of angle θ with Coulomb friction μ (restitution 0).
 //   tan θ > μ: it slides with a = g (sin θ − μ cos θ);
 //   tan θ < μ: it stays put.

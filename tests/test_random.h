@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A small deterministic random generator for tests: the same sequence on every platform and
 // standard library (std:: distributions are not specified bit for bit).
 #pragma once

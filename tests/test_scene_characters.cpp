@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A scene's "characters": kinematic capsules that BuiltScene::Step moves with the character
 // mover (World::MoveCharacter) under gravity and scripted inputs. The loader's field-path
 // errors; walking, jumping and stopping against analytic answers; the bundled sample's route.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The scene loader: every bundled sample loads and builds; every class of bad input is refused
 // with exactly the message a user should see.
 #include "meff/scene.h"

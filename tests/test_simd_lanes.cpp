@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The colour back end's SIMD lanes (engine/src/solvers/lanes/): the lane reductions and the
 // bodies' gather and scatter see every lane, with the build's lane count (four, or eight in a
 // MEFF_AVX2 build), so that both builds are held to the same checks.

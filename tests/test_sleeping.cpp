@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Sleeping (WorldDef::allowSleep): Box2D 2.4.1's rules.
 //
 // Documented behaviour: an island whose every body has rested within the sleep tolerances for

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The soft step's joint trees (SoftStepSettings::jointTrees, engine/src/solvers/soft_step/
 // soft_joint_tree.h): revolute joints that join bodies as a tree are solved together, exactly.
 // What must hold: light links holding a heavy body keep their joints closed whatever the mass

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The soft-step back end (SolverKind::SoftStep, engine/src/solvers/soft_step/) against analytic
 // answers — a soft spring's frequency and decay, a pinned rod's first step, a pendulum's energy
 // over 1000 s, each joint's constraint — and the world's promises under it: determinism,

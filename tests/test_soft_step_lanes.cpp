@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The soft step's SIMD lanes (solvers/soft_step/soft_contact_lanes.h, soft_revolute_lanes.h,
 // soft_bodies.cpp's integration): a row solved in a lane does the scalar row's operations in the
 // same order, so a contact or a hinge that shares no moving body with any other row gives the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Oracle 7: stacks at rest. A column of 10 boxes and a 20-row pyramid (210 boxes, half-extent
 // 0.5, friction 0.6) on static ground stay standing.
 //

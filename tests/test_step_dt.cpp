@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The step's length (issue 36): World::Step takes dt from kMinStepDt (1e-9 s) to kMaxStepDt
 // (1 s), the scene loader the same for world.dt.
 #include <catch2/catch.hpp>

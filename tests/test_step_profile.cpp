@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // World::GetProfile: the last step's time, stage by stage (issue 17's per-stage profile).
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Surface motion of shapes: conveyor belts (ShapeDef::tangentSpeed), in every back end.
 //
 // Oracle: a box at rest on a belt whose surface moves at s is dragged by kinetic friction,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Threads (task_system.h, World::SetTaskSystem): the default pool runs every index of a job
 // exactly once, and a world stepped on 1, 2, 3 or 8 threads — or on a job system that runs the
 // ranges in an unusual order — has the state hash and the events of the same world stepped on

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Time of impact (meff/distance.h TimeOfImpact, Sweep::Advance/Normalize): analytic cases,
 // and golden checks against Box2D 2.4.1's b2TimeOfImpact for random sweeps of circles,
 // polygons and segments: the same state and a bit-identical t.

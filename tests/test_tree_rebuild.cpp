@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Tests of the broad phase's tree grown in place and built again (TreeUpdate::EnlargeAndRebuild,
 // engine/src/collision/tree_rebuild.cpp): the colour and soft-step back ends' tree update.
 #include "collision/broad_phase.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The Box2D cross-validation: the comparison rules (meff/validation.h), the mirror, and that
 // validation can fail.
 #include "meff/box2d_mirror.h"

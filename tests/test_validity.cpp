@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The engine's acceptance rules (meff/validity.h) are one rule for the library and the scene
 // loader (issue 18, findings 3 and 7): MakeBox and MakePolygon never return what CreateShape
 // refuses; masses, inertias and areas that would be non-finite, zero or denormal are refused

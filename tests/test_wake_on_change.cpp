@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Review fixes around sleeping and events: joint setters wake only on a change (as Box2D
 // 2.4.1's SetMotorSpeed, SetTarget, SetLinearOffset), end events of shapes destroyed between
 // steps reach a game that reads events once per step, and a snapshot does not hold on to the

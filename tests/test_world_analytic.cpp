@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Physics oracles of the World against closed forms of rigid-body mechanics, through the public
 // API only. They are split by concept:
 //   test_effective_mass.cpp  m_eff⁻¹ = m⁻¹ + I⁻¹(r × n)² at an offset point

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // World promises that are not physics: no heap allocation per step once warmed up, contact
 // lifecycle events, and the order of reports.
 #include <catch2/catch.hpp>

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Plots the per-frame errors of `meff validate` (divergence.csv) against their tolerances.
 
 Run by `meff validate --report DIR` when python3 with matplotlib is available:

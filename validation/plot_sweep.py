@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Plots the speed-accuracy sweep of `meff sweep` (sweep.csv): error against cost, log-log.
 
 Run by `meff sweep` when python3 with matplotlib is available:

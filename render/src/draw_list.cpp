@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Recording DebugDraw calls to replay them later (meff render --jobs draws frames on several
 // threads while one thread steps the world).
 #include "meff/render.h"

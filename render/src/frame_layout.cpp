@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The frame's caption, legends and scale bar, laid out in output pixels (see frame_layout.h).
 #include "frame_layout.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // What a frame draws besides the world, laid out once in output pixels and painted either
 // into an image (renderer.cpp) or as SVG (svg.cpp), so that both show the same frame.
 #pragma once

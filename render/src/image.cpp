@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Images: pixels, rectangles blended over them, and stitching. Text is drawn by text.cpp.
 #include "meff/render.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // PNG encoding and decoding with libpng's simplified API (png_image), which needs no setjmp
 // error handling in C++ code: failures come back as a status and a message.
 #include "meff/render.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The OSMesa context, the OpenGL DebugDraw, and a whole frame.
 //
 // Legacy fixed-function OpenGL is all this needs: a few thousand flat-coloured triangles per

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // SVG frames: the drawing, the caption, the legends and the scale bar of RenderFrame, as vectors
 // in output pixels, for figures that scale. The geometry is RenderFrame's: the same projection
 // (frame_layout.h), line widths, point sizes and layout.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Text through FreeType in a real font (DejaVu Sans), instead of a pixel font whose 'g' read as
 // '9' and 'p' as 'ρ'. Glyphs are placed at whole-pixel pen positions and blended by their 8-bit
 // coverage with integer arithmetic, so the same text gives the same bytes on every run.

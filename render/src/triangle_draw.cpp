@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // DebugDraw as coloured triangles (see TriangleDraw in meff/render.h).
 //
 // Lines are triangles, not GL lines, so that their width is exact and the same on every

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Writes the benchmark scenes of samples/bench/ as Box2D v3's benchmark suite defines them
 (shared/benchmarks.c: large_pyramid, joint_grid, tumbler, many_pyramids, compounds, smash,
 spinner, washer; frames as v3's benchmark program steps them), plus pyramids of 10, 20 and 50

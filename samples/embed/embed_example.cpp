@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Using meff inside a game: build a world in code, step it at a fixed rate from a variable-rate
 // frame loop, and read back positions and contact impulses. Copy this and change it.
 #include "meff/world.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Hello, meff: a box falls onto the ground (the README's first program).
 #include <meff/world.h>
 

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Writes the extreme scenes of samples/extreme/ (issue 7: stability at the extremes).
 
 The JSON files are committed; this script is how they were made, so a change of geometry is

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Writes impact_storm.json: a scene of many time-of-impact events, validated against Box2D 2.4.1.
 
 Run from this folder: python3 make_impact_storm.py

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Writes samples/testbed/: scenes translated from Box2D 2.4.1's testbed (testbed/tests/*.cpp
 at tag v2.4.1). The numbers are the testbed's; each scene's description names its source file
 and says what could not be translated (keyboard input, callbacks, bodies added while running).

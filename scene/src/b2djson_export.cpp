@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // meff scene → b2dJson. Geometry and joint frames are written as the engine builds them (a
 // box's corners from MakeOffsetBox, local anchors from the joint-frame arithmetic BuildWorld
 // uses), so the level loads in Box2D as the scene runs in meff; numbers the scene holds are

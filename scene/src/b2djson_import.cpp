@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // b2dJson → meff scene. The level is converted into a meff scene document, field by field,
 // remembering which level field each scene field came from; the scene loader then checks the
 // document with every rule a meff scene obeys, and its messages are given back with the

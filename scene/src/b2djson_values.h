@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // b2dJson's conventions for values: a float is a JSON number or a string of the 8 hex digits of
 // its IEEE bits ("3FC00000" is 1.5f); a vector is {"x": ..., "y": ...}, or the number 0 for the
 // zero vector; a list of points is {"x": [...], "y": [...]}. And the JSON layout the importer

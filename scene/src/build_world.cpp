@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Turning a validated Scene into a meff World.
 #include "engine_shapes.h"
 #include "meff/scene.h"

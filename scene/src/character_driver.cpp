@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // BuiltScene::Step: the scene's characters (SceneCharacter) moved as a game moves its player,
 // then the world's step. A character is a kinematic body: the mover (World::MoveCharacter)
 // says where its capsule may go this step, and the body is given the velocity that carries it

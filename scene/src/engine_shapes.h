@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A scene's shapes as the engine's: one conversion for the loader (which checks them against
 // the engine's rules, meff/validity.h) and for BuildWorld (which creates them).
 #pragma once

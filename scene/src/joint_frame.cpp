@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 #include "joint_frame.h"
 
 namespace meff::scene_detail

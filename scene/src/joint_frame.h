@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Where a scene joint attaches to its bodies, in each body's own frame, exactly as BuildWorld
 // creates it: the world-point form goes through World::Make*JointDef (Box2D's Initialize
 // arithmetic, in the engine's precision), the local form is taken as written. BuildWorld, the

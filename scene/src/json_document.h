@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Reading JSON for the scene loader: parsing with precise error positions, and typed access to
 // fields that reports every problem as "FILE: FIELD.PATH: MESSAGE, got VALUE".
 #pragma once

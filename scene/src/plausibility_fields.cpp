@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The scene file's "plausibility" section: every threshold a number ≥ 0, "rest" an object.
 #include "plausibility_fields.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The scene file's "plausibility" section (docs/scene-format.md, "plausibility"): the
 // thresholds of the physics checks `meff validate` applies to every back end.
 #pragma once

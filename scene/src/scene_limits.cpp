@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // SceneLimits: how much a scene may hold, checked before the memory for it is taken.
 #include "json_document.h"
 

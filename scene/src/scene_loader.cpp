@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Reading and validating scene files. The rule throughout: report every problem that can be
 // found without guessing, each once, and never let a bad value reach the engine.
 #include "engine_shapes.h"

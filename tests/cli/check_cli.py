@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest cases for the `meff` tool's outputs and its failures (issue 18):
 
     check_cli.py MEFF SOURCE_DIR WORK_DIR CASE

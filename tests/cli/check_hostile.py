@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest cases for the `meff` tool under hostile input and faults (issue 36):
 
     check_hostile.py MEFF SOURCE_DIR WORK_DIR CASE

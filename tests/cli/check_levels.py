@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest cases for one command line and a run that reports every level (issue 32):
 
     check_levels.py MEFF SOURCE_DIR WORK_DIR CASE

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest (issue 20): check_progress.py MEFF SOURCE_DIR WORK_DIR
 
 A long run shows its progress on a terminal and stays quiet when not on one. For `meff

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest: the page of `meff validate --report` (issue 32), checked in a real browser.
 
     check_report.py MEFF SOURCE_DIR WORK_DIR [CHROMIUM]

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A game's use of meff, built from outside the repository (scripts/check-consumers.sh): a ball
 // dropped from 5 m onto the ground, stepped with meff's thread pool (which links the threads
 // library). Exit status 0 when it lands where physics says it must.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A game that loads its level from a meff scene (meff::scene of the installed package).
 #include <meff/scene.h>
 

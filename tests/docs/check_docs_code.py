@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """Compiles and runs the code blocks of the README and docs/, so the documentation cannot go stale.
 
 The convention (what a writer of the docs must know):

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """docs/cli.md's option lists are the `meff` tool's own --help.
 
 Each `<!-- meff-help: COMMAND -->` marker in docs/cli.md is followed by a ```text block holding

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // What the documentation's code fragments may take as given (tests/docs/check_docs_code.py
 // pastes each fragment into a function after MEFF_DOCS_NAMES or MEFF_DOCS_GAME): the game the
 // fragments call, and a world with the bodies and values they name.

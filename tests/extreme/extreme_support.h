@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Running one extreme scene (samples/extreme/) in meff and, through the validation mirror, in
 // Box2D 2.4.1, and measuring both the same way. The tests assert what must hold for meff; they
 // also measure Box2D on the same scene, so docs/stability.md's table states both engines'

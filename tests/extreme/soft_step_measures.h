@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The measures of the soft step's targets (issue 16), each taken the same way for any solver
 // back end: the distance of a pendulum from its exact motion, energy drift, joint anchor gaps,
 // displacement of resting bodies, penetration beyond rest, and pop-out speed.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The extreme scenes of samples/extreme/ (issue 7): each scene, what must hold for meff, and
 // Box2D 2.4.1's result on the same scene through the validation mirror. docs/stability.md's
 // stability table is made from the STABILITY lines these tests print (`ctest -R extreme -V`).

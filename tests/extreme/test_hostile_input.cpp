@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Hostile input to the library (issue 7): every bad value is refused the documented way, by
 // meff::InvalidArgument, and leaves the world as it was; a step that produces a non-finite
 // value throws meff::SimulationError naming the body and the step, and the world stays

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The soft step at its defaults against the targets of issue 16 (60 Hz, 10 s of simulated
 // time): each figure is measured as tests/extreme/soft_step_measures.h describes and printed
 // (ctest -V) for the documentation (docs/api-guide.md). A met target is asserted as the target; a

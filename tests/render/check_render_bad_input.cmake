@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # cmake -DMEFF=... -DOUTPUT_DIR=... "-DARGS=SCENE;OPTION;..." -P check_render_bad_input.cmake
 # Passes when `meff render ARGS --out OUTPUT_DIR` (or ARGS alone when it has its own --out)
 # exits with status 2 exactly, says why in one line on stderr, and leaves no frame file behind.

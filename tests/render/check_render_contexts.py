@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest: check_render_contexts.py MEFF SCENE WORK_DIR
 
 `meff render --jobs 2` hands its OSMesa contexts from thread to thread: a frame is drawn on

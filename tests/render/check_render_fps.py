@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """--fps N gives an N fps movie whatever the sampling (issue 34): frames rendered every step or
 every third step of a 60 Hz scene, assembled at --fps 30, play at 30 frames per second, one
 movie frame per rendered frame; without --fps the movie plays in simulated time.

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """CTest (issue 20): check_render_jobs.py MEFF SCENE WORK_DIR
 
 `meff render` on several threads, on several machines, and into a folder that holds frames:

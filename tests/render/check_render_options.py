@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """meff render's frame options from the command line (issue 34): --follow with --svg,
 --no-caption and --no-legend writes a PNG and an SVG per frame; --transparent writes RGBA PNGs.
 Usage: check_render_options.py MEFF SCENE OUT_DIR (SCENE has a body named chassis)."""

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 # cmake -DMEFF=... -DSCENE=... -DOUTPUT_DIR=... -P check_render_scene.cmake
 # Passes when `meff render SCENE` (4 steps, every 2nd frame, small, every overlay on) exits with
 # status 0 and writes exactly frame_00000.png to frame_00002.png and nothing else, and when the

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """An SVG frame, drawn by an SVG renderer (librsvg's rsvg-convert, as a browser would draw it),
 shows the PNG frame's geometry: pyramid20 after a second, every dynamic-fill pixel inside a box
 in one picture within one pixel of one in the other. Usage: check_render_svg.py MEFF SCENE

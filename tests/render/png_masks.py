@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """PNG images compared by geometry, for the tests that put meff's pictures side by side (meff
 view's screenshot and meff render's frame; an SVG frame rasterized and the PNG frame)."""
 import struct

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The off-screen renderer: the same world gives the same bytes, and pixels mean what they
 // should (a circle is where the camera says, a body moving right moves right in the image).
 #include "meff/render.h"

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """meff view opens every bundled sample and b2dJson level under Xvfb: 30 frames and a screenshot
 each (a script), exit status 0 and a screenshot of the scripted size that is not all background.
 Usage: check_view_samples.py MEFF OUT_DIR SCENE... Exits 77 (skipped) without xvfb-run."""

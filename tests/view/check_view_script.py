@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 the meff authors
 """meff view used as a person would, under Xvfb: a script loads a scene, steps it, takes a
 screenshot, drags a body and throws it; the first screenshot must show the geometry of
 `meff render`'s frame of the same state (same camera and size, no caption or legend) to within

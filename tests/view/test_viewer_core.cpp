@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // meff view's logic without a window (tools/view/viewer_core.h): the camera's mapping, the
 // session's commands (step, restart, reload, grab and throw, the back end switched), the
 // readouts and the script language.

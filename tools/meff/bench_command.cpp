@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff bench`: times meff against a peer on the same scenes in the same process — the Box2D
 // 2.4.1 mirror (default), meff with another solver back end (`--against meff:colour`, to weigh
 // one back end's cost against another's), or nothing (`--against none`, for scenes where Box2D

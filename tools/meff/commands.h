@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The subcommands of the `meff` tool. Each lives in its own file and registers itself on the
 // top-level CLI11 app; main() runs the one the user chose.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The page of `meff validate --report DIR`: DIR/index.html, one row per level (its outcome, the
 // first divergent frame, the largest errors), and under the table each level's errors plotted
 // over the run (inline SVG, drawn here: no plotting program) and, for a level that diverged,

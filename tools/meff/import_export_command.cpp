@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff import` and `meff export`: b2dJson levels (R.U.B.E.'s export) to meff scene files and
 // back (docs/b2djson.md). Each output file appears whole or not at all.
 #include "commands.h"

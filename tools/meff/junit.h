@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // JUnit XML, which every CI shows natively (GitLab's test report, GitHub Actions' test
 // reporters, Jenkins): one <testsuite> per file inside <testsuites>, one <testcase> per item.
 // The <testsuite> element and its end tag stand on lines of their own, so the files of several

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff`: runs scene files. One subcommand per file; add new ones to the list below.
 #include "commands.h"
 #include "output_file.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Output files: regular files appear whole or not at all; anything else is written through.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Spreading work over cores (--jobs N) and over machines (--shard I/N), the same way for every
 // subcommand that offers them: the answers never depend on how the work was spread.
 #pragma once

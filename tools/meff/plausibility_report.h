@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff validate`'s plausibility checks (meff/plausibility.h) as the tool reports them: a line
 // per scene, its summary.json section and its JUnit test case.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Running the Python plotting scripts (validation/plot_*.py) from the `meff` subcommands that
 // draw plots. Plots are optional: without python3 and matplotlib the data files are still
 // written, and the caller says so.

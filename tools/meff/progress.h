@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Progress of a long run on a terminal: one line on stderr, redrawn in place, with the work
 // done, the time elapsed and an estimate of the time left. Silent when stderr is not a
 // terminal, so logs and CI output never fill with carriage-return lines.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff render`: steps a scene and writes every K-th frame as a PNG, drawn off-screen through
 // OSMesa (render/), optionally with Box2D's bodies of the same frame on top, and optionally
 // assembled into a GIF or MP4 by ffmpeg.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff run`: steps a scene and writes what happened as CSV.
 #include "commands.h"
 #include "output_file.h"

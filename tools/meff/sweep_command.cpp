@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff sweep`: what accuracy each solver setting buys and what it costs, in meff and in the
 // Box2D 2.4.1 mirror, over a grid of settings.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `--threads N` of `meff run`, `bench`, `sweep` and `render`: threads lent to the world for its
 // steps (World::SetTaskSystem), the same results for any N.
 #pragma once

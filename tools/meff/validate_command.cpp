@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff validate`: runs scenes in meff and in Box2D 2.4.1 side by side and compares them frame
 // by frame (see validation/include/meff/validation.h for what is compared and how).
 #include "commands.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // `meff view`: the scene in a window (tools/view), live: play, step, drag bodies, switch the
 // back end and watch the error readouts; or a script of the same actions, for tests and
 // screenshots.

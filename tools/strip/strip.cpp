@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // meff_strip: puts PNG frames side by side into one PNG, for documentation (docs/rendering.md's
 // strip of frames made by `meff render`). The frames are copied pixel for pixel, never redrawn.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The `meff view` window (see view_app.h). Everything it decides is in viewer_core.h; this file
 // turns GLFW's input into those calls and draws the triangles they give (the render library's
 // tessellation, the same as meff render's frames) with OpenGL 3.3, and the panel with Dear

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The `meff view` window: GLFW, OpenGL 3.3 and Dear ImGui over viewer_core.h's logic.
 #pragma once
 

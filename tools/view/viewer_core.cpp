@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // meff view's logic without a window (see viewer_core.h).
 #include "viewer_core.h"
 

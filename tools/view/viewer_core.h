@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // meff view's logic, apart from any window: the camera, the session (a scene stepped, restarted,
 // reloaded, dragged by a mouse joint, its solver switched), the readouts, and the scripts that
 // drive it. The window (view_app.cpp) turns input into these calls and draws what they say;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Micro-benchmarks of the pieces a step spends its time in (see docs/performance.md).
 #include "collision/broad_phase.h"
 #include "model/body.h"

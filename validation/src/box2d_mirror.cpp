@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Building and stepping the Box2D 2.4.1 world of a scene. Numbers are converted from the
 // scene's doubles exactly as meff::BuildWorld converts them (static_cast<float>), and every
 // object is created in BuildWorld's order: each body followed by its shapes in file order,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The comparison of one frame between meff and Box2D (see meff/validation.h for the rules).
 #include "meff/validation.h"
 

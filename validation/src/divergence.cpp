@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // What a divergence looks like: for each quantity that exceeded its tolerance at the divergence
 // frame, where it happened and both engines' values, so a CI report says what went wrong
 // without opening divergence.csv.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Stepping meff and its Box2D mirror in lockstep and judging the run.
 #include "meff/box2d_mirror.h"
 #include "meff/box2d_v3_features.h"

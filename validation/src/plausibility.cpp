@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Plausibility checks (meff/plausibility.h): one run of a scene in one back end, sampled after
 // every step, and the invariants docs/validation.md describes.
 #include "meff/plausibility.h"

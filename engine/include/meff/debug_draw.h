@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Debug drawing: World::Draw describes the world as polygons, circles, segments and points
 // through this interface, as Box2D's b2Draw does, and a renderer (meff's off-screen PNG renderer
 // in render/, or a game's own) implements it. The engine itself draws nothing and depends on no

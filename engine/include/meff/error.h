@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // How the library reports errors: by exception, never by undefined behaviour.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A non-owning reference to something callable, for callbacks that must not allocate: unlike
 // std::function it never copies the callable or allocates, it only points at it. The callable
 // must outlive the FunctionRef — passing a lambda straight to a function taking a FunctionRef

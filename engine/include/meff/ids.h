@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Handles to world objects. An id is an index plus a generation: using an id after its object
 // was destroyed is detected (the generation no longer matches) and refused with InvalidArgument.
 #pragma once

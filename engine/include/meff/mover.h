@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // A kinematic character's moves, as Box2D v3's mover (b2World_CollideMover, b2SolvePlanes,
 // b2ClipVector), written for meff: the game moves a capsule itself and asks the world only
 // where it may go. One move of a character at `position` with velocity v over dt:

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Queries against one shape: ray casts, as Box2D 2.4.1's b2CircleShape, b2PolygonShape and
 // (two-sided) b2EdgeShape::RayCast, and point containment, as their TestPoint, in the same
 // floating-point order so that fractions and normals agree with Box2D bit for bit in float

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // How a world is made and stepped: WorldDef, the solver back ends and their settings, the
 // tolerances. Plain data: a game can keep and edit these without including the World.
 #pragma once

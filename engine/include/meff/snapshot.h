@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A world's whole state at one moment (World::TakeSnapshot, World::RestoreSnapshot).
 #pragma once
 

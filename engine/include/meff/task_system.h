@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Threads for the step: the engine hands a range of independent work to a TaskSystem and waits
 // for it. A game with its own job system implements TaskSystem over it (as Box2D v3's
 // enqueueTask/finishTask callbacks); otherwise MakeThreadPool gives a default pool on

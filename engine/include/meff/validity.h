@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // What the engine accepts: the rules World's Create calls (and MakeBox, MakePolygon) apply,
 // as functions that say why without throwing, so that a loader can check a whole level before
 // creating anything and report each problem at its own field. The scene loader does, so that a

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The world: owns bodies, shapes, joints and contacts, and advances them in time. This header
 // holds only World; what it takes and gives lives by concept beside it (settings.h: WorldDef and
 // the solver settings; events.h; callbacks.h; queries.h; profile.h; snapshot.h; body.h, shape.h,

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The broad phase: proxies in a dynamic tree, plus the buffer of proxies whose pairs must be
 // looked for at the next UpdatePairs (Box2D 2.4.1's b2BroadPhase).
 #include "collision/broad_phase.h"

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // What a solver back end asks of the shared collision stages (Solver::Collision): how the
 // broad phase fattens boxes and whether the narrow phase may keep a touching manifold. The
 // stages are the same code for every back end; each back end picks its settings here, so Box2D's

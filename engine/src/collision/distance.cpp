@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // GJK distance with a Voronoi-region simplex solver in barycentric coordinates (after Christer
 // Ericson), and the GJK ray cast (after Gino van den Bergen), in the operation order of Box2D
 // 2.4.1's b2_distance.cpp so that both engines agree bit for bit.

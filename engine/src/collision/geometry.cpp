@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Building polygons, and the mass and bounding boxes of shapes. Follows b2PolygonShape::Set,
 // SetAsBox, ComputeMass and ComputeAABB, b2CircleShape and b2EdgeShape of Box2D 2.4.1, with
 // the same floating-point operation order; where Box2D asserts on bad input we throw.

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Contact manifolds of a circle against a circle and against a polygon, following
 // b2CollideCircles and b2CollidePolygonAndCircle of Box2D 2.4.1 (same operation order).
 #include "collision/manifold_internal.h"

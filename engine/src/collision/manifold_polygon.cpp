@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Contact manifold between two convex polygons by reference-face clipping, following
 // b2CollidePolygons (with b2FindMaxSeparation and b2FindIncidentEdge) of Box2D 2.4.1.
 #include "collision/manifold_internal.h"

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Manifolds between rounded polygons: capsules, polygons with a rounding radius, and segments
 // meeting them. The algorithm is Box2D v3's (separating axes on the cores, reference-face
 // clipping, and a single vertex-vertex point when the cores are apart at two corners), written

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Contact manifolds of a segment against a circle and against a polygon, following
 // b2CollideEdgeAndCircle and b2CollideEdgeAndPolygon of Box2D 2.4.1: a two-sided segment
 // (m_oneSided == false), or a one-sided segment with ghost vertices (a chain's segment), whose

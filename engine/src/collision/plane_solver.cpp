@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The mover's plane solver (meff/mover.h). Each plane is one scalar row on the mover's
 // translation d with Jacobian n (a unit normal) and an effective mass of 1 — the seed's k for a
 // body of unit mass that does not turn — so the row's update is the plain projection

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Ray casts against single shapes and point containment: Box2D 2.4.1's b2CircleShape,
 // b2PolygonShape and b2EdgeShape (two-sided and one-sided) RayCast and TestPoint, with the same
 // floating-point operation order so that World::CastRay agrees with b2World::RayCast bit for bit.

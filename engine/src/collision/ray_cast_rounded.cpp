@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Ray casts and point tests against rounded outlines: capsules and rounded polygons (Box2D
 // v3's shapes). The rounded outline is the core polygon's edges pushed out by the radius,
 // joined by arcs of that radius about the vertices, so the ray's entry is the earliest entry

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Capsules and rounded polygons (Box2D v3's shapes; Box2D 2.4.1 has neither): the capsule as
 // a two-vertex rounded polygon, exact mass properties of the rounded outline, and bounding boxes.
 #include "meff/collision.h"

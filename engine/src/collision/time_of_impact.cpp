@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Time of impact by conservative advancement on local separating axes, in the operation order
 // of Box2D 2.4.1's b2_time_of_impact.cpp: GJK gives an axis at the current safe time t1, the
 // deepest points along it at t2 are pushed back by a root finder (bisection alternating with

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Engine-internal side of the time of impact (meff/distance.h): the separating-axis function
 // the root finder works on, exposed for tests.
 #pragma once

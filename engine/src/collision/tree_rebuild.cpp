@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The broad phase's tree grown in place and built again (TreeUpdate::EnlargeAndRebuild), for the
 // back ends that need not reproduce Box2D 2.4.1's tree.
 //

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Evaluating a manifold in world space. Follows b2WorldManifold::Initialize of Box2D 2.4.1 with
 // the same floating-point operation order. (The segment clipping shared by the manifold routines,
 // b2ClipSegmentToLine, is inline in manifold_internal.h.)

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Contact lifecycle: created from broad-phase pairs, updated by the narrow phase, destroyed
 // when the fat boxes part. Lists are kept newest first, as Box2D 2.4.1 does, because the island
 // search — and so the solver — walks them in that order.

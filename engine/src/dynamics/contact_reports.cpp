@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 #include "dynamics/contact_reports.h"
 
 #include "dynamics/events.h"

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The contact reports (World::GetContactReports, Box2D 2.4.1's PostSolve data), built when
 // they are read. A step only records which contacts it solved and their impulses; the world
 // points, normals and separations — a world manifold per contact — are computed on the first

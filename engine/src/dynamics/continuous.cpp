@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Continuous collision: the stage World::Step runs after the discrete step when
 // WorldState::continuous is on. It follows Box2D 2.4.1's b2World::SolveTOI and
 // b2Island::SolveTOI, in the same order, so that both engines agree:

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Sensor events, the pre-solve callback and contact hit events. None of them changes what the
 // solver computes: sensor contacts never reach it, hit events only read what it already knew,
 // and the pre-solve callback can only take a contact out, as Box2D 2.4.1's SetEnabled(false).

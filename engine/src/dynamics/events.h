@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Game events of a step beyond the contact reports: which list a contact's begin/end goes to
 // (sensor or contact events), the pre-solve callback, and contact hit events.
 #pragma once

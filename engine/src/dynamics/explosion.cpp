@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // World::Explode: a radial impulse at one instant, as Box2D v3's b2World_Explode describes it
 // (position, radius, linear falloff, impulse per length of the shape facing the centre, mask).
 // The impulse on a shape is J = p·w·s along the line from the centre to the shape's closest

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Who a time-of-impact event touches (continuous.cpp): the island it may take, and the bodies
 // it may move, refresh the contacts of or wake. The contact reports of what was solved before
 // the event are built for those bodies first; after it, the impact queue lists again the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 #include "dynamics/impact_queue.h"
 
 #include "dynamics/impact_event.h"

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Pair finding in batches, for the colour and soft-step back ends: the broad phase's queries
 // for the moved proxies and the built-in rules of AddPair run on the world's threads, batch by
 // batch, and the contacts are made afterwards on the stepping thread in the batches' order, so

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // AddPair's rules (contact_manager.cpp), shared with the batched pair finding
 // (pair_batches.cpp): which pairs the broad phase finds get a contact.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The set of shape pairs that have a contact (contact_manager.cpp: "does this pair have a
 // contact already?" for every pair the broad phase finds, thousands per step). Open addressing
 // with linear probing in one array of keys: a look-up reads one or two cache lines where a

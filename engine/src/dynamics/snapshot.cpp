@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Determinism and rollback: a hash of the simulated state, and whole-world snapshots.
 //
 // Every member of WorldState is a value (pools, lists as indices, the broad phase's node

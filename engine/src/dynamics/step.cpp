@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // One step of the world, as named stages. The order is Box2D 2.4.1's (b2World::Step,
 // b2World::Solve), so the same scene agrees between the two engines:
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Working memory of the step's threaded collision stages (Collide, SynchronizeShapes,
 // FindNewContacts), kept in the world from step to step so that a warmed-up world does not
 // allocate for them. None of it is state: it is rewritten before it is read, every step, and is

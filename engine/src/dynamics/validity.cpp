@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The engine's acceptance rules (meff/validity.h), shared by World, MakeBox/MakePolygon and the
 // scene loader.
 #include "meff/validity.h"

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Chains (Box2D 2.4.1's b2ChainShape): a chain is made of ChainSegment shapes, one per link,
 // each with its neighbours as ghost vertices. Box2D keeps a chain as one fixture with one
 // broad-phase proxy per child; here each child is a shape with one proxy. The proxies are

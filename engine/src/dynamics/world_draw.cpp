@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // World::Draw: the world described to a DebugDraw, as Box2D's b2World::DebugDraw does. Only
 // reads the world; every list is walked in a fixed order so that the same world always gives
 // the same sequence of calls (a renderer built on it is then deterministic too).

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // World queries through the broad phase: ray casts, box and point overlaps, shape casts.
 //
 // Ray casts reproduce Box2D 2.4.1's b2World::RayCast (b2DynamicTree::RayCast, the fixture's

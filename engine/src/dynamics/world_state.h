@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Everything a World owns. Pools are dense vectors indexed by id.index, reused through free
 // lists so that a warmed-up world does not allocate per step.
 #pragma once

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Rows whose accumulated impulse is bounded by a force or torque × h: the motor and friction
 // joints (Box2D 2.4.1's b2MotorJoint and b2FrictionJoint solve them alike). The angular row is
 // scalar, k = iA + iB, its accumulated impulse clamped to ±h·maxTorque; the point rows

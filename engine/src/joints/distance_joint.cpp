@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Distance joint: Box2D 2.4.1's b2DistanceJoint in the scalar effective mass form (seed:
 // effective-mass.md). One direction u, from A's anchor to B's, carries every row:
 //   C = |pB − pA| − L,   Cdot = u·(vB + wB×rB − vA − wA×rA),   J = [−u  −rA×u  u  rB×u]

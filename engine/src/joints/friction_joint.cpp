@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Friction joint: Box2D 2.4.1's b2FrictionJoint in the scalar effective mass form (seed:
 // effective-mass.md). Top-down friction: it resists the relative motion of B's anchor against
 // A's and their relative turning, each with a bounded impulse, and restores nothing:

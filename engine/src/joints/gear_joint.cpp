@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Gear joint: Box2D 2.4.1's b2GearJoint in the scalar effective mass form (seed:
 // effective-mass.md). It couples joint1 (bodies C → A) and joint2 (bodies D → B), each a
 // revolute or a prismatic joint, through their coordinates

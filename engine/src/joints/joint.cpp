@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Joint creation (validation, Box2D's constructor clamps, spring constants) and the dispatch
 // from the type-erased Joint to the per-type solvers.
 #include "joints/joint.h"

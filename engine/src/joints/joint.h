@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Joints inside the solver. Each joint type lives in its own file (revolute_joint.cpp,
 // distance_joint.cpp, prismatic_joint.cpp, wheel_joint.cpp, weld_joint.cpp, motor_joint.cpp,
 // mouse_joint.cpp, friction_joint.cpp, pulley_joint.cpp) and is reached through the functions at

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Rows shared by the joints that hold body B's anchor on a line fixed in body A (prismatic and
 // wheel, Box2D 2.4.1's point-to-line constraints). A row along a world direction n (the axis
 // or its perpendicular), with d = pB − pA the anchor separation, has

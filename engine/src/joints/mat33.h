@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // 3-vectors and 3×3 matrices for the weld joint's point-and-angle block (Box2D's b2Vec3 and
 // b2Mat33). Every operation keeps Box2D 2.4.1's floating-point order, since the joint that
 // uses them is checked against Box2D bit for bit.

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Motor joint: Box2D 2.4.1's b2MotorJoint in the scalar effective mass form (seed:
 // effective-mass.md). It drives body B's pose relative to body A towards a target with a
 // bounded force and torque, like friction that pulls towards a pose instead of towards rest:

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Mouse joint: Box2D 2.4.1's b2MouseJoint in the scalar effective mass form (seed:
 // effective-mass.md). A soft, force-limited point constraint pulls body B's grabbed point p
 // towards a world target t; body A takes no part:

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Prismatic joint: Box2D 2.4.1's b2PrismaticJoint in the scalar effective mass form (seed:
 // effective-mass.md). Body B's anchor slides along an axis fixed in body A and B keeps its
 // angle relative to A. With d = pB − pA, a = axis, p = its perpendicular (line_rows.h):

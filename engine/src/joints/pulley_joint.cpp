@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Pulley joint: Box2D 2.4.1's b2PulleyJoint in the scalar effective mass form (seed:
 // effective-mass.md). With sA, sB the fixed ground anchors and pA, pB the bodies' anchors,
 //   C = L − |pA − sA| − ratio·|pB − sB|,   L = lengthA + ratio·lengthB

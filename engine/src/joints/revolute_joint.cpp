@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Revolute joint: Box2D 2.4.1's b2RevoluteJoint, re-derived in the scalar effective mass
 // form (seed: effective-mass.md). Three kinds of row act on the two bodies:
 //   point    C = (cB + rB) − (cA + rA) = 0,   Cdot = vB + wB×rB − vA − wA×rA

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Soft constraints: a row whose position error C is to behave as a damped spring of natural
 // frequency ω and damping ratio ζ over a sub-step h. With k the row's inverse effective mass
 // (the seed's 1/m_eff = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB), one update's impulse is

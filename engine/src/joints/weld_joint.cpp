@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Weld joint: Box2D 2.4.1's b2WeldJoint in the scalar effective mass form (seed:
 // effective-mass.md). Three rows glue body B to body A:
 //   point x, y   C = (cB + rB) − (cA + rA) = 0,   Cdot = vB + wB×rB − vA − wA×rA

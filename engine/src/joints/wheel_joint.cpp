@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Wheel joint: Box2D 2.4.1's b2WheelJoint in the scalar effective mass form (seed:
 // effective-mass.md). Body B's anchor (the wheel's hub) stays on an axis line fixed in body A
 // (the chassis' suspension direction); B turns freely. With d = pB − pA, ax the axis and ay

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // A body inside the world: its state, mass, and its place in Box2D 2.4.1's intrusive lists
 // (world body list, shape list, contact and joint edge lists, all newest first), which fix the
 // order in which islands — and so the solver — visit constraints.

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // A contact: a pair of shapes whose fattened boxes overlap. It owns the manifold, whose
 // impulses carry from step to step (warm starting), and sits on both bodies' edge lists.
 #pragma once

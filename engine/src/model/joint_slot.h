@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // A joint in the world's pool: the joint itself, its id's generation, and its place in the
 // world's joint list and on its two bodies' joint edge lists (newest first, as Box2D 2.4.1).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The distance queries' proxy (meff/distance.h) of a world shape.
 #pragma once
 

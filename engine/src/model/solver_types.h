@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // State shared by the solver stages of one step: body positions and velocities in solver
 // order (an island's bodies are contiguous), and the step's constants.
 #pragma once

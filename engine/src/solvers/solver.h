@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The seam between the world's step and its solver back ends (SolverKind). World::Step runs
 // the stages every back end shares — find new contacts, the narrow phase, synchronize the broad
 // phase, continuous collision — and hands the solving of the awake bodies to the back end the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // How the engine hands work to the world's TaskSystem (task_system.h), if it has one.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The default TaskSystem (task_system.h): threads − 1 std::threads plus the calling thread.
 //
 // A job is cut into pieces of `range` indices. Pieces are handed out by one 64-bit atomic

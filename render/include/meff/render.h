@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Off-screen rendering of a World to images and PNG files, with no display and no GPU: OpenGL
 // through OSMesa (Mesa's software rasterizer) into memory, drawn through the engine's DebugDraw
 // interface, supersampled and averaged down on the CPU for anti-aliasing. Everything here is

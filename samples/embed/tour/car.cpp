@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Tour stop: a car on wheel joints. Each wheel joint lets its wheel spin freely and slide along
 // the chassis's vertical axis against a spring (the suspension); the rear one also has a motor.
 // The car settles on its springs, then drives over a bump.

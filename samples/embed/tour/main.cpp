@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // meff_tour: runs every stop of the embedding tour and prints what a game would see.
 #include "tour.h"
 

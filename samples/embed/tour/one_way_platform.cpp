@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Tour stop: a one-way platform, the classic use of the pre-solve hook. The hook runs inside
 // World::Step for every touching contact; returning false disables that contact for this step,
 // so a box rising through the platform from below is let through, and once above it lands.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Tour stop: ray casts. A game asks "what does this laser / line of sight / bullet hit first?"
 // (CastRayClosest) and "what does it pass through?" (CastRay with a callback that decides, hit
 // by hit, to skip, clip or stop). Both walk the broad phase's tree, not every shape.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Tour stop: rollback netcode. A networked game predicts ahead with the inputs it has; when a
 // late input arrives it restores the last confirmed snapshot and re-simulates. That only works
 // if the replay with the same inputs is bit-identical, which World::GetStateHash makes checkable.

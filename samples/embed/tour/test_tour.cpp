@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The embedding tour (samples/embed/tour/) keeps its promises: each stop is run and what a game
 // would observe is checked against what the feature guarantees. Built with the samples, as
 // meff_tour_tests, when the tests are built too.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // A small tour of what a game needs from meff, one feature per file. Each stop builds its own
 // world, runs it and returns what a game would observe, so the tests in
 // test_tour.cpp can hold every stop to its promise and `meff_tour` can print it.

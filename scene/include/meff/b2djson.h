@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // b2dJson: the JSON format of R.U.B.E. (the editor Box2D users make levels in) and of
 // iforce2d's b2dJson loader. A level converts to a meff scene and back; docs/b2djson.md says
 // field by field how, and what does not carry over.

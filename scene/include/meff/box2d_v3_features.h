@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // What a scene holds that Box2D 2.4.1 has no counterpart for (Box2D v3's shapes, joint
 // springs and character mover): `meff validate` cannot compare such a scene with libbox2d, and
 // b2dJson (2.4.1's format) cannot hold it, so both refuse it naming each field.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Scene files: a whole simulation setup described once, in JSON, and run by meff, by the Box2D
 // validation mirror, by the renderer and by the benchmarks. The format is documented field by
 // field in docs/scene-format.md.

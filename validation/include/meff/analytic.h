@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Exact answers to compare a solver with, in double: one copy that `meff sweep`
 // (tools/meff/sweep_command.cpp: its pendulum and cradle error models) and the tests
 // (tests/extreme/soft_step_measures.h) both use. Needs only the standard library.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The Box2D 2.4.1 mirror of a scene: the same bodies, shapes, materials, filters and joints,
 // created in the same order as meff::BuildWorld creates them (creation order fixes Box2D's
 // body, fixture, contact and joint lists and so the order the solver visits them).

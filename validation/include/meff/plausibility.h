@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Plausibility checks: what any back end must do on any scene, whatever its constraint order.
 // A regression team cannot compare the soft step or the colour back end with Box2D frame by
 // frame (they are other solvers), but it can check physics: no NaN, no energy from nowhere, no

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Cross-validation of meff against Box2D 2.4.1: the same scene stepped in both engines in
 // lockstep, compared frame by frame.
 //

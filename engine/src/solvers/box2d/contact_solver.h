@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Sequential impulses for contacts. Every row — normal and friction — uses the scalar
 // effective mass of the seed (effective-mass.md):
 //   k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB,   λ = −(v·n − bias)/k,

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The joint rows of an island in Box2D 2.4.1's order: every joint one by one, in island order,
 // with its own rows (engine/src/joints/: InitVelocityConstraints, SolveVelocityConstraints,
 // SolvePositionConstraints of each joint type).

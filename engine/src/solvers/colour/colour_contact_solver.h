@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The contact rows of an island by colour (SolverKind::Colour): the coloured contacts in SIMD
 // lanes (contact_lanes.h), then the contacts no colour had room for one by one in island order,
 // with Box2D's scalar rows (shared/contact_constraint.h).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The joint rows of an island by colour (SolverKind::Colour): revolute joints whose only rows
 // are the point block (no limit, no motor, blockJoints on) go by colour in SIMD lanes
 // (revolute_lanes.h); every other joint, and the lane joints no colour had room for, are solved

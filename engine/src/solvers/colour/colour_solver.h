@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The colour back end (SolverKind::Colour): Box2D 2.4.1's island step (shared/island_step.h)
 // with contacts and plain revolute joints solved colour by colour in SIMD lanes. Without sleep
 // and with every moving body awake the whole world is one island, gathered from the arrays

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Contacts in SIMD lanes, colour by colour (SolverKind::Colour): the same rows, effective
 // masses, clamps, block solver and position pass as Box2D's ContactSolver (Box2D 2.4.1's
 // algorithm, with the same iteration counts), visited in another order: colour after colour,

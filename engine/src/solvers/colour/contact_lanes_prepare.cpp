@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Contact preparation by colour: each colour's contacts, kLanes at a time, go from the world's
 // contacts straight into SIMD lanes. The lanes do what ContactSolver's scalar preparation (and
 // Box2D 2.4.1's b2ContactSolver::InitializeVelocityConstraints) does for one contact, with the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 #include "solvers/colour/revolute_lanes.h"
 
 #include "joints/joint.h"

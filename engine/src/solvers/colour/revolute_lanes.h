@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Revolute joints in SIMD lanes, colour by colour (SolverKind::Colour): the joints whose only rows
 // are the point constraint (no limit, no motor — a hinge or a chain link, the bulk of a cloth or a
 // rope) are coloured (graph_colouring.h) and solved kLanes (four; AVX2: eight) at a time in SIMD

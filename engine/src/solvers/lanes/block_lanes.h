@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The two normal rows of a two-point manifold as one block, lane by lane: shared by the colour
 // back end's contact lanes and the soft step's.
 #pragma once

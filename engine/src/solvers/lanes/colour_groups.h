@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Groups of kLanes constraints, colour after colour, and how a colour's groups are spread over the
 // world's threads: shared by the colour back end's contact and joint lanes (contact_lanes.h,
 // revolute_lanes.h) and the soft step's (ColourGroups: soft_contact_lanes.h,

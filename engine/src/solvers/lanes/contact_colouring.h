@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The graph colouring (graph_colouring.h) of an island's contacts.
 #pragma once
 

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Graph colouring of an island's constraints (Box2D v3's constraint graph, built per island and
 // step): constraints of one colour share no body that the solver moves, so a colour's
 // constraints can be solved at the same time — kLanes (four; AVX2: eight) to a SIMD group, and on

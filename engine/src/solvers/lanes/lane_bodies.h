@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The lanes' view of their bodies: four (AVX2: eight) bodies' velocities or positions gathered from
 // the island's arrays into SIMD lanes, updated there, and scattered back. Shared by the contact and
 // joint solvers that work by colour (graph_colouring.h).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The spin rows of rolling resistance in SIMD lanes: shared by the colour back end's contact
 // lanes and the soft step's.
 #pragma once

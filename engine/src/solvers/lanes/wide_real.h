@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Four Reals side by side (eight in an AVX2 build, MEFF_AVX2), so that four (eight) independent
 // constraints are solved by one instruction stream (SIMD). Written with GCC's vector extensions
 // (also understood by Clang): SSE2 on x86-64, NEON on ARM, scalar code elsewhere; AVX2 when the

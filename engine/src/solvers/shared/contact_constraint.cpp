@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The rigid contact rows every back end uses (shared/contact_constraint.h): Box2D 2.4.1's
 // preparation, warm start, sequential-impulse update and position correction of one contact,
 // which the Box2D back end runs in island order, the colour back end on its overflow and the

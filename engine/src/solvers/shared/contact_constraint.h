@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The constraint rows of one contact, as the contact solvers see them: the velocity rows
 // (normal and friction at each manifold point, with their scalar effective masses
 // 1/k, k = 1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB) and the data the position pass re-evaluates

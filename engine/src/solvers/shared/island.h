@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Islands: groups of bodies linked by touching contacts and joints, found by a depth-first
 // search in Box2D 2.4.1's order. Each back end solves island by island, and every back end ends
 // an island the same way: write the bodies back (refusing a non-finite state), then sleep.

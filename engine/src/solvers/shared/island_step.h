@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Box2D 2.4.1's step of one island (b2Island::Solve), with the contact rows and the joint rows
 // as stages: the Box2D back end passes its island-order solvers (ContactSolver, JointSolver),
 // the colour back end its lanes (colour/), and the step is the same:

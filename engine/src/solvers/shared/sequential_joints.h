@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Joints one by one, each with its own rows (engine/src/joints/: InitVelocityConstraints,
 // SolveVelocityConstraints, SolvePositionConstraints of each joint type): what the Box2D back
 // end does with every joint, the colour back end with the joints its lanes do not take, and the

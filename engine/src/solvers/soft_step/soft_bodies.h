@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The bodies of one island as the soft step moves them: velocities, and each body's motion
 // since the step began — the translation dp of its centre of mass and the rotation dq — so
 // that every sub-step's rows measure their position error from the step's start without

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The normal rows of a small group of touching bodies, solved together exactly (rigid contacts,
 // SoftContactModel::Rigid): a heavy body on a light one on the ground.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The soft step's contact rows by colour in SIMD lanes: the island's contacts are coloured as
 // the colour back end colours them (contact_colouring.h: a colour's contacts share no body the
 // solver moves) and each colour's contacts are packed kLanes (four; AVX2: eight) to a group, from

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The contact rows of the soft step. Each manifold point is a normal row (C = separation +
 // linearSlop ≥ 0, so that bodies rest linearSlop into each other's skins as in the other back
 // ends) and a friction row (|λt| ≤ μ·λn), both on the seed's scalar effective mass with lever

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The soft step's body motions (SoftDelta: dp, dq since the step began) in SIMD lanes: kLanes
 // bodies' deltas gathered from the island's array into lanes and scattered back, as
 // lane_bodies.h does for velocities — shared by the soft step's contact and joint lanes.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Distance joint in the soft step, along u, the unit vector from A's anchor to B's:
 //   rigid (minLength = maxLength)  C = |d| − length = 0
 //   otherwise                      a spring towards `length` when it has stiffness (a real

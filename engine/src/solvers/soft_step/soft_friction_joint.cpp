@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Friction joint in the soft step: the point and angular rows hold the relative velocity of
 // B's anchor against A's, and of their turning, with at most h·maxForce and h·maxTorque per
 // sub-step (h the sub-step's length, so the bound per step is the same force × the step; in

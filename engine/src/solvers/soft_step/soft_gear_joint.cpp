@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Gear joint in the soft step: the gear's one equality row (gear_joint.cpp)
 //   C = coordinateA + ratio·coordinateB − constant = 0
 // on its four bodies, each side's coordinate and Jacobian measured now from the bodies' poses at

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The joints of the soft step. Every joint type keeps its definition, and its accumulated
 // impulses between steps, in its joint (joints/joint.h: the same members the Box2D back end
 // uses, stored per step); what the soft rows add is each joint's frame at the step's start —

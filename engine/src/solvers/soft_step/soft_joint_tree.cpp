@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 #include "solvers/soft_step/soft_joint_tree.h"
 
 #include <algorithm>

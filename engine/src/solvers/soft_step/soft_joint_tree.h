@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The point rows of revolute joints that join an island's bodies as a tree, solved together
 // exactly instead of one joint after another (SoftStepSettings::jointTrees).
 //

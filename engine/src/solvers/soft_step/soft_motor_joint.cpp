@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Motor joint in the soft step: drives B to a pose relative to A (the linear and angular
 // offsets) with at most h·maxForce and h·maxTorque per sub-step. While solving, a velocity
 // bias closes correctionFactor of the pose error per step (Box2D 2.4.1's correction, spread

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Mouse joint in the soft step: a spring of the joint's stiffness and damping pulls B's
 // grabbed point to the target (a real spring, once per sub-step), with at most
 // h·maxForce per sub-step. Body A takes no part.

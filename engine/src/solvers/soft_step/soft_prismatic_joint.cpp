@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Prismatic joint in the soft step: B's anchor slides along an axis fixed in A and B keeps its
 // angle relative to A. With d the anchors' gap and a, p the axis and its perpendicular turned
 // with A since the step began:

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Pulley joint in the soft step: the rope's one equality row (pulley_joint.cpp)
 //   C = L − |pA − sA| − ratio·|pB − sB| = 0,  Cdot = −uA·(vA + wA×rA) − ratio·uB·(vB + wB×rB)
 // with each side's direction and length measured now, from the anchors' offsets from their

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Revolute joint in the soft step: the point rows hold B's anchor on A's (C = anchor B − anchor
 // A), a motor drives wB − wA to the motor speed with at most h·maxMotorTorque (h the kick's
 // time, SoftStepContext::KickTime: half a sub-step in the half kicks), and the limits keep θ = θ0 +

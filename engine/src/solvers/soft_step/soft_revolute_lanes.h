@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The soft step's plain revolute joints by colour in SIMD lanes: a revolute joint whose only rows
 // are the point block (no limit, motor or spring; SolverSettings::blockJoints on) — a hinge, a
 // chain link, the bulk of a cloth — is coloured (graph_colouring.h) and solved kLanes (four;

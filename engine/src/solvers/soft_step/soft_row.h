@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // The row maths of the soft step, written once for contacts and every joint: a scalar row's
 // Jacobian J = [−n, −aA, n, aB] (a direction n and the lever terms aA = rA×n, aB = rB×n, or an
 // angular row n = 0, aA = aB = 1), its inverse effective mass — the seed's

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // What every soft row of one step needs to know: the sub-step, the softness of contacts and
 // joints, and the island's bodies.
 #pragma once

@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // The soft-step back end (SolverKind::SoftStep): sub-stepped soft constraints (Box2D v3's
 // solver on the seed's scalar effective mass), integrated as velocity Verlet. Collision runs
 // once per step; each island's step is cut into `substeps` sub-steps h = dt/substeps:

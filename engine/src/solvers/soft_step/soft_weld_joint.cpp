@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
 // Weld joint in the soft step: B's anchor held on A's (the point rows) and B's angle held to
 // A's (C = θ0 + rotation since the start), the angle by the joint's own spring when it has
 // stiffness (a real spring: solving and relaxing alike), rigidly otherwise.

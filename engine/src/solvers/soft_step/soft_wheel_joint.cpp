@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Wheel joint in the soft step: B's anchor is held on a line fixed in A (the perpendicular row,
 // C = p·d = 0), a spring of the joint's stiffness and damping acts along the line (a real
 // spring, once per sub-step), a motor drives wB − wA with at most h·maxMotorTorque (h: KickTime),
