@@ -4,8 +4,8 @@
 // lanes and the soft step's.
 #pragma once
 
-#include "solvers/shared/contact_constraint.h"
 #include "solvers/lanes/lane_bodies.h"
+#include "solvers/shared/contact_constraint.h"
 
 namespace meff::detail
 {

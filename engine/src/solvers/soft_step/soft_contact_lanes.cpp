@@ -3,11 +3,11 @@
 // SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 #include "solvers/soft_step/soft_contact_lanes.h"
 
-#include "solvers/shared/contact_constraint.h"
-#include "solvers/lanes/contact_colouring.h"
 #include "solvers/lanes/block_lanes.h"
+#include "solvers/lanes/contact_colouring.h"
 #include "solvers/lanes/lane_bodies.h"
 #include "solvers/lanes/rolling_lanes.h"
+#include "solvers/shared/contact_constraint.h"
 #include "solvers/soft_step/soft_contact_solver.h"
 #include "solvers/soft_step/soft_delta_lanes.h"
 
