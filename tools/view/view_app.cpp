@@ -30,6 +30,11 @@
 #include <string>
 #include <vector>
 
+#ifdef MEFF_SANITIZE
+#include <dlfcn.h>
+#include <link.h>
+#endif
+
 namespace meff::view
 {
 
@@ -677,6 +682,82 @@ int RunInteractive(App& app)
     return 0;
 }
 
+/// Opens the window and its OpenGL 3.3 context; nullptr (after saying why) when it cannot.
+GLFWwindow* OpenWindow(const ViewerOptions& options, const std::string& title)
+{
+    if (!glfwInit())
+    {
+        std::fprintf(stderr, "meff view: cannot open a window (no display? under CI, run it "
+                             "through xvfb-run)\n");
+        return nullptr;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window =
+        glfwCreateWindow(options.width, options.height, title.c_str(), nullptr, nullptr);
+    if (window == nullptr)
+    {
+        std::fprintf(stderr, "meff view: cannot create an OpenGL 3.3 window\n");
+        glfwTerminate();
+        return nullptr;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    return window;
+}
+
+/// Loads the GL functions and starts Dear ImGui (whose shaders the driver compiles); false, after
+/// saying why, when the driver lacks a function.
+bool StartGraphics(App& app)
+{
+    std::string missing;
+    if (!app.gl.Load(missing))
+    {
+        std::fprintf(stderr, "meff view: the OpenGL driver lacks %s\n", missing.c_str());
+        return false;
+    }
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini left in the working directory
+    ImGui::StyleColorsLight();
+    ImGui_ImplGlfw_InitForOpenGL(app.window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    return true;
+}
+
+/// Frees the painter's and Dear ImGui's GL objects.
+void StopGraphics(App& app)
+{
+    app.painter.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+/// Closes the window. GLFW then unloads the GL stack (libGL, Mesa's driver), which it loaded with
+/// dlopen; the driver still holds a few allocations from its globals. Once its module is gone,
+/// those globals are too, and LeakSanitizer, which checks at exit, would report the driver's
+/// allocations as meff's leaks. Under the sanitizers every library stays loaded to the end.
+void CloseWindow(GLFWwindow* window)
+{
+#ifdef MEFF_SANITIZE
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, std::size_t, void*) -> int
+        {
+            if (info->dlpi_name != nullptr && info->dlpi_name[0] != '\0')
+            {
+                dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+            }
+            return 0;
+        },
+        nullptr);
+#endif
+    glfwDestroyWindow(window);
+    glfwTerminate();
+}
+
 } // namespace
 
 int RunViewer(const ViewerOptions& options)
@@ -691,41 +772,14 @@ int RunViewer(const ViewerOptions& options)
         std::fprintf(stderr, "%s\n", error.what());
         return 2;
     }
-    if (!glfwInit())
-    {
-        std::fprintf(stderr, "meff view: cannot open a window (no display? under CI, run it "
-                             "through xvfb-run)\n");
-        return 2;
-    }
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    app.window =
-        glfwCreateWindow(options.width, options.height,
-                         ("meff view: " + app.session->GetScene().name).c_str(), nullptr, nullptr);
+    app.window = OpenWindow(options, "meff view: " + app.session->GetScene().name);
     if (app.window == nullptr)
     {
-        std::fprintf(stderr, "meff view: cannot create an OpenGL 3.3 window\n");
-        glfwTerminate();
         return 2;
     }
-    glfwMakeContextCurrent(app.window);
-    glfwSwapInterval(1);
     int status = 2;
-    std::string missing;
-    if (!app.gl.Load(missing))
+    if (StartGraphics(app))
     {
-        std::fprintf(stderr, "meff view: the OpenGL driver lacks %s\n", missing.c_str());
-    }
-    else
-    {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr; // no imgui.ini left in the working directory
-        ImGui::StyleColorsLight();
-        ImGui_ImplGlfw_InitForOpenGL(app.window, true);
-        ImGui_ImplOpenGL3_Init("#version 330 core");
         try
         {
             app.painter = std::make_unique<WorldPainter>(app.gl);
@@ -752,13 +806,9 @@ int RunViewer(const ViewerOptions& options)
             std::fprintf(stderr, "meff view: %s\n", error.what());
             status = 1;
         }
-        app.painter.reset();
-        ImGui_ImplOpenGL3_Shutdown();
-        ImGui_ImplGlfw_Shutdown();
-        ImGui::DestroyContext();
+        StopGraphics(app);
     }
-    glfwDestroyWindow(app.window);
-    glfwTerminate();
+    CloseWindow(app.window);
     return status;
 }
 
