@@ -5,7 +5,7 @@
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
-#include "solvers/box2d/contact_solver.h"
+#include "solvers/shared/contact_solver.h"
 #include "meff/collision.h"
 #include "meff/ray_cast.h"
 #include "meff/world.h"

@@ -6,8 +6,8 @@
 // shared/island_step.h with its contacts (ContactSolver) and joints (JointSolver) in island order.
 #pragma once
 
-#include "solvers/box2d/contact_solver.h"
 #include "solvers/box2d/joint_solver.h"
+#include "solvers/shared/contact_solver.h"
 #include "solvers/shared/island.h"
 #include "solvers/solver.h"
 

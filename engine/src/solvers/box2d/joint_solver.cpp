@@ -4,8 +4,8 @@
 #include "solvers/box2d/joint_solver.h"
 
 #include "joints/joint.h"
+#include "joints/joint_slot.h"
 #include "model/body.h"
-#include "model/joint_slot.h"
 
 namespace meff::detail
 {

@@ -3,8 +3,8 @@
 #include "solvers/colour/colour_joint_solver.h"
 
 #include "joints/joint.h"
+#include "joints/joint_slot.h"
 #include "model/body.h"
-#include "model/joint_slot.h"
 #include "solvers/shared/sequential_joints.h"
 #include "tasks/parallel_ranges.h"
 

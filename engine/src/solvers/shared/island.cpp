@@ -3,7 +3,7 @@
 // SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 #include "solvers/shared/island.h"
 
-#include "model/joint_slot.h"
+#include "joints/joint_slot.h"
 #include "tasks/parallel_ranges.h"
 #include "meff/error.h"
 

@@ -3,9 +3,9 @@
 // SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 #include "solvers/shared/island_step.h"
 
+#include "joints/joint_slot.h"
 #include "model/body.h"
 #include "model/contact.h"
-#include "model/joint_slot.h"
 #include "tasks/parallel_ranges.h"
 
 #include <cmath>

@@ -3,8 +3,8 @@
 // SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 #include "solvers/soft_step/soft_step_solver.h"
 
+#include "joints/joint_slot.h"
 #include "model/body.h"
-#include "model/joint_slot.h"
 #include "solvers/shared/sequential_joints.h"
 #include "tasks/parallel_ranges.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 the meff authors
 // SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
-#include "solvers/box2d/contact_solver.h"
+#include "solvers/shared/contact_solver.h"
 
 #include "model/body.h"
 #include "model/contact.h"

@@ -7,6 +7,8 @@
 // with accumulated impulses clamped (normal ≥ 0, |friction| ≤ μ·normal). Restitution is the
 // seed's P = (1+e)(u2−u1)·m_red written as a velocity bias −e·vn on the normal row.
 // Optionally, a two-point manifold's normal rows are solved together (Box2D's block solver).
+// Shared: the Box2D back end's contact stage, and the continuous stage's time-of-impact
+// sub-steps (dynamics/continuous.cpp) under every back end, as b2Island::SolveTOI.
 #pragma once
 
 #include "model/solver_types.h"
