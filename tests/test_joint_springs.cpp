@@ -424,28 +424,28 @@ TEST_CASE("Joint spring definitions reject bad values", "[joints][springs][make]
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     RevoluteJointDef revolute;
     revolute.hertz = -2;
-    CHECK_THROWS_WITH(MakeJoint(revolute, 0, 1), "RevoluteJointDef.hertz = -2 must be >= 0");
+    CHECK_THROWS_WITH(MakeJoint(revolute, 0, 1), "RevoluteJointDef::hertz: must be finite and >= 0, got -2");
     revolute.hertz = 1;
     revolute.dampingRatio = -Real(0.5);
     CHECK_THROWS_WITH(MakeJoint(revolute, 0, 1),
-                      "RevoluteJointDef.dampingRatio = -0.5 must be >= 0");
+                      "RevoluteJointDef::dampingRatio: must be finite and >= 0, got -0.5");
     revolute.dampingRatio = 0;
     revolute.targetAngle = nan;
-    CHECK_THROWS_WITH(MakeJoint(revolute, 0, 1), Catch::Contains("RevoluteJointDef.targetAngle") &&
-                                                     Catch::Contains("not finite"));
+    CHECK_THROWS_WITH(MakeJoint(revolute, 0, 1), Catch::Contains("RevoluteJointDef::targetAngle") &&
+                                                     Catch::Contains("must be finite"));
     PrismaticJointDef prismatic;
     prismatic.hertz = -1;
-    CHECK_THROWS_WITH(MakeJoint(prismatic, 0, 1), "PrismaticJointDef.hertz = -1 must be >= 0");
+    CHECK_THROWS_WITH(MakeJoint(prismatic, 0, 1), "PrismaticJointDef::hertz: must be finite and >= 0, got -1");
     prismatic.hertz = 0;
     prismatic.dampingRatio = nan;
     CHECK_THROWS_WITH(MakeJoint(prismatic, 0, 1),
-                      Catch::Contains("PrismaticJointDef.dampingRatio") &&
-                          Catch::Contains("not finite"));
+                      Catch::Contains("PrismaticJointDef::dampingRatio") &&
+                          Catch::Contains("must be finite"));
     prismatic.dampingRatio = 0;
     prismatic.targetTranslation = std::numeric_limits<Real>::infinity();
     CHECK_THROWS_WITH(MakeJoint(prismatic, 0, 1),
-                      Catch::Contains("PrismaticJointDef.targetTranslation") &&
-                          Catch::Contains("not finite"));
+                      Catch::Contains("PrismaticJointDef::targetTranslation") &&
+                          Catch::Contains("must be finite"));
 }
 
 TEST_CASE("A joint spring that is off changes nothing: the Box2D back end steps as without it",

@@ -181,15 +181,15 @@ TEST_CASE("A gear refuses joints it cannot couple", "[joints][gear][errors]")
         return std::string("accepted");
     };
     CHECK(message({hinge, rod, 1, false}) ==
-          "GearJointDef.joint2 must be a revolute or prismatic joint");
+          "GearJointDef::joint2: must be a revolute or prismatic joint");
     CHECK(message({hinge, hinge, 1, false}) ==
-          "GearJointDef.joint2 must be a different joint from joint1");
+          "GearJointDef::joint2: must be a different joint from joint1");
     CHECK(message({hinge, pinned, 1, false}) ==
-          "GearJointDef.joint2's body B must be dynamic (the gear turns it)");
+          "GearJointDef::joint2: its body B must be dynamic (the gear turns it)");
     CHECK(message({hinge, JointId{}, 1, false}) != "accepted");
     const JointId hingeB = Hinge(world, ground, b);
     CHECK(message({hinge, hingeB, std::numeric_limits<Real>::infinity(), false}) ==
-          "GearJointDef.ratio = inf is not finite");
+          "GearJointDef::ratio: must be finite, got inf");
     CHECK(world.GetJoints().size() == 4);
 }
 

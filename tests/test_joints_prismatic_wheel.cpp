@@ -258,33 +258,33 @@ TEST_CASE("Prismatic and wheel definitions are validated", "[joints][prismatic][
     prismatic.lowerTranslation = 2;
     prismatic.upperTranslation = 1;
     CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
-          "PrismaticJointDef.lowerTranslation = 2 exceeds upperTranslation = 1");
+          "PrismaticJointDef::lowerTranslation: must not exceed upperTranslation (1), got 2");
     prismatic.upperTranslation = 3;
     prismatic.maxMotorForce = -1;
     CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
-          "PrismaticJointDef.maxMotorForce = -1 must be >= 0");
+          "PrismaticJointDef::maxMotorForce: must be finite and >= 0, got -1");
     prismatic.maxMotorForce = 1;
     prismatic.motorSpeed = std::nanf("");
     CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
-          "PrismaticJointDef.motorSpeed = nan is not finite");
+          "PrismaticJointDef::motorSpeed: must be finite, got nan");
     prismatic.motorSpeed = 0;
     prismatic.localAxisA = {0, 0};
     CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
-          "PrismaticJointDef.localAxisA = (0, 0) has no direction (length 0)");
+          "PrismaticJointDef::localAxisA: must have a direction (a length > 0), got (0, 0)");
     CHECK_THROWS_AS(world.MakePrismaticJointDef(rig.ground, rig.box, {0, 0}, {kMaxReal * 2, 0}),
                     InvalidArgument);
 
     WheelJointDef wheel = world.MakeWheelJointDef(rig.ground, rig.box, {0, 0}, {0, 1});
     wheel.maxMotorTorque = -2;
     CHECK(MessageOf([&] { world.CreateJoint(wheel); }) ==
-          "WheelJointDef.maxMotorTorque = -2 must be >= 0");
+          "WheelJointDef::maxMotorTorque: must be finite and >= 0, got -2");
     wheel.maxMotorTorque = 0;
     wheel.hertz = -1;
-    CHECK(MessageOf([&] { world.CreateJoint(wheel); }) == "WheelJointDef.hertz = -1 must be >= 0");
+    CHECK(MessageOf([&] { world.CreateJoint(wheel); }) == "WheelJointDef::hertz: must be finite and >= 0, got -1");
     wheel.hertz = 1;
     wheel.lowerTranslation = 0.5f;
     CHECK(MessageOf([&] { world.CreateJoint(wheel); }) ==
-          "WheelJointDef.lowerTranslation = 0.5 exceeds upperTranslation = 0");
+          "WheelJointDef::lowerTranslation: must not exceed upperTranslation (0), got 0.5");
     wheel.lowerTranslation = 0;
     wheel.localAxisA = {0, 0};
     CHECK_THROWS_AS(world.CreateJoint(wheel), InvalidArgument);

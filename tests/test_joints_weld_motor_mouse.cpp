@@ -365,7 +365,8 @@ TEST_CASE("Weld, motor and mouse joints reject bad arguments", "[joints][make]")
     {
         WeldJointDef def;
         def.localAnchorA = {nan, 0};
-        CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 1, 1), Catch::Contains("WeldJointDef.localAnchorA"));
+        CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 1, 1),
+                          Catch::Contains("WeldJointDef::localAnchorA"));
         def.localAnchorA = {0, 0};
         def.referenceAngle = inf;
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 1, 1), Catch::Contains("referenceAngle"));
@@ -373,7 +374,7 @@ TEST_CASE("Weld, motor and mouse joints reject bad arguments", "[joints][make]")
         def.hertz = -1;
         CHECK_THROWS_AS(MakeJoint(def, 0, 1, 1, 1), InvalidArgument);
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 1, 1),
-                          Catch::Contains("WeldJointDef.hertz = -1 must be >= 0"));
+                          Catch::Contains("WeldJointDef::hertz: must be finite and >= 0, got -1"));
         def.hertz = 1;
         def.dampingRatio = nan;
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 1, 1), Catch::Contains("dampingRatio"));
@@ -382,20 +383,25 @@ TEST_CASE("Weld, motor and mouse joints reject bad arguments", "[joints][make]")
     {
         MotorJointDef def;
         def.linearOffset = {0, inf};
-        CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("MotorJointDef.linearOffset"));
+        CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("MotorJointDef::linearOffset"));
         def.linearOffset = {0, 0};
         def.angularOffset = nan;
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("angularOffset"));
         def.angularOffset = 0;
         def.maxForce = -2;
-        CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("maxForce = -2"));
+        CHECK_THROWS_WITH(
+            MakeJoint(def, 0, 1),
+            Catch::Contains("MotorJointDef::maxForce: must be finite and >= 0, got -2"));
         def.maxForce = 1;
         def.maxTorque = -1;
-        CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("maxTorque = -1"));
+        CHECK_THROWS_WITH(
+            MakeJoint(def, 0, 1),
+            Catch::Contains("MotorJointDef::maxTorque: must be finite and >= 0, got -1"));
         def.maxTorque = 1;
         def.correctionFactor = Real(1.5);
-        CHECK_THROWS_WITH(MakeJoint(def, 0, 1),
-                          Catch::Contains("MotorJointDef.correctionFactor = 1.5 must be <= 1"));
+        CHECK_THROWS_WITH(
+            MakeJoint(def, 0, 1),
+            Catch::Contains("MotorJointDef::correctionFactor: must be at most 1, got 1.5"));
         def.correctionFactor = Real(-0.1);
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("correctionFactor"));
         def.correctionFactor = 1; // the ends of [0, 1] are allowed
@@ -407,7 +413,7 @@ TEST_CASE("Weld, motor and mouse joints reject bad arguments", "[joints][make]")
         const Transform xf;
         def.target = {nan, 0};
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 0, 1, xf, true),
-                          Catch::Contains("MouseJointDef.target"));
+                          Catch::Contains("MouseJointDef::target"));
         def.target = {0, 0};
         def.maxForce = -1;
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 0, 1, xf, true), Catch::Contains("maxForce"));
@@ -416,7 +422,7 @@ TEST_CASE("Weld, motor and mouse joints reject bad arguments", "[joints][make]")
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 0, 1, xf, true), Catch::Contains("hertz"));
         def.hertz = 5;
         CHECK_THROWS_WITH(MakeJoint(def, 0, 1, 0, 1, xf, false),
-                          Catch::Contains("MouseJointDef.bodyB must be a dynamic body"));
+                          Catch::Contains("MouseJointDef::bodyB: must be a dynamic body"));
     }
     SECTION("world")
     {

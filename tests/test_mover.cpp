@@ -338,7 +338,7 @@ TEST_CASE("The mover queries refuse a bad capsule and translation", "[mover][err
                    [&] {
                        world.MoveCharacter(CharacterAt({0, 0}), {1, 0}, 0);
                    }),
-               Catch::StartsWith("World::MoveCharacter: dt must be finite and > 0, got 0"));
+               Catch::StartsWith("World::MoveCharacter: dt: must be finite and > 0, got 0"));
     CHECK_THAT(message(
                    [&] {
                        world.MoveCharacter(CharacterAt({0, 0}),

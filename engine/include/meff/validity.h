@@ -55,6 +55,50 @@ class RefusedArgument : public InvalidArgument
 /// The refusal as World throws it: RefusedArgument("FIELD: REASON").
 [[noreturn]] void ThrowRefusal(const Refusal& refusal);
 
+/// Throws the refusal, if there is one (ThrowRefusal): how World, the joints and the queries
+/// apply these rules to their arguments.
+inline void Require(const std::optional<Refusal>& refusal)
+{
+    if (refusal)
+    {
+        ThrowRefusal(*refusal);
+    }
+}
+
+// Numbers: the checks every argument of World goes through, and the one way its messages
+// write a number. `field` names the argument as the message should ("BodyDef::position",
+// "RevoluteJointDef::hertz", "World::ApplyForce: force"); the reason is formatted only when
+// the value is refused.
+
+/// The shortest text that reads back as the same value: "0.1", "-2", "1e+30", "inf", "nan".
+std::string NumberText(Real value);
+/// "(x, y)", each coordinate as NumberText writes it.
+std::string NumberText(Vec2 value);
+/// "must be finite, got V".
+std::optional<Refusal> CheckFinite(Real value, const char* field);
+std::optional<Refusal> CheckFinite(Vec2 value, const char* field);
+/// "must be finite and >= 0, got V".
+std::optional<Refusal> CheckNonNegative(Real value, const char* field);
+/// "must be finite and > 0, got V".
+std::optional<Refusal> CheckPositive(Real value, const char* field);
+/// The checks as World applies them: RefusedArgument("FIELD: must be finite, got V") and so on.
+inline void RequireFinite(Real value, const char* field)
+{
+    Require(CheckFinite(value, field));
+}
+inline void RequireFinite(Vec2 value, const char* field)
+{
+    Require(CheckFinite(value, field));
+}
+inline void RequireNonNegative(Real value, const char* field)
+{
+    Require(CheckNonNegative(value, field));
+}
+inline void RequirePositive(Real value, const char* field)
+{
+    Require(CheckPositive(value, field));
+}
+
 // Shapes, on their own (any body). Circles: a finite centre, a finite radius > 0, and an area
 // πr² that is a normal float (neither overflowing nor rounding to zero or a denormal).
 std::optional<Refusal> CheckCircle(const Circle& circle);

@@ -16,11 +16,6 @@ namespace meff
 namespace
 {
 
-std::string Describe(Vec2 v)
-{
-    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")";
-}
-
 /// The area centroid of a convex counter-clockwise polygon, as Box2D's ComputeCentroid: a fan
 /// of triangles from the first vertex. Writes the area (the caller rejects a zero one).
 Vec2 ComputeCentroid(const Vec2* vertices, int count, Real& area)
@@ -59,9 +54,9 @@ Polygon MakeCenteredBox(Real halfWidth, Real halfHeight, const char* caller)
 {
     if (!IsValid(halfWidth) || !IsValid(halfHeight) || !(halfWidth > 0) || !(halfHeight > 0))
     {
-        throw InvalidArgument(
-            std::string(caller) + ": half-extents must be finite and > 0, got halfWidth = " +
-            std::to_string(halfWidth) + ", halfHeight = " + std::to_string(halfHeight));
+        throw InvalidArgument(std::string(caller) +
+                              ": half-extents must be finite and > 0, got halfWidth = " +
+                              NumberText(halfWidth) + ", halfHeight = " + NumberText(halfHeight));
     }
 
     Polygon box;
@@ -95,7 +90,7 @@ void CheckDensity(Real density, const char* caller)
     if (!IsValid(density) || density < 0)
     {
         throw InvalidArgument(std::string(caller) + ": density must be finite and >= 0, got " +
-                              std::to_string(density));
+                              NumberText(density));
     }
 }
 
@@ -114,7 +109,7 @@ Polygon MakePolygon(std::span<const Vec2> points)
         if (!points[i].IsValid())
         {
             throw InvalidArgument("MakePolygon: point " + std::to_string(i) +
-                                  " has a non-finite coordinate " + Describe(points[i]));
+                                  " has a non-finite coordinate " + NumberText(points[i]));
         }
     }
 
@@ -147,7 +142,7 @@ Polygon MakePolygon(std::span<const Vec2> points)
     {
         throw InvalidArgument("MakePolygon: only " + std::to_string(uniqueCount) +
                               " distinct point(s) remain after welding points closer than " +
-                              std::to_string(kPolygonWeldTolerance) + " m; need 3");
+                              NumberText(kPolygonWeldTolerance) + " m; need 3");
     }
 
     // Convex hull by gift wrapping. Start at the right-most point (lowest on a tie).
@@ -239,8 +234,7 @@ Polygon MakePolygon(std::span<const Vec2> points)
     if (!(area > kEpsilon))
     {
         throw InvalidArgument("MakePolygon: the points are (nearly) collinear: hull area " +
-                              std::to_string(area) + " m^2 is not above " +
-                              std::to_string(kEpsilon));
+                              NumberText(area) + " m^2 is not above " + NumberText(kEpsilon));
     }
     return Accepted(polygon, "MakePolygon");
 }
@@ -256,7 +250,7 @@ Polygon MakeOffsetBox(Real halfWidth, Real halfHeight, Vec2 center, Real angle)
     if (!center.IsValid() || !IsValid(angle))
     {
         throw InvalidArgument("MakeOffsetBox: center and angle must be finite, got center " +
-                              Describe(center) + ", angle " + std::to_string(angle));
+                              NumberText(center) + ", angle " + NumberText(angle));
     }
 
     box.centroid = center;

@@ -5,6 +5,7 @@
 // a two-vertex rounded polygon, exact mass properties of the rounded outline, and bounding boxes.
 #include "meff/collision.h"
 #include "meff/error.h"
+#include "meff/validity.h"
 
 #include <cmath>
 
@@ -83,7 +84,7 @@ MassData ComputeRoundedMass(const Polygon& polygon, Real density)
     if (!(density >= 0) || !std::isfinite(double(density)))
     {
         throw InvalidArgument("ComputeRoundedMass: density must be finite and >= 0, got " +
-                              std::to_string(density));
+                              NumberText(density));
     }
     if (polygon.count < 2 || polygon.count > kMaxPolygonVertices)
     {

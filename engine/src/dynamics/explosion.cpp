@@ -9,6 +9,7 @@
 #include "dynamics/world_state.h"
 #include "model/shape_proxy.h"
 #include "meff/distance.h"
+#include "meff/validity.h"
 #include "meff/world.h"
 
 #include <string>
@@ -49,27 +50,14 @@ Vec2 CoreCentre(const DistanceProxy& proxy)
     return (Real(1) / Real(proxy.count)) * sum;
 }
 
-void Check(bool valid, const char* field, Real value, const char* rule)
-{
-    if (!valid)
-    {
-        throw InvalidArgument(std::string("World::Explode: ExplosionDef::") + field + " " + rule +
-                              ", got " + std::to_string(value));
-    }
-}
-
 } // namespace
 
 void World::Explode(const ExplosionDef& def)
 {
-    Check(meff::IsValid(def.position.x) && meff::IsValid(def.position.y), "position",
-          def.position.x, "must be finite");
-    Check(meff::IsValid(def.radius) && def.radius >= 0, "radius", def.radius,
-          "must be finite and >= 0");
-    Check(meff::IsValid(def.falloff) && def.falloff >= 0, "falloff", def.falloff,
-          "must be finite and >= 0");
-    Check(meff::IsValid(def.impulsePerLength), "impulsePerLength", def.impulsePerLength,
-          "must be finite");
+    RequireFinite(def.position, "World::Explode: ExplosionDef::position");
+    RequireNonNegative(def.radius, "World::Explode: ExplosionDef::radius");
+    RequireNonNegative(def.falloff, "World::Explode: ExplosionDef::falloff");
+    RequireFinite(def.impulsePerLength, "World::Explode: ExplosionDef::impulsePerLength");
 
     struct Push
     {

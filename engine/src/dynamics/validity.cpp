@@ -19,25 +19,12 @@ namespace meff
 namespace
 {
 
-/// The shortest text that reads back as the same value.
-std::string Text(Real value)
-{
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
 /// A computed quantity in a message: four significant digits.
 std::string Approximately(double value)
 {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.4g", value);
     return buffer;
-}
-
-std::string Text(Vec2 v)
-{
-    return "(" + Text(v.x) + ", " + Text(v.y) + ")";
 }
 
 /// A value the solver may divide by: finite, and not zero or denormal (whose reciprocal
@@ -118,9 +105,10 @@ std::optional<Refusal> CheckEdges(const Polygon& polygon)
         }
         if (!(edge.LengthSquared() > kEpsilon * kEpsilon))
         {
-            return Refuse("Polygon::vertices",
-                          "edge " + std::to_string(i) + " is " + Approximately(length) +
-                              " m long: edges must be " + "longer than " + Text(kEpsilon) + " m");
+            return Refuse("Polygon::vertices", "edge " + std::to_string(i) + " is " +
+                                                   Approximately(length) +
+                                                   " m long: edges must be " + "longer than " +
+                                                   NumberText(kEpsilon) + " m");
         }
         const Vec2 normal = polygon.normals[i];
         Vec2 expected = Cross(edge, Real(1));
@@ -130,7 +118,8 @@ std::optional<Refusal> CheckEdges(const Polygon& polygon)
         {
             return Refuse("Polygon::normals", "normals[" + std::to_string(i) +
                                                   "] is not the unit outward normal of its " +
-                                                  "edge, got " + Text(normal) + kBuildPolygons);
+                                                  "edge, got " + NumberText(normal) +
+                                                  kBuildPolygons);
         }
         for (int j = 0; j < n; ++j)
         {
@@ -153,15 +142,63 @@ void ThrowRefusal(const Refusal& refusal)
     throw RefusedArgument(refusal.field + ": " + refusal.reason, refusal);
 }
 
+std::string NumberText(Real value)
+{
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string NumberText(Vec2 value)
+{
+    return "(" + NumberText(value.x) + ", " + NumberText(value.y) + ")";
+}
+
+std::optional<Refusal> CheckFinite(Real value, const char* field)
+{
+    if (!IsValid(value))
+    {
+        return Refuse(field, "must be finite, got " + NumberText(value));
+    }
+    return std::nullopt;
+}
+
+std::optional<Refusal> CheckFinite(Vec2 value, const char* field)
+{
+    if (!value.IsValid())
+    {
+        return Refuse(field, "must be finite, got " + NumberText(value));
+    }
+    return std::nullopt;
+}
+
+std::optional<Refusal> CheckNonNegative(Real value, const char* field)
+{
+    if (!IsValid(value) || !(value >= 0))
+    {
+        return Refuse(field, "must be finite and >= 0, got " + NumberText(value));
+    }
+    return std::nullopt;
+}
+
+std::optional<Refusal> CheckPositive(Real value, const char* field)
+{
+    if (!IsValid(value) || !(value > 0))
+    {
+        return Refuse(field, "must be finite and > 0, got " + NumberText(value));
+    }
+    return std::nullopt;
+}
+
 std::optional<Refusal> CheckCircle(const Circle& circle)
 {
-    if (!circle.center.IsValid())
+    if (auto refusal = CheckFinite(circle.center, "Circle::center"))
     {
-        return Refuse("Circle::center", "must be finite, got " + Text(circle.center));
+        return refusal;
     }
-    if (!IsValid(circle.radius) || !(circle.radius > 0))
+    if (auto refusal = CheckPositive(circle.radius, "Circle::radius"))
     {
-        return Refuse("Circle::radius", "must be finite and > 0, got " + Text(circle.radius));
+        return refusal;
     }
     // As ComputeMass evaluates it.
     const Real area = kPi * circle.radius * circle.radius;
@@ -169,7 +206,7 @@ std::optional<Refusal> CheckCircle(const Circle& circle)
     {
         const double exact = 3.141592653589793 * double(circle.radius) * double(circle.radius);
         return Refuse("Circle::radius",
-                      OutOfRange(area, exact, "area", "m²") + ", got " + Text(circle.radius));
+                      OutOfRange(area, exact, "area", "m²") + ", got " + NumberText(circle.radius));
     }
     return std::nullopt;
 }
@@ -188,7 +225,7 @@ std::optional<Refusal> CheckPolygon(const Polygon& polygon)
         {
             return Refuse("Polygon::vertices", "vertex " + std::to_string(i) +
                                                    " must be finite, got " +
-                                                   Text(polygon.vertices[i]));
+                                                   NumberText(polygon.vertices[i]));
         }
     }
     if (std::optional<Refusal> edges = CheckEdges(polygon))
@@ -202,42 +239,34 @@ std::optional<Refusal> CheckPolygon(const Polygon& polygon)
     {
         return Refuse("Polygon::vertices", OutOfRange(area, exactArea, "area", "m²"));
     }
-    if (!polygon.centroid.IsValid())
-    {
-        return Refuse("Polygon::centroid", "must be finite, got " + Text(polygon.centroid));
-    }
-    return std::nullopt;
+    return CheckFinite(polygon.centroid, "Polygon::centroid");
 }
 
 std::optional<Refusal> CheckPolygonRadius(const Polygon& polygon)
 {
-    if (!IsValid(polygon.radius) || !(polygon.radius >= 0))
-    {
-        return Refuse("Polygon::radius", "must be finite and >= 0, got " + Text(polygon.radius));
-    }
-    return std::nullopt;
+    return CheckNonNegative(polygon.radius, "Polygon::radius");
 }
 
 std::optional<Refusal> CheckCapsule(const Capsule& capsule, Real linearSlop)
 {
-    if (!capsule.center1.IsValid())
+    if (auto refusal = CheckFinite(capsule.center1, "Capsule::center1"))
     {
-        return Refuse("Capsule::center1", "must be finite, got " + Text(capsule.center1));
+        return refusal;
     }
-    if (!capsule.center2.IsValid())
+    if (auto refusal = CheckFinite(capsule.center2, "Capsule::center2"))
     {
-        return Refuse("Capsule::center2", "must be finite, got " + Text(capsule.center2));
+        return refusal;
     }
     if (!(DistanceSquared(capsule.center1, capsule.center2) > linearSlop * linearSlop))
     {
         return Refuse("Capsule::center2",
-                      "must be more than the linear slop (" + Text(linearSlop) +
+                      "must be more than the linear slop (" + NumberText(linearSlop) +
                           " m) from center1 (a capsule with one centre is a circle), got " +
-                          Text(capsule.center1) + " and " + Text(capsule.center2));
+                          NumberText(capsule.center1) + " and " + NumberText(capsule.center2));
     }
-    if (!IsValid(capsule.radius) || !(capsule.radius > 0))
+    if (auto refusal = CheckPositive(capsule.radius, "Capsule::radius"))
     {
-        return Refuse("Capsule::radius", "must be finite and > 0, got " + Text(capsule.radius));
+        return refusal;
     }
     // As ComputeMass adds it up: the caps and the two bands along the core.
     const Real length = Distance(capsule.center1, capsule.center2);
@@ -246,27 +275,28 @@ std::optional<Refusal> CheckCapsule(const Capsule& capsule, Real linearSlop)
     {
         const double r = double(capsule.radius);
         const double exact = 3.141592653589793 * r * r + 2 * r * double(length);
-        return Refuse("Capsule::radius",
-                      OutOfRange(area, exact, "area", "m²") + ", got " + Text(capsule.radius));
+        return Refuse("Capsule::radius", OutOfRange(area, exact, "area", "m²") + ", got " +
+                                             NumberText(capsule.radius));
     }
     return std::nullopt;
 }
 
 std::optional<Refusal> CheckSegment(const Segment& segment, Real linearSlop)
 {
-    if (!segment.point1.IsValid())
+    if (auto refusal = CheckFinite(segment.point1, "Segment::point1"))
     {
-        return Refuse("Segment::point1", "must be finite, got " + Text(segment.point1));
+        return refusal;
     }
-    if (!segment.point2.IsValid())
+    if (auto refusal = CheckFinite(segment.point2, "Segment::point2"))
     {
-        return Refuse("Segment::point2", "must be finite, got " + Text(segment.point2));
+        return refusal;
     }
     if (!(DistanceSquared(segment.point1, segment.point2) > linearSlop * linearSlop))
     {
-        return Refuse("Segment::point2", "must be more than the linear slop (" + Text(linearSlop) +
-                                             " m) from point1, got " + Text(segment.point1) +
-                                             " and " + Text(segment.point2));
+        return Refuse("Segment::point2", "must be more than the linear slop (" +
+                                             NumberText(linearSlop) + " m) from point1, got " +
+                                             NumberText(segment.point1) + " and " +
+                                             NumberText(segment.point2));
     }
     return std::nullopt;
 }
@@ -275,8 +305,8 @@ std::optional<Refusal> CheckStepDt(Real dt)
 {
     if (!(dt >= Real(kMinStepDt) && dt <= Real(kMaxStepDt)))
     {
-        return Refuse("dt", "must be finite, from " + Text(Real(kMinStepDt)) + " to " +
-                                Text(Real(kMaxStepDt)) + " s, got " + Text(dt));
+        return Refuse("dt", "must be finite, from " + NumberText(Real(kMinStepDt)) + " to " +
+                                NumberText(Real(kMaxStepDt)) + " s, got " + NumberText(dt));
     }
     return std::nullopt;
 }
@@ -295,20 +325,17 @@ std::optional<Refusal> CheckShapeDef(const ShapeDef& def)
         {"ShapeDef::rollingResistance", def.rollingResistance}};
     for (const auto& [field, value] : nonNegative)
     {
-        if (!IsValid(value) || !(value >= 0))
+        if (auto refusal = CheckNonNegative(value, field))
         {
-            return Refuse(field, "must be finite and >= 0, got " + Text(value));
+            return refusal;
         }
     }
     if (!IsValid(def.restitution) || !(def.restitution >= 0 && def.restitution <= 1))
     {
-        return Refuse("ShapeDef::restitution", "must be in [0, 1], got " + Text(def.restitution));
+        return Refuse("ShapeDef::restitution",
+                      "must be in [0, 1], got " + NumberText(def.restitution));
     }
-    if (!IsValid(def.tangentSpeed))
-    {
-        return Refuse("ShapeDef::tangentSpeed", "must be finite, got " + Text(def.tangentSpeed));
-    }
-    return std::nullopt;
+    return CheckFinite(def.tangentSpeed, "ShapeDef::tangentSpeed");
 }
 
 namespace
@@ -322,18 +349,18 @@ std::optional<Refusal> CheckMassData(const MassData& md, Real density, bool fixe
     if (!IsNormalPositive(md.mass))
     {
         return Refuse("ShapeDef::density", OutOfRange(md.mass, double(md.mass), "mass", "kg") +
-                                               " at density " + Text(density) + " kg/m²");
+                                               " at density " + NumberText(density) + " kg/m²");
     }
     if (!md.center.IsValid() || !(md.mass * md.center).IsValid())
     {
-        return Refuse(size, "too large: its centre of mass " + Text(md.center) +
+        return Refuse(size, "too large: its centre of mass " + NumberText(md.center) +
                                 " times its mass overflows the engine's float");
     }
     if (!fixedRotation && !IsNormalPositive(md.rotationalInertia))
     {
         return Refuse(size, OutOfRange(md.rotationalInertia, double(md.rotationalInertia),
                                        "rotational inertia about the body origin", "kg·m²") +
-                                " at density " + Text(density) + " kg/m²");
+                                " at density " + NumberText(density) + " kg/m²");
     }
     return std::nullopt;
 }
@@ -354,7 +381,7 @@ std::optional<Refusal> CheckMass(const Polygon& polygon, Real density, bool fixe
     {
         return Refuse("Polygon::vertices",
                       "too small to have a mass: its area " + Approximately(exactArea) +
-                          " m² is not above " + Text(kEpsilon) +
+                          " m² is not above " + NumberText(kEpsilon) +
                           " m² (Box2D 2.4.1 asserts as much; give it density 0 or make it larger)");
     }
     return CheckMassData(ComputeMass(polygon, density), density, fixedRotation,
@@ -451,7 +478,7 @@ std::optional<Refusal> CheckBodyMass(std::span<const MassData> shapesNewestFirst
                                   Approximately(inertia) +
                                   " kg·m², is almost all the parallel-axis term of its centre of "
                                   "mass at " +
-                                  Text(center) +
+                                  NumberText(center) +
                                   " m, and subtracting that leaves "
                                   "nothing the engine's float can tell from 0; put the body origin "
                                   "near its shapes");

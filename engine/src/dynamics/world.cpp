@@ -10,7 +10,6 @@
 #include "meff/validity.h"
 
 #include <algorithm>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -23,13 +22,6 @@ using namespace detail;
 namespace
 {
 
-std::string Describe(Vec2 v)
-{
-    std::ostringstream out;
-    out << "(" << v.x << ", " << v.y << ")";
-    return out.str();
-}
-
 /// Throws InvalidArgument when `condition` is false. The message is built only then
 /// (`message()` returns it): formatting it on every call cost more than the checks
 /// themselves when a scene creates ten thousand bodies.
@@ -40,32 +32,6 @@ void Require(bool condition, MakeMessage&& message)
     {
         throw InvalidArgument(message());
     }
-}
-
-void RequireFinite(Real value, const char* where)
-{
-    Require(meff::IsValid(value),
-            [&] { return std::string(where) + ": must be finite, got " + std::to_string(value); });
-}
-
-void RequireFinite(Vec2 value, const char* where)
-{
-    Require(value.IsValid(),
-            [&] { return std::string(where) + ": must be finite, got " + Describe(value); });
-}
-
-void RequireNonNegative(Real value, const char* where)
-{
-    Require(
-        meff::IsValid(value) && value >= 0, [&]
-        { return std::string(where) + ": must be finite and >= 0, got " + std::to_string(value); });
-}
-
-void RequirePositive(Real value, const char* where)
-{
-    Require(
-        meff::IsValid(value) && value > 0, [&]
-        { return std::string(where) + ": must be finite and > 0, got " + std::to_string(value); });
 }
 
 void RequireSoftStepSettings(const SoftStepSettings& soft)
@@ -93,7 +59,7 @@ void RequireSoftStepSettings(const SoftStepSettings& soft)
             [&]
             {
                 return "SolverSettings::softStep.contactCorrection: must be in (0, 1], got " +
-                       std::to_string(soft.contactCorrection);
+                       NumberText(soft.contactCorrection);
             });
     RequirePositive(soft.contactHertz, "SolverSettings::softStep.contactHertz");
     RequireNonNegative(soft.contactDampingRatio, "SolverSettings::softStep.contactDampingRatio");
@@ -228,15 +194,6 @@ void UnlinkJointEdge(WorldState& world, std::int32_t jointIndex, int side, std::
     }
 }
 
-/// Throws for a refusal of the engine's rules (meff/validity.h).
-void Require(const std::optional<Refusal>& refusal)
-{
-    if (refusal)
-    {
-        ThrowRefusal(*refusal);
-    }
-}
-
 } // namespace
 
 const char* SolverKindName(SolverKind kind)
@@ -255,12 +212,7 @@ const char* SolverKindName(SolverKind kind)
 
 Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
 {
-    Require(meff::IsValid(lengthUnitsPerMeter) && lengthUnitsPerMeter > 0,
-            [&]
-            {
-                return std::string("TolerancesForLengthUnits: must be finite and > 0, got " +
-                                   std::to_string(lengthUnitsPerMeter));
-            });
+    RequirePositive(lengthUnitsPerMeter, "TolerancesForLengthUnits");
     Tolerances t;
     t.linearSlop *= lengthUnitsPerMeter;
     t.polygonSkin *= lengthUnitsPerMeter;
@@ -790,7 +742,7 @@ void RequireValidSegment(const Segment& segment, const Tolerances& tolerances, c
             {
                 return std::string(where) +
                        ": points must be further apart than the linear slop, got " +
-                       Describe(segment.point1) + " and " + Describe(segment.point2);
+                       NumberText(segment.point1) + " and " + NumberText(segment.point2);
             });
 }
 
@@ -1039,21 +991,21 @@ JointId World::CreateJoint(const GearJointDef& def)
     {
         if (joint.type != JointType::Revolute && joint.type != JointType::Prismatic)
         {
-            throw InvalidArgument(std::string("GearJointDef.") + field +
-                                  " must be a revolute or prismatic joint");
+            throw InvalidArgument(std::string("GearJointDef::") + field +
+                                  ": must be a revolute or prismatic joint");
         }
         if (world.bodies[joint.bodyB].type != BodyType::Dynamic)
         {
             // The gear moves the joint's body B; Box2D 2.4.1 asserts the same.
-            throw InvalidArgument(std::string("GearJointDef.") + field +
-                                  "'s body B must be dynamic (the gear turns it)");
+            throw InvalidArgument(std::string("GearJointDef::") + field +
+                                  ": its body B must be dynamic (the gear turns it)");
         }
     };
     requireGearable(joint1, "joint1");
     requireGearable(joint2, "joint2");
     if (def.joint1 == def.joint2)
     {
-        throw InvalidArgument("GearJointDef.joint2 must be a different joint from joint1");
+        throw InvalidArgument("GearJointDef::joint2: must be a different joint from joint1");
     }
     const auto pose = [&](std::int32_t body) {
         return GearPose{world.bodies[body].xf, world.bodies[body].sweep.a};

@@ -9,6 +9,7 @@
 // contacts and the solver, see exactly what Box2D's do.
 #include "dynamics/step_stages.h"
 #include "dynamics/world_state.h"
+#include "meff/validity.h"
 #include "meff/world.h"
 
 #include <algorithm>
@@ -22,11 +23,6 @@ using namespace detail;
 
 namespace
 {
-
-std::string Describe(Vec2 v)
-{
-    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")";
-}
 
 [[noreturn]] void Refuse(const std::string& message)
 {
@@ -59,14 +55,14 @@ std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
     {
         if (!v[i].IsValid())
         {
-            Refuse("points[" + std::to_string(i) + "]: must be finite, got " + Describe(v[i]));
+            Refuse("points[" + std::to_string(i) + "]: must be finite, got " + NumberText(v[i]));
         }
         if (i > 0 && DistanceSquared(v[i - 1], v[i]) <= linearSlop * linearSlop)
         {
             Refuse("points " + std::to_string(i - 1) + " and " +
                    std::to_string(i % chain.points.size()) +
-                   " must be further apart than the linear slop, got " + Describe(v[i - 1]) +
-                   " and " + Describe(v[i]));
+                   " must be further apart than the linear slop, got " + NumberText(v[i - 1]) +
+                   " and " + NumberText(v[i]));
         }
     }
     const std::size_t m = v.size();
@@ -80,7 +76,7 @@ std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
     {
         Refuse("prev and next: must be finite and further than the linear slop from the first "
                "and last points, got " +
-               Describe(prev) + " and " + Describe(next));
+               NumberText(prev) + " and " + NumberText(next));
     }
     std::vector<ChainSegment> segments(m - 1);
     for (std::size_t i = 0; i + 1 < m; ++i)

@@ -30,26 +30,12 @@ using namespace detail;
 namespace
 {
 
-std::string Describe(Vec2 v)
-{
-    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")";
-}
-
-void RequireFinite(Vec2 value, const char* where)
-{
-    if (!value.IsValid())
-    {
-        throw InvalidArgument(std::string(where) + ": must be finite, got " + Describe(value));
-    }
-}
-
 void RequireValidTransform(const Transform& xf, const char* where)
 {
     if (!xf.p.IsValid() || !meff::IsValid(xf.q.s) || !meff::IsValid(xf.q.c))
     {
-        throw InvalidArgument(std::string(where) + ": must be finite, got p = " + Describe(xf.p) +
-                              ", q = (s " + std::to_string(xf.q.s) + ", c " +
-                              std::to_string(xf.q.c) + ")");
+        throw InvalidArgument(std::string(where) + ": must be finite, got p = " + NumberText(xf.p) +
+                              ", q = (s " + NumberText(xf.q.s) + ", c " + NumberText(xf.q.c) + ")");
     }
 }
 
@@ -134,11 +120,7 @@ struct ClosestHit
 void RequireValidCastShape(const Circle& circle)
 {
     RequireFinite(circle.center, "World::CastShape: shape.center");
-    if (!meff::IsValid(circle.radius) || circle.radius <= 0)
-    {
-        throw InvalidArgument("World::CastShape: shape.radius: must be finite and > 0, got " +
-                              std::to_string(circle.radius));
-    }
+    RequirePositive(circle.radius, "World::CastShape: shape.radius");
 }
 
 void RequireValidCastShape(const Polygon& polygon)
@@ -153,11 +135,7 @@ void RequireValidCastShape(const Polygon& polygon)
     {
         RequireFinite(polygon.vertices[i], "World::CastShape: shape.vertices");
     }
-    if (!meff::IsValid(polygon.radius) || polygon.radius < 0)
-    {
-        throw InvalidArgument("World::CastShape: shape.radius: must be finite and >= 0, got " +
-                              std::to_string(polygon.radius));
-    }
+    RequireNonNegative(polygon.radius, "World::CastShape: shape.radius");
 }
 
 void RequireValidCastShape(const Capsule& capsule, const Tolerances& tolerances,
@@ -258,7 +236,7 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
     {
         throw InvalidArgument("World::OverlapAABB: box: must be finite with lowerBound <= "
                               "upperBound, got " +
-                              Describe(box.lowerBound) + " to " + Describe(box.upperBound));
+                              NumberText(box.lowerBound) + " to " + NumberText(box.upperBound));
     }
     const WorldState& world = State();
     world.broadPhase.Query(box, {filter.categoryBits, filter.maskBits},
@@ -376,11 +354,7 @@ CharacterMove World::MoveCharacter(const Capsule& mover, Vec2 velocity, Real dt,
 {
     RequireValidCastShape(mover, State().tolerances, "World::MoveCharacter: mover");
     RequireFinite(velocity, "World::MoveCharacter: velocity");
-    if (!(dt > 0) || !meff::IsValid(dt))
-    {
-        throw InvalidArgument("World::MoveCharacter: dt must be finite and > 0, got " +
-                              std::to_string(dt));
-    }
+    RequirePositive(dt, "World::MoveCharacter: dt");
     const Vec2 step = dt * velocity;
     RequireFinite(step, "World::MoveCharacter: velocity · dt");
     const Capsule target{mover.center1 + step, mover.center2 + step, mover.radius};

@@ -8,7 +8,6 @@
 #include "meff/error.h"
 #include "meff/validity.h"
 
-#include <sstream>
 #include <string>
 #include <utility>
 
@@ -17,42 +16,6 @@ namespace meff::detail
 
 namespace
 {
-
-[[noreturn]] void Reject(const char* def, const char* field, Real value, const char* rule)
-{
-    std::ostringstream message;
-    message.precision(9); // enough digits to print any float exactly
-    message << def << '.' << field << " = " << value << ' ' << rule;
-    throw InvalidArgument(message.str());
-}
-
-void RequireFinite(const char* def, const char* field, Real value)
-{
-    if (!IsValid(value))
-    {
-        Reject(def, field, value, "is not finite");
-    }
-}
-
-void RequireFinite(const char* def, const char* field, Vec2 value)
-{
-    if (!value.IsValid())
-    {
-        std::ostringstream message;
-        message.precision(9);
-        message << def << '.' << field << " = (" << value.x << ", " << value.y << ") is not finite";
-        throw InvalidArgument(message.str());
-    }
-}
-
-void RequireNonNegative(const char* def, const char* field, Real value)
-{
-    RequireFinite(def, field, value);
-    if (value < 0)
-    {
-        Reject(def, field, value, "must be >= 0");
-    }
-}
 
 /// Spring constants from a frequency and damping ratio, as Box2D's b2LinearStiffness: the
 /// oscillator mass is the reduced mass mA·mB/(mA + mB) when both bodies are dynamic (seed,
@@ -80,33 +43,26 @@ void LinearStiffness(Real& stiffness, Real& damping, Real hertz, Real dampingRat
     damping = Real(2) * mass * dampingRatio * omega;
 }
 
-void RequireOrdered(const char* def, const char* lowerField, Real lower, const char* upperField,
-                    Real upper)
+/// `lower` (the field named) at most `upper` (its sibling field, named as a member).
+void RequireOrdered(const char* lowerField, Real lower, const char* upperMember, Real upper)
 {
     if (lower > upper)
     {
-        std::ostringstream message;
-        message.precision(9);
-        message << def << '.' << lowerField << " = " << lower << " exceeds " << upperField << " = "
-                << upper;
-        throw InvalidArgument(message.str());
+        ThrowRefusal({lowerField, std::string("must not exceed ") + upperMember + " (" +
+                                      NumberText(upper) + "), got " + NumberText(lower)});
     }
 }
 
 /// The unit axis of a prismatic or wheel joint. A zero axis has no direction to slide along.
 /// Normalized as b2Vec2::Normalize does (Box2D's prismatic constructor normalizes; its wheel
 /// joint does not, so the Box2D mirror normalizes the wheel axis it hands over).
-Vec2 RequireUnitAxis(const char* def, Vec2 axis)
+Vec2 RequireUnitAxis(const char* field, Vec2 axis)
 {
-    RequireFinite(def, "localAxisA", axis);
+    RequireFinite(axis, field);
     Vec2 unit = axis;
     if (unit.Normalize() == 0)
     {
-        std::ostringstream message;
-        message.precision(9);
-        message << def << ".localAxisA = (" << axis.x << ", " << axis.y
-                << ") has no direction (length 0)";
-        throw InvalidArgument(message.str());
+        ThrowRefusal({field, "must have a direction (a length > 0), got " + NumberText(axis)});
     }
     return unit;
 }
@@ -151,25 +107,17 @@ Joint MakeTypedJoint(JointType type, std::int32_t bodyA, std::int32_t bodyB, boo
 
 Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    constexpr const char* kDef = "RevoluteJointDef";
-    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
-    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
-    RequireFinite(kDef, "referenceAngle", def.referenceAngle);
-    RequireFinite(kDef, "lowerAngle", def.lowerAngle);
-    RequireFinite(kDef, "upperAngle", def.upperAngle);
-    RequireFinite(kDef, "motorSpeed", def.motorSpeed);
-    RequireNonNegative(kDef, "maxMotorTorque", def.maxMotorTorque);
-    RequireNonNegative(kDef, "hertz", def.hertz);
-    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
-    RequireFinite(kDef, "targetAngle", def.targetAngle);
-    if (def.lowerAngle > def.upperAngle)
-    {
-        std::ostringstream message;
-        message.precision(9);
-        message << kDef << ".lowerAngle = " << def.lowerAngle
-                << " exceeds upperAngle = " << def.upperAngle;
-        throw InvalidArgument(message.str());
-    }
+    RequireFinite(def.localAnchorA, "RevoluteJointDef::localAnchorA");
+    RequireFinite(def.localAnchorB, "RevoluteJointDef::localAnchorB");
+    RequireFinite(def.referenceAngle, "RevoluteJointDef::referenceAngle");
+    RequireFinite(def.lowerAngle, "RevoluteJointDef::lowerAngle");
+    RequireFinite(def.upperAngle, "RevoluteJointDef::upperAngle");
+    RequireFinite(def.motorSpeed, "RevoluteJointDef::motorSpeed");
+    RequireNonNegative(def.maxMotorTorque, "RevoluteJointDef::maxMotorTorque");
+    RequireNonNegative(def.hertz, "RevoluteJointDef::hertz");
+    RequireNonNegative(def.dampingRatio, "RevoluteJointDef::dampingRatio");
+    RequireFinite(def.targetAngle, "RevoluteJointDef::targetAngle");
+    RequireOrdered("RevoluteJointDef::lowerAngle", def.lowerAngle, "upperAngle", def.upperAngle);
 
     RevoluteJoint revolute;
     revolute.localAnchorA = def.localAnchorA;
@@ -194,34 +142,23 @@ Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bo
 Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB, const Tolerances& tolerances)
 {
-    constexpr const char* kDef = "DistanceJointDef";
-    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
-    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
-    RequireFinite(kDef, "length", def.length);
-    RequireFinite(kDef, "minLength", def.minLength);
-    RequireFinite(kDef, "maxLength", def.maxLength);
-    RequireNonNegative(kDef, "hertz", def.hertz);
-    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
-    for (const auto& [name, value] :
-         {std::pair{"length", def.length}, {"minLength", def.minLength}})
+    RequireFinite(def.localAnchorA, "DistanceJointDef::localAnchorA");
+    RequireFinite(def.localAnchorB, "DistanceJointDef::localAnchorB");
+    RequireFinite(def.length, "DistanceJointDef::length");
+    RequireFinite(def.minLength, "DistanceJointDef::minLength");
+    RequireFinite(def.maxLength, "DistanceJointDef::maxLength");
+    RequireNonNegative(def.hertz, "DistanceJointDef::hertz");
+    RequireNonNegative(def.dampingRatio, "DistanceJointDef::dampingRatio");
+    for (const auto& [field, value] : {std::pair{"DistanceJointDef::length", def.length},
+                                       {"DistanceJointDef::minLength", def.minLength}})
     {
         if (value > MaxDistanceJointLength())
         {
-            std::ostringstream message;
-            message.precision(9);
-            message << kDef << "." << name << " = " << value << " exceeds "
-                    << MaxDistanceJointLength() << " m (its square must be finite)";
-            throw InvalidArgument(message.str());
+            ThrowRefusal({field, "must be at most " + NumberText(MaxDistanceJointLength()) +
+                                     " m (its square must be finite), got " + NumberText(value)});
         }
     }
-    if (def.minLength > def.maxLength)
-    {
-        std::ostringstream message;
-        message.precision(9);
-        message << kDef << ".minLength = " << def.minLength
-                << " exceeds maxLength = " << def.maxLength;
-        throw InvalidArgument(message.str());
-    }
+    RequireOrdered("DistanceJointDef::minLength", def.minLength, "maxLength", def.maxLength);
 
     DistanceJoint distance;
     distance.localAnchorA = def.localAnchorA;
@@ -242,19 +179,18 @@ Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bo
 
 Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    constexpr const char* kDef = "PrismaticJointDef";
-    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
-    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
-    const Vec2 axis = RequireUnitAxis(kDef, def.localAxisA);
-    RequireFinite(kDef, "referenceAngle", def.referenceAngle);
-    RequireFinite(kDef, "lowerTranslation", def.lowerTranslation);
-    RequireFinite(kDef, "upperTranslation", def.upperTranslation);
-    RequireFinite(kDef, "motorSpeed", def.motorSpeed);
-    RequireNonNegative(kDef, "maxMotorForce", def.maxMotorForce);
-    RequireNonNegative(kDef, "hertz", def.hertz);
-    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
-    RequireFinite(kDef, "targetTranslation", def.targetTranslation);
-    RequireOrdered(kDef, "lowerTranslation", def.lowerTranslation, "upperTranslation",
+    RequireFinite(def.localAnchorA, "PrismaticJointDef::localAnchorA");
+    RequireFinite(def.localAnchorB, "PrismaticJointDef::localAnchorB");
+    const Vec2 axis = RequireUnitAxis("PrismaticJointDef::localAxisA", def.localAxisA);
+    RequireFinite(def.referenceAngle, "PrismaticJointDef::referenceAngle");
+    RequireFinite(def.lowerTranslation, "PrismaticJointDef::lowerTranslation");
+    RequireFinite(def.upperTranslation, "PrismaticJointDef::upperTranslation");
+    RequireFinite(def.motorSpeed, "PrismaticJointDef::motorSpeed");
+    RequireNonNegative(def.maxMotorForce, "PrismaticJointDef::maxMotorForce");
+    RequireNonNegative(def.hertz, "PrismaticJointDef::hertz");
+    RequireNonNegative(def.dampingRatio, "PrismaticJointDef::dampingRatio");
+    RequireFinite(def.targetTranslation, "PrismaticJointDef::targetTranslation");
+    RequireOrdered("PrismaticJointDef::lowerTranslation", def.lowerTranslation, "upperTranslation",
                    def.upperTranslation);
 
     PrismaticJoint prismatic;
@@ -282,17 +218,16 @@ Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t b
 Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB)
 {
-    constexpr const char* kDef = "WheelJointDef";
-    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
-    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
-    const Vec2 axis = RequireUnitAxis(kDef, def.localAxisA);
-    RequireFinite(kDef, "lowerTranslation", def.lowerTranslation);
-    RequireFinite(kDef, "upperTranslation", def.upperTranslation);
-    RequireFinite(kDef, "motorSpeed", def.motorSpeed);
-    RequireNonNegative(kDef, "maxMotorTorque", def.maxMotorTorque);
-    RequireNonNegative(kDef, "hertz", def.hertz);
-    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
-    RequireOrdered(kDef, "lowerTranslation", def.lowerTranslation, "upperTranslation",
+    RequireFinite(def.localAnchorA, "WheelJointDef::localAnchorA");
+    RequireFinite(def.localAnchorB, "WheelJointDef::localAnchorB");
+    const Vec2 axis = RequireUnitAxis("WheelJointDef::localAxisA", def.localAxisA);
+    RequireFinite(def.lowerTranslation, "WheelJointDef::lowerTranslation");
+    RequireFinite(def.upperTranslation, "WheelJointDef::upperTranslation");
+    RequireFinite(def.motorSpeed, "WheelJointDef::motorSpeed");
+    RequireNonNegative(def.maxMotorTorque, "WheelJointDef::maxMotorTorque");
+    RequireNonNegative(def.hertz, "WheelJointDef::hertz");
+    RequireNonNegative(def.dampingRatio, "WheelJointDef::dampingRatio");
+    RequireOrdered("WheelJointDef::lowerTranslation", def.lowerTranslation, "upperTranslation",
                    def.upperTranslation);
 
     WheelJoint wheel;
@@ -318,12 +253,11 @@ Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB
 Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real inertiaA,
                 Real inertiaB)
 {
-    constexpr const char* kDef = "WeldJointDef";
-    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
-    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
-    RequireFinite(kDef, "referenceAngle", def.referenceAngle);
-    RequireNonNegative(kDef, "hertz", def.hertz);
-    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+    RequireFinite(def.localAnchorA, "WeldJointDef::localAnchorA");
+    RequireFinite(def.localAnchorB, "WeldJointDef::localAnchorB");
+    RequireFinite(def.referenceAngle, "WeldJointDef::referenceAngle");
+    RequireNonNegative(def.hertz, "WeldJointDef::hertz");
+    RequireNonNegative(def.dampingRatio, "WeldJointDef::dampingRatio");
 
     WeldJoint weld;
     weld.localAnchorA = def.localAnchorA;
@@ -339,15 +273,15 @@ Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB,
 
 Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    constexpr const char* kDef = "MotorJointDef";
-    RequireFinite(kDef, "linearOffset", def.linearOffset);
-    RequireFinite(kDef, "angularOffset", def.angularOffset);
-    RequireNonNegative(kDef, "maxForce", def.maxForce);
-    RequireNonNegative(kDef, "maxTorque", def.maxTorque);
-    RequireNonNegative(kDef, "correctionFactor", def.correctionFactor);
+    RequireFinite(def.linearOffset, "MotorJointDef::linearOffset");
+    RequireFinite(def.angularOffset, "MotorJointDef::angularOffset");
+    RequireNonNegative(def.maxForce, "MotorJointDef::maxForce");
+    RequireNonNegative(def.maxTorque, "MotorJointDef::maxTorque");
+    RequireNonNegative(def.correctionFactor, "MotorJointDef::correctionFactor");
     if (def.correctionFactor > 1)
     {
-        Reject(kDef, "correctionFactor", def.correctionFactor, "must be <= 1");
+        ThrowRefusal({"MotorJointDef::correctionFactor",
+                      "must be at most 1, got " + NumberText(def.correctionFactor)});
     }
 
     MotorJoint motor;
@@ -364,11 +298,10 @@ Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB
 
 Joint MakeJoint(const FrictionJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    constexpr const char* kDef = "FrictionJointDef";
-    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
-    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
-    RequireNonNegative(kDef, "maxForce", def.maxForce);
-    RequireNonNegative(kDef, "maxTorque", def.maxTorque);
+    RequireFinite(def.localAnchorA, "FrictionJointDef::localAnchorA");
+    RequireFinite(def.localAnchorB, "FrictionJointDef::localAnchorB");
+    RequireNonNegative(def.maxForce, "FrictionJointDef::maxForce");
+    RequireNonNegative(def.maxTorque, "FrictionJointDef::maxTorque");
 
     FrictionJoint friction;
     friction.localAnchorA = def.localAnchorA;
@@ -383,19 +316,14 @@ Joint MakeJoint(const FrictionJointDef& def, std::int32_t bodyA, std::int32_t bo
 
 Joint MakeJoint(const PulleyJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    constexpr const char* kDef = "PulleyJointDef";
-    RequireFinite(kDef, "groundAnchorA", def.groundAnchorA);
-    RequireFinite(kDef, "groundAnchorB", def.groundAnchorB);
-    RequireFinite(kDef, "localAnchorA", def.localAnchorA);
-    RequireFinite(kDef, "localAnchorB", def.localAnchorB);
-    RequireNonNegative(kDef, "lengthA", def.lengthA);
-    RequireNonNegative(kDef, "lengthB", def.lengthB);
-    RequireFinite(kDef, "ratio", def.ratio);
-    if (!(def.ratio > 0))
-    {
-        // 0 would cut B's side off the rope; a negative ratio would make it push when pulled.
-        Reject(kDef, "ratio", def.ratio, "must be > 0");
-    }
+    RequireFinite(def.groundAnchorA, "PulleyJointDef::groundAnchorA");
+    RequireFinite(def.groundAnchorB, "PulleyJointDef::groundAnchorB");
+    RequireFinite(def.localAnchorA, "PulleyJointDef::localAnchorA");
+    RequireFinite(def.localAnchorB, "PulleyJointDef::localAnchorB");
+    RequireNonNegative(def.lengthA, "PulleyJointDef::lengthA");
+    RequireNonNegative(def.lengthB, "PulleyJointDef::lengthB");
+    // 0 would cut B's side off the rope; a negative ratio would make it push when pulled.
+    RequirePositive(def.ratio, "PulleyJointDef::ratio");
 
     PulleyJoint pulley;
     pulley.groundAnchorA = def.groundAnchorA;
@@ -454,7 +382,7 @@ GearSide MakeGearSide(const Joint& joint, const GearPose& body, const GearPose& 
 Joint MakeJoint(const GearJointDef& def, const Joint& joint1, const Joint& joint2,
                 const GearPose& a, const GearPose& b, const GearPose& c, const GearPose& d)
 {
-    RequireFinite("GearJointDef", "ratio", def.ratio);
+    RequireFinite(def.ratio, "GearJointDef::ratio");
     const GearSide sideA = MakeGearSide(joint1, a, c);
     const GearSide sideB = MakeGearSide(joint2, b, d);
 
@@ -484,16 +412,14 @@ Joint MakeJoint(const GearJointDef& def, const Joint& joint1, const Joint& joint
 Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB, const Transform& xfB, bool bodyBDynamic)
 {
-    constexpr const char* kDef = "MouseJointDef";
     if (!bodyBDynamic)
     {
-        throw InvalidArgument(std::string(kDef) +
-                              ".bodyB must be a dynamic body (the joint drags it)");
+        throw InvalidArgument("MouseJointDef::bodyB: must be a dynamic body (the joint drags it)");
     }
-    RequireFinite(kDef, "target", def.target);
-    RequireNonNegative(kDef, "maxForce", def.maxForce);
-    RequireNonNegative(kDef, "hertz", def.hertz);
-    RequireNonNegative(kDef, "dampingRatio", def.dampingRatio);
+    RequireFinite(def.target, "MouseJointDef::target");
+    RequireNonNegative(def.maxForce, "MouseJointDef::maxForce");
+    RequireNonNegative(def.hertz, "MouseJointDef::hertz");
+    RequireNonNegative(def.dampingRatio, "MouseJointDef::dampingRatio");
 
     MouseJoint mouse;
     mouse.target = def.target;
