@@ -207,11 +207,7 @@ Scene WithSetting(const Scene& scene, const Setting& setting)
     return copy;
 }
 
-struct Vec2d
-{
-    double x = 0;
-    double y = 0;
-};
+using analytic::Vec2d;
 
 Vec2d operator-(Vec2d a, Vec2d b)
 {
@@ -552,14 +548,6 @@ analytic::PendulumMotion PendulumSolution(double k, double psi0, double omega0, 
     return analytic::PendulumMotion(k, psi0, omega0, 1.0 / kSampleHz, kSubsteps, samples);
 }
 
-/// Where a body on a rod of length `d` from `pivot` is at angle ψ from `down` (unit).
-Vec2d OnRod(Vec2d pivot, Vec2d down, double d, double psi)
-{
-    const double c = std::cos(psi);
-    const double s = std::sin(psi);
-    return {pivot.x + d * (c * down.x - s * down.y), pivot.y + d * (s * down.x + c * down.y)};
-}
-
 /// One error measure: the error of a run, in metres.
 class ErrorModel
 {
@@ -709,16 +697,13 @@ std::unique_ptr<ErrorModel> PendulumModel(const Scene& scene, double seconds)
     std::vector<std::vector<Vec2d>> expected;
     for (int k = 0; k <= samples; ++k)
     {
-        expected.push_back({OnRod(p.pivot, p.down, p.length, solution.Angle(k))});
+        expected.push_back({analytic::OnRod(p.pivot, p.down, p.length, solution.Angle(k))});
     }
     return std::make_unique<PositionsModel>("analytic:pendulum", std::vector<std::size_t>{p.body},
                                             expected);
 }
 
-/// The ideal cradle with its tiny gaps is one pendulum folded at the bottom: the collisions
-/// pass the whole momentum along the row within an instant, so while the released ball's
-/// pendulum angle is on its own side it swings and the others hang; past the bottom, the last
-/// ball swings out with that same angle mirrored, and the others hang.
+/// The ideal cradle (analytic::CradleBallAngle) on the scene's rods, the first ball released.
 std::unique_ptr<ErrorModel> CradleModel(const Scene& scene, double seconds)
 {
     const BuiltScene built = BuildWorld(scene);
@@ -749,22 +734,21 @@ std::unique_ptr<ErrorModel> CradleModel(const Scene& scene, double seconds)
     for (int k = 0; k <= samples; ++k)
     {
         const double psi = solution.Angle(k);
-        const bool firstSwings = psi * first.psi0 >= 0;
         std::vector<Vec2d>& row = expected.emplace_back();
         for (std::size_t n = 0; n < balls.size(); ++n)
         {
             const PendulumSetup& ball = balls[n];
-            const bool swings = firstSwings ? n == 0 : n == balls.size() - 1;
-            row.push_back(OnRod(ball.pivot, ball.down, ball.length, swings ? psi : 0.0));
+            row.push_back(
+                analytic::OnRod(ball.pivot, ball.down, ball.length,
+                                analytic::CradleBallAngle(n, balls.size(), first.psi0, psi)));
         }
     }
     return std::make_unique<PositionsModel>("analytic:cradle", bodies, expected);
 }
 
-/// A ball dropped on flat ground: each rebound leaves at e times the arrival speed (while that
-/// is above the restitution threshold), so it rises to e² times the previous height. The error
-/// is the largest difference of the rebound heights (the highest centre of mass between two
-/// bounces) from these, over the rebounds whose top the exact motion reaches within the run.
+/// A ball dropped on flat ground (analytic::BounceApexes). The error is the largest difference
+/// of the rebound heights (the highest centre of mass between two bounces) from the exact ones,
+/// over the rebounds whose top the exact motion reaches within the run.
 class BounceModel : public ErrorModel
 {
   public:
@@ -786,21 +770,7 @@ class BounceModel : public ErrorModel
         const double y0 = built.world.GetWorldCenter(built.bodies[m_body]).y;
         const double v0 = built.world.GetLinearVelocity(built.bodies[m_body]).y;
         m_contactHeight = scene.analytic->contactHeight;
-        // First arrival: y0 + v0 t − g t²/2 = contact height.
-        double speed = std::sqrt(v0 * v0 + 2 * g * (y0 - m_contactHeight));
-        double time = (v0 + speed) / g;
-        while (speed >= threshold)
-        {
-            const double up = e * speed;
-            const double apexTime = time + up / g;
-            if (apexTime > seconds)
-            {
-                break;
-            }
-            m_apexes.push_back(m_contactHeight + up * up / (2 * g));
-            time += 2 * up / g;
-            speed = up;
-        }
+        m_apexes = analytic::BounceApexes(e, threshold, g, y0, v0, m_contactHeight, seconds);
     }
 
     const char* Kind() const override { return "analytic:bounce"; }
