@@ -40,9 +40,9 @@ struct QueueWorld
     {
         for (int i = 0; i < 5; ++i)
         {
-            detail::Body& body = state.bodies.emplace_back();
+            detail::Body& body = state.bodies.Slots().emplace_back();
             body.type = i == 0 ? BodyType::Static : BodyType::Dynamic;
-            detail::Shape& shape = state.shapes.emplace_back();
+            detail::Shape& shape = state.shapes.Slots().emplace_back();
             shape.alive = true;
             shape.body = i;
             shape.type = ShapeType::Circle;
@@ -191,10 +191,10 @@ TEST_CASE("Impact queue: a kinematic body's other contacts are listed only when 
     for (const bool asleep : {true, false})
     {
         QueueWorld q;
-        detail::Body& paddle = q.state.bodies.emplace_back();
+        detail::Body& paddle = q.state.bodies.Slots().emplace_back();
         paddle.type = BodyType::Kinematic;
         paddle.awake = !asleep;
-        detail::Shape& shape = q.state.shapes.emplace_back();
+        detail::Shape& shape = q.state.shapes.Slots().emplace_back();
         shape.alive = true;
         shape.body = 5;
         shape.type = ShapeType::Circle;

@@ -68,32 +68,12 @@ void RequireSoftStepSettings(const SoftStepSettings& soft)
     RequirePositive(soft.maxPushOutSpeed, "SolverSettings::softStep.maxPushOutSpeed");
 }
 
-/// Takes a slot from the free list or grows the pool; returns its index.
-template <typename T>
-std::int32_t AllocateSlot(std::vector<T>& pool, std::vector<std::int32_t>& freeList)
-{
-    if (!freeList.empty())
-    {
-        const std::int32_t index = freeList.back();
-        freeList.pop_back();
-        return index;
-    }
-    pool.emplace_back();
-    return static_cast<std::int32_t>(pool.size() - 1);
-}
-
-/// Looks an id up in a pool, refusing null, out-of-range and stale ids.
+/// Looks an id up in a pool (a Pool or a const Pool), refusing null, out-of-range and stale
+/// ids: Pool::Resolve, as World's calls write it.
 template <typename Pool, typename IdType>
 auto& Resolve(Pool& pool, IdType id, const char* kind)
 {
-    if (id.index < 0 || static_cast<std::size_t>(id.index) >= pool.size() || id.IsNull() ||
-        !pool[id.index].alive || pool[id.index].generation != id.generation)
-    {
-        throw InvalidArgument(std::string("invalid ") + kind + " id (index " +
-                              std::to_string(id.index) + ", generation " +
-                              std::to_string(id.generation) + "): null, or already destroyed");
-    }
-    return pool[id.index];
+    return pool.Resolve(id, kind);
 }
 
 /// A shape's mass data (ComputeMass at its density).
@@ -309,12 +289,9 @@ BodyId World::CreateBody(const BodyDef& def)
     RequireNonNegative(def.angularDamping, "BodyDef::angularDamping");
     RequireFinite(def.gravityScale, "BodyDef::gravityScale");
 
-    const std::int32_t index = AllocateSlot(world.bodies, world.freeBodies);
+    const BodyId id = world.bodies.Allocate();
+    const std::int32_t index = id.index;
     Body& body = world.bodies[index];
-    const std::uint32_t generation = body.generation + 1;
-    body = Body{};
-    body.generation = generation;
-    body.alive = true;
     body.type = def.type;
     body.xf.Set(def.position, def.angle);
     body.sweep.localCenter = {0, 0};
@@ -340,7 +317,6 @@ BodyId World::CreateBody(const BodyDef& def)
     }
     world.bodyList = index;
 
-    const BodyId id{index, generation};
     world.bodyIds.push_back(id);
     return id;
 }
@@ -369,12 +345,10 @@ void World::DestroyBody(BodyId id)
         Shape& shape = world.shapes[shapeId.index];
         if (shape.chain >= 0 && world.chains[shape.chain].alive)
         {
-            world.chains[shape.chain].alive = false;
-            world.freeChains.push_back(shape.chain);
+            world.chains.Free(shape.chain);
         }
         world.broadPhase.DestroyProxy(shape.proxyId);
-        shape.alive = false;
-        world.freeShapes.push_back(shapeId.index);
+        world.shapes.Free(shapeId.index);
         body.shapeIds.pop_back();
     }
     body.shapes.clear();
@@ -391,16 +365,13 @@ void World::DestroyBody(BodyId id)
     {
         world.bodyList = body.next;
     }
-    body.alive = false;
-    world.freeBodies.push_back(id.index);
+    world.bodies.Free(id.index);
     world.bodyIds.erase(std::find(world.bodyIds.begin(), world.bodyIds.end(), id));
 }
 
 bool World::IsValid(BodyId id) const
 {
-    const auto& pool = State().bodies;
-    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
-           pool[id.index].alive && pool[id.index].generation == id.generation;
+    return State().bodies.IsValid(id);
 }
 
 BodyType World::GetType(BodyId id) const
@@ -666,12 +637,9 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
     Require(CheckShapeDef(def));
     prototype.def = def;
     RequireMassAccepted(world, body, prototype);
-    const std::int32_t index = AllocateSlot(world.shapes, world.freeShapes);
+    const ShapeId id = world.shapes.Allocate(std::move(prototype));
+    const std::int32_t index = id.index;
     Shape& shape = world.shapes[index];
-    const std::uint32_t generation = shape.generation + 1;
-    shape = prototype;
-    shape.generation = generation;
-    shape.alive = true;
     shape.body = bodyId.index;
     shape.def = def;
     shape.aabb = shape.ComputeAABB(body.xf);
@@ -681,7 +649,6 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
     shape.proxyId = world.broadPhase.CreateProxy(
         shape.aabb, index, {filter.categoryBits, filter.maskBits, filter.groupIndex <= 0});
 
-    const ShapeId id{index, generation};
     body.shapes.insert(body.shapes.begin(), index); // newest first, as Box2D's fixture list
     body.shapeIds.insert(body.shapeIds.begin(), id);
     if (def.density > 0)
@@ -798,18 +765,15 @@ void World::DestroyShape(ShapeId id)
         }
     }
     world.broadPhase.DestroyProxy(shape.proxyId);
-    shape.alive = false;
     body.shapes.erase(std::find(body.shapes.begin(), body.shapes.end(), id.index));
     body.shapeIds.erase(std::find(body.shapeIds.begin(), body.shapeIds.end(), id));
-    world.freeShapes.push_back(id.index);
+    world.shapes.Free(id.index);
     ResetMassData(world, body);
 }
 
 bool World::IsValid(ShapeId id) const
 {
-    const auto& pool = State().shapes;
-    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
-           pool[id.index].alive && pool[id.index].generation == id.generation;
+    return State().shapes.IsValid(id);
 }
 
 BodyId World::GetBody(ShapeId id) const
@@ -873,12 +837,9 @@ namespace
 
 JointId AddJoint(WorldState& world, Joint joint)
 {
-    const std::int32_t index = AllocateSlot(world.joints, world.freeJoints);
+    const JointId id = world.joints.Allocate();
+    const std::int32_t index = id.index;
     JointSlot& slot = world.joints[index];
-    const std::uint32_t generation = slot.generation + 1;
-    slot = JointSlot{};
-    slot.generation = generation;
-    slot.alive = true;
     slot.joint = joint;
 
     slot.prev = kNullIndex;
@@ -897,7 +858,6 @@ JointId AddJoint(WorldState& world, Joint joint)
     {
         FlagContactsForFiltering(world, joint.bodyA, joint.bodyB);
     }
-    const JointId id{index, generation};
     world.jointIds.push_back(id);
     return id;
 }
@@ -1120,16 +1080,13 @@ void World::DestroyJoint(JointId id)
     {
         FlagContactsForFiltering(world, slot.joint.bodyA, slot.joint.bodyB);
     }
-    slot.alive = false;
-    world.freeJoints.push_back(id.index);
+    world.joints.Free(id.index);
     world.jointIds.erase(std::find(world.jointIds.begin(), world.jointIds.end(), id));
 }
 
 bool World::IsValid(JointId id) const
 {
-    const auto& pool = State().joints;
-    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
-           pool[id.index].alive && pool[id.index].generation == id.generation;
+    return State().joints.IsValid(id);
 }
 
 JointType World::GetJointType(JointId id) const

@@ -92,14 +92,7 @@ std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
 template <typename State> // WorldState or const WorldState
 auto& ResolveChain(State& world, ChainId id)
 {
-    if (id.index < 0 || static_cast<std::size_t>(id.index) >= world.chains.size() || id.IsNull() ||
-        !world.chains[id.index].alive || world.chains[id.index].generation != id.generation)
-    {
-        throw InvalidArgument("invalid chain id (index " + std::to_string(id.index) +
-                              ", generation " + std::to_string(id.generation) +
-                              "): null, or already destroyed");
-    }
-    return world.chains[id.index];
+    return world.chains.Resolve(id, "chain");
 }
 
 } // namespace
@@ -118,20 +111,9 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
         ids.push_back(CreateShape(body, def, segment));
     }
 
-    std::int32_t index;
-    if (!world.freeChains.empty())
-    {
-        index = world.freeChains.back();
-        world.freeChains.pop_back();
-    }
-    else
-    {
-        index = static_cast<std::int32_t>(world.chains.size());
-        world.chains.emplace_back();
-    }
+    const ChainId chainId = world.chains.Allocate();
+    const std::int32_t index = chainId.index;
     ChainSlot& slot = world.chains[index];
-    slot.generation += 1;
-    slot.alive = true;
     slot.body = body.index;
     slot.segments = ids;
     for (const ShapeId id : ids)
@@ -146,7 +128,7 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
     const auto count = static_cast<std::ptrdiff_t>(ids.size());
     std::reverse(owner.shapes.begin(), owner.shapes.begin() + count);
     std::reverse(owner.shapeIds.begin(), owner.shapeIds.begin() + count);
-    return {index, slot.generation};
+    return chainId;
 }
 
 void World::DestroyChain(ChainId id)
@@ -184,21 +166,17 @@ void World::DestroyChain(ChainId id)
     {
         Shape& shape = world.shapes[segment.index];
         world.broadPhase.DestroyProxy(shape.proxyId);
-        shape.alive = false;
-        world.freeShapes.push_back(segment.index);
+        world.shapes.Free(segment.index);
     }
     std::erase_if(body.shapes, ofChain);
     std::erase_if(body.shapeIds, [&](ShapeId s) { return ofChain(s.index); });
-    chain.alive = false;
     chain.segments.clear();
-    world.freeChains.push_back(id.index);
+    world.chains.Free(id.index);
 }
 
 bool World::IsValid(ChainId id) const
 {
-    const auto& pool = State().chains;
-    return id.index >= 0 && static_cast<std::size_t>(id.index) < pool.size() && !id.IsNull() &&
-           pool[id.index].alive && pool[id.index].generation == id.generation;
+    return State().chains.IsValid(id);
 }
 
 std::span<const ShapeId> World::GetChainSegments(ChainId id) const

@@ -41,15 +41,7 @@ void RequireValidTransform(const Transform& xf, const char* where)
 
 const Shape& ResolveShape(const WorldState& world, ShapeId id, const char* where)
 {
-    const auto& pool = world.shapes;
-    if (id.index < 0 || static_cast<std::size_t>(id.index) >= pool.size() || id.IsNull() ||
-        !pool[id.index].alive || pool[id.index].generation != id.generation)
-    {
-        throw InvalidArgument(std::string(where) + ": invalid shape id (index " +
-                              std::to_string(id.index) + ", generation " +
-                              std::to_string(id.generation) + "): null, or already destroyed");
-    }
-    return pool[id.index];
+    return world.shapes.Resolve(id, "shape", where);
 }
 
 /// Box2D v3's b2ShouldQueryShape: each side's category must be in the other's mask.

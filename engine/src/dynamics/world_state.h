@@ -14,6 +14,7 @@
 #include "joints/joint_slot.h"
 #include "model/body.h"
 #include "model/contact.h"
+#include "model/pool.h"
 #include "model/shape.h"
 #include "solvers/shared/contact_solver.h"
 #include "solvers/shared/island.h"
@@ -54,18 +55,14 @@ struct WorldState
     bool continuous = true; ///< run SolveContinuous after the discrete step
     bool allowSleep = false;
 
-    std::vector<Body> bodies;
-    std::vector<std::int32_t> freeBodies;
+    Pool<Body, BodyTag> bodies;
     std::vector<BodyId> bodyIds;        ///< live bodies, creation order
     std::int32_t bodyList = kNullIndex; ///< newest first, as b2World::m_bodyList
 
-    std::vector<Shape> shapes;
-    std::vector<std::int32_t> freeShapes;
-    std::vector<ChainSlot> chains;
-    std::vector<std::int32_t> freeChains;
+    Pool<Shape, ShapeTag> shapes;
+    Pool<ChainSlot, ChainTag> chains;
 
-    std::vector<JointSlot> joints;
-    std::vector<std::int32_t> freeJoints;
+    Pool<JointSlot, JointTag> joints;
     std::vector<JointId> jointIds; ///< live joints, creation order
     std::int32_t jointList = kNullIndex;
 
@@ -150,9 +147,9 @@ class InUserCallback
 /// What a solver back end sees of the world (solvers/solver.h).
 inline SolverWorld SolverView(WorldState& world, SolvedContactSink& solvedContacts)
 {
-    return SolverWorld{world.bodies,    world.contacts, world.joints,
-                       world.bodyList,  world.gravity,  world.allowSleep,
-                       world.stepCount, solvedContacts, world.tasks};
+    return SolverWorld{world.bodies.Slots(), world.contacts, world.joints.Slots(),
+                       world.bodyList,       world.gravity,  world.allowSleep,
+                       world.stepCount,      solvedContacts, world.tasks};
 }
 
 /// Wakes body `bodyIndex` (see WakeBody(Body&)): the helper for any world change — a joint
