@@ -32,23 +32,28 @@ namespace meff::detail
 
 /// kLanes contacts' velocity rows, one per lane. A lane with one point has a second point with
 /// zero masses, which the updates leave unchanged; an empty lane has zero masses throughout.
+/// What every sweep reads comes first and what most sweeps skip (the spin row, the lanes'
+/// sources) last, so that a sweep over groups without rolling resistance streams a cache line
+/// fewer per group.
 struct ContactVelocityGroup
 {
-    std::int32_t source[kLanes];                 ///< constraint index, −1 for an empty lane
     std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices (0 in empty lanes)
     std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (Scatter)
+    bool anyBlock = false, anyScalar = false;
+    bool anyRolling = false; ///< a lane has rolling resistance
     RealW invMassA, invMassB, invIA, invIB, friction;
     RealW tangentSpeed; ///< the friction rows' target (Contact::tangentSpeed, m/s)
-    RealW rollingResistance, rollingMass, rollingImpulse; ///< the spin row (0: none)
-    bool anyRolling = false;                              ///< a lane has rolling resistance
     Vec2W normal;
     Vec2W rA[2], rB[2];
     RealW normalMass[2], tangentMass[2], velocityBias[2]; ///< 1/k of each row (kg); m/s
     RealW normalImpulse[2], tangentImpulse[2];            ///< accumulated (N·s)
     RealW k11, k12, k22;                                  ///< block matrix K
-    RealW inv11, inv12, inv21, inv22;                     ///< K⁻¹
+    /// K⁻¹ = [inv11 inv12; inv12 inv22]: K is symmetric, and so is its inverse, bit for bit
+    /// (both off-diagonal entries are −k12/det).
+    RealW inv11, inv12, inv22;
     MaskW block; ///< lanes whose normal rows are solved as the 2×2 block
-    bool anyBlock = false, anyScalar = false;
+    RealW rollingResistance, rollingMass, rollingImpulse; ///< the spin row (0: none)
+    std::int32_t source[kLanes]; ///< constraint index, −1 for an empty lane
 };
 
 /// kLanes contacts' position constraints, one per lane.

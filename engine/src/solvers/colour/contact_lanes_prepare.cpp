@@ -232,7 +232,6 @@ PreparedLanes PrepareRows(ContactVelocityGroup& vg, const ContactPositionGroup& 
     const RealW invDet = InverseDeterminant(vg.k11, vg.k12, vg.k12, vg.k22);
     vg.inv11 = invDet * vg.k22;
     vg.inv12 = -invDet * vg.k12;
-    vg.inv21 = -invDet * vg.k12;
     vg.inv22 = invDet * vg.k11;
     vg.anyBlock = AnyLane(vg.block);
     vg.anyScalar = AnyLane(in.valid & ~vg.block);

@@ -48,9 +48,8 @@ void PrepareRows(RevoluteJointGroup& g, const SolverData& data)
     const RealW mA = g.invMassA, mB = g.invMassB, iA = g.invIA, iB = g.invIB;
     g.k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
     g.k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
-    g.k21 = g.k12;
     g.k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
-    g.invDetK = InverseDeterminant(g.k11, g.k12, g.k21, g.k22);
+    g.invDetK = InverseDeterminant(g.k11, g.k12, g.k12, g.k22);
     // Impulses are force·dt: rescale last step's to this step's dt (none without warm start).
     g.impulse = data.step.solver.warmStarting ? Splat(data.step.dtRatio) * g.impulse : Vec2W{};
 }
@@ -79,7 +78,7 @@ void SolveVelocityGroup(RevoluteJointGroup& g, Velocity* velocities, DiscardSlot
     BodyStateW a = Gather(velocities, g.indexA);
     BodyStateW b = Gather(velocities, g.indexB);
     const Vec2W cdot = b.linear + Cross(b.angular, g.rB) - a.linear - Cross(a.angular, g.rA);
-    const Vec2W impulse = SolveK(g.k11, g.k12, g.k21, g.k22, g.invDetK, Vec2W{-cdot.x, -cdot.y});
+    const Vec2W impulse = SolveK(g.k11, g.k12, g.k12, g.k22, g.invDetK, Vec2W{-cdot.x, -cdot.y});
     g.impulse = g.impulse + impulse;
     ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA, g.rB, impulse);
     ScatterFromWorker(velocities, g.storeA, discard, a);

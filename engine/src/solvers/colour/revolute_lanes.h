@@ -43,11 +43,11 @@ struct RevoluteJointGroup
     std::int32_t indexA[kLanes], indexB[kLanes];
     std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (Scatter)
     RealW invMassA, invMassB, invIA, invIB;      ///< 1/kg, 1/(kg·m²)
-    Vec2W rA, rB;             ///< anchors from the centres of mass at the step's start (m)
-    RealW k11, k12, k21, k22; ///< point-row K (1/kg)
-    RealW invDetK;            ///< 1/det K, 0 when K is singular (as Mat22::Solve)
-    Vec2W impulse;            ///< accumulated point impulse (N·s)
-    Vec2W anchorA, anchorB;   ///< local anchors relative to the local centres (m)
+    Vec2W rA, rB;           ///< anchors from the centres of mass at the step's start (m)
+    RealW k11, k12, k22;    ///< point-row K (1/kg), symmetric: its k21 is k12
+    RealW invDetK;          ///< 1/det K, 0 when K is singular (as Mat22::Solve)
+    Vec2W impulse;          ///< accumulated point impulse (N·s)
+    Vec2W anchorA, anchorB; ///< local anchors relative to the local centres (m)
 };
 
 class RevoluteLanes

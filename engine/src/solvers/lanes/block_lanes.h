@@ -19,7 +19,8 @@ struct BlockImpulsesW
 /// Solves vn = K·x + b as one LCP by total enumeration of its four cases in Box2D's order (as
 /// ContactSolver's SolveNormalBlock), b = (vn − bias) − K·a being the rows' velocity error at
 /// the old impulses a. A lane where no case holds keeps a. `Group` holds K's k12, K⁻¹ (inv11,
-/// inv12, inv21, inv22) and each row's own effective mass (normalMass[2], 1/kii).
+/// inv12, inv22: K is symmetric, and so is K⁻¹) and each row's own effective mass
+/// (normalMass[2], 1/kii).
 template <typename Group>
 [[gnu::always_inline]] inline BlockImpulsesW SolveBlockLanes(const Group& g, RealW a1, RealW a2,
                                                              RealW b1, RealW b2)
@@ -27,7 +28,7 @@ template <typename Group>
     const RealW zero = Splat(0);
     // Case 1: both in contact, x = −K⁻¹·b.
     const RealW x1 = -(g.inv11 * b1 + g.inv12 * b2);
-    const RealW x2 = -(g.inv21 * b1 + g.inv22 * b2);
+    const RealW x2 = -(g.inv12 * b1 + g.inv22 * b2);
     const MaskW case1 = (x1 >= 0) & (x2 >= 0);
     // Case 2: point 1 only (x2 = 0, vn2 ≥ 0).
     const RealW y1 = -g.normalMass[0] * b1;

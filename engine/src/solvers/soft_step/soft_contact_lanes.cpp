@@ -146,9 +146,13 @@ void WarmStartGroup(SoftContactGroup& g, Velocity* velocities, DiscardSlots disc
         g.totalNormalImpulse[j] += g.normalImpulse[j];
         g.totalTangentImpulse[j] += g.tangentImpulse[j];
     }
-    a.angular = a.angular - g.invIA * g.rollingImpulse;
-    b.angular = b.angular + g.invIB * g.rollingImpulse;
-    g.totalRollingImpulse += g.rollingImpulse;
+    // Without rolling resistance every lane's spin impulse is 0 and would change nothing.
+    if (g.anyRolling)
+    {
+        a.angular = a.angular - g.invIA * g.rollingImpulse;
+        b.angular = b.angular + g.invIB * g.rollingImpulse;
+        g.totalRollingImpulse += g.rollingImpulse;
+    }
     ScatterFromWorker(velocities, g.storeA, discard, a);
     ScatterFromWorker(velocities, g.storeB, discard, b);
 }
@@ -317,7 +321,6 @@ void PackLane(SoftContactGroup& g, int l, std::int32_t source, const SoftContact
         g.k22[l] = c.K.ey.y;
         g.inv11[l] = c.invK.ex.x;
         g.inv12[l] = c.invK.ey.x;
-        g.inv21[l] = c.invK.ex.y;
         g.inv22[l] = c.invK.ey.y;
     }
     g.hasFriction[l] = c.friction > 0 ? -1 : 0;
@@ -408,7 +411,10 @@ void SoftContactLanes::ScaleImpulses(Real factor)
                 g.normalImpulse[j] *= factor;
                 g.tangentImpulse[j] *= factor;
             }
-            g.rollingImpulse *= factor;
+            if (g.anyRolling)
+            {
+                g.rollingImpulse *= factor;
+            }
         });
 }
 
@@ -419,9 +425,10 @@ void SoftContactLanes::SaveImpulses()
         [&](std::int32_t i)
         {
             const SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
+            // Without rolling resistance the spin impulses stay 0 (RestoreImpulses skips them).
             m_saved[static_cast<std::size_t>(i)] = {{g.normalImpulse[0], g.normalImpulse[1]},
                                                     {g.tangentImpulse[0], g.tangentImpulse[1]},
-                                                    g.rollingImpulse};
+                                                    g.anyRolling ? g.rollingImpulse : RealW{}};
         });
 }
 
@@ -437,7 +444,10 @@ void SoftContactLanes::RestoreImpulses()
                 g.normalImpulse[j] = saved.normal[j];
                 g.tangentImpulse[j] = saved.tangent[j];
             }
-            g.rollingImpulse = saved.rolling;
+            if (g.anyRolling)
+            {
+                g.rollingImpulse = saved.rolling;
+            }
         });
 }
 

@@ -60,30 +60,33 @@ void ColourSoftRows(std::size_t count, std::int32_t bodyCount, BodiesOf&& bodies
 
 /// kLanes contacts' rows, one per lane. A lane with one point has a second point whose masses,
 /// lever arms and impulses are zero, which the updates leave unchanged; an empty lane has zero
-/// masses throughout and writes the discard slot.
+/// masses throughout and writes the discard slot. What the position correction reads comes
+/// first, together (it streams less than half of each group), and what most sweeps skip (soft
+/// contacts' softness, the spin row, the lanes' sources) last.
 struct SoftContactGroup
 {
-    std::int32_t source[kLanes];                 ///< the contact's island position, −1: empty
     std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices
     std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (discard slot)
+    bool anyRolling = false;                     ///< a lane has rolling resistance
     RealW invMassA, invIA, invMassB, invIB;      ///< 1/kg, 1/(kg·m²)
-    RealW friction, tangentSpeed;                ///< μ; the conveyor's speed (m/s)
-    RealW rollingResistance, rollingMass, rollingImpulse, totalRollingImpulse;
-    RealW softBias, softMass, softImpulse; ///< the normal rows' Softness while solving
     Vec2W normal;
     Vec2W rA[2], rB[2];      ///< lever arms at the step's start (m)
     RealW baseSeparation[2]; ///< separation − (rB − rA)·n at the start (m)
-    RealW error[2];          ///< each point's C (SeparationOf) at the bodies' last poses (m)
+    MaskW hasPoint[2];
+    RealW error[2]; ///< each point's C (SeparationOf) at the bodies' last poses (m)
     RealW normalMass[2], tangentMass[2];       ///< 1/k of each row (kg)
     RealW normalImpulse[2], tangentImpulse[2]; ///< accumulated in this sub-step (N·s)
     RealW totalNormalImpulse[2], totalTangentImpulse[2];
-    RealW k11, k12, k22;              ///< the normal rows' block K (1/kg)
-    RealW inv11, inv12, inv21, inv22; ///< K⁻¹
-    MaskW hasPoint[2];
-    MaskW block;       ///< two-point lanes whose normal rows are solved as the block
-    MaskW hasFriction; ///< lanes with μ > 0
-    MaskW valid;       ///< lanes holding a contact
-    bool anyRolling = false;
+    RealW k11, k12, k22; ///< the normal rows' block K (1/kg)
+    /// K⁻¹ = [inv11 inv12; inv12 inv22]: K is symmetric, and so is its inverse, bit for bit.
+    RealW inv11, inv12, inv22;
+    RealW friction, tangentSpeed; ///< μ; the conveyor's speed (m/s)
+    MaskW block;                  ///< two-point lanes whose normal rows are solved as the block
+    MaskW hasFriction;            ///< lanes with μ > 0
+    MaskW valid;                  ///< lanes holding a contact
+    RealW softBias, softMass, softImpulse; ///< the normal rows' Softness while solving
+    RealW rollingResistance, rollingMass, rollingImpulse, totalRollingImpulse;
+    std::int32_t source[kLanes]; ///< the contact's island position, −1: empty
 };
 
 /// The accumulated impulses of one group, kept aside by SaveImpulses.

@@ -206,11 +206,13 @@ void SoftRevoluteLanes::Correct(const SoftStepContext& context)
     m_groupsOfColour.ForEachGroupByColour(
         [groups, at, velocities](std::int32_t i, DiscardSlots discard)
         {
+            // The impulse is kept aside on the stack: a member for it would make every group
+            // a cache line longer in every sweep.
             SoftRevoluteGroup& g = groups[i];
-            g.savedImpulse = g.impulse;
+            const Vec2W saved = g.impulse;
             g.impulse = Vec2W{};
             SolveGroup(g, *at, true, velocities, discard);
-            g.impulse = g.savedImpulse;
+            g.impulse = saved;
         });
 }
 
@@ -223,11 +225,11 @@ void SoftRevoluteLanes::CloseStep(const SoftStepContext& context)
         [groups, at, velocities](std::int32_t i, DiscardSlots discard)
         {
             SoftRevoluteGroup& g = groups[i];
-            g.savedImpulse = g.impulse;
+            const Vec2W saved = g.impulse;
             g.impulse = Splat(Real(0.5)) * g.impulse;
             WarmStartGroup(g, *at->bodies, velocities, discard);
             SolveGroup(g, *at, false, velocities, discard);
-            g.impulse = g.savedImpulse;
+            g.impulse = saved;
         });
 }
 

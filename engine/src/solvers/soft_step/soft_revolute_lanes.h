@@ -30,10 +30,9 @@ struct SoftRevoluteGroup
     std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices
     std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (discard slot)
     RealW invMassA, invIA, invMassB, invIB;      ///< 1/kg, 1/(kg·m²)
-    Vec2W rA0, rB0;     ///< anchors from the centres of mass at the step's start (m)
-    Vec2W deltaCenter;  ///< cB − cA at the step's start (m)
-    Vec2W impulse;      ///< accumulated point impulse of the sub-step (N·s)
-    Vec2W savedImpulse; ///< kept aside while the closing half kick is solved
+    Vec2W rA0, rB0;    ///< anchors from the centres of mass at the step's start (m)
+    Vec2W deltaCenter; ///< cB − cA at the step's start (m)
+    Vec2W impulse;     ///< accumulated point impulse of the sub-step (N·s)
 };
 
 class SoftRevoluteLanes
