@@ -453,26 +453,8 @@ void SoftContactLanes::RestoreImpulses()
 
 void SoftContactLanes::Collect(std::span<SoftContact> contacts) const
 {
-    // Each lane writes its own contact.
-    m_groupsOfColour.ForEachGroup(
-        [&](std::int32_t i)
-        {
-            const SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
-            for (int l = 0; l < kLanes && g.source[l] >= 0; ++l)
-            {
-                SoftContact& c = contacts[g.source[l]];
-                c.rollingImpulse = g.rollingImpulse[l];
-                c.totalRollingImpulse = g.totalRollingImpulse[l];
-                for (int j = 0; j < c.pointCount; ++j)
-                {
-                    SoftContactPoint& p = c.points[j];
-                    p.normalImpulse = g.normalImpulse[j][l];
-                    p.tangentImpulse = g.tangentImpulse[j][l];
-                    p.totalNormalImpulse = g.totalNormalImpulse[j][l];
-                    p.totalTangentImpulse = g.totalTangentImpulse[j][l];
-                }
-            }
-        });
+    ForEachLaneImpulses([&](std::int32_t k, const SoftContactImpulses& impulses)
+                        { SetImpulses(contacts[k], impulses); });
 }
 
 } // namespace meff::detail

@@ -95,6 +95,14 @@ struct SoftGroupImpulses
     RealW normal[2], tangent[2], rolling;
 };
 
+/// A contact's impulses at the step's end (N·s; rolling: N·m·s): its points' last sub-step's
+/// (next step's warm start) and the step's totals, as a lane or a scalar row holds them.
+struct SoftContactImpulses
+{
+    Real normal[2], tangent[2], totalNormal[2], totalTangent[2];
+    Real rolling, totalRolling;
+};
+
 class SoftContactLanes
 {
   public:
@@ -122,8 +130,32 @@ class SoftContactLanes
     void RestoreImpulses();
     /// Copies the lanes' impulses and totals back into their contacts.
     void Collect(std::span<SoftContact> contacts) const;
+    /// Calls f(k, impulses) with each lane's contact (its island position k) and impulses, on
+    /// the threads: f may write what belongs to contact k alone.
+    template <typename F>
+    void ForEachLaneImpulses(F&& f) const
+    {
+        m_groupsOfColour.ForEachGroup(
+            [&](std::int32_t i)
+            {
+                const SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
+                for (int l = 0; l < kLanes && g.source[l] >= 0; ++l)
+                {
+                    f(g.source[l], LaneImpulses(g, l));
+                }
+            });
+    }
 
   private:
+    static SoftContactImpulses LaneImpulses(const SoftContactGroup& g, int l)
+    {
+        return {{g.normalImpulse[0][l], g.normalImpulse[1][l]},
+                {g.tangentImpulse[0][l], g.tangentImpulse[1][l]},
+                {g.totalNormalImpulse[0][l], g.totalNormalImpulse[1][l]},
+                {g.totalTangentImpulse[0][l], g.totalTangentImpulse[1][l]},
+                g.rollingImpulse[l],
+                g.totalRollingImpulse[l]};
+    }
     /// Packs group i from its colour's contacts.
     void PackGroup(std::int32_t i, std::span<const SoftContact> contacts);
     ConstraintColouring m_colouring;

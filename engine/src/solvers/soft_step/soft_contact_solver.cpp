@@ -362,10 +362,14 @@ void SoftContactSolver::CorrectContact(const SoftContact& c, const SoftStepConte
 
 void SoftContactSolver::Restitution(const SoftStepContext& context)
 {
+    // Without restitution the lanes' impulses stay in the lanes, and Store reads them there:
+    // copying them into the contacts first would write every contact once more.
+    m_lanesCollected = m_anyRestitution;
     if (!m_anyRestitution)
     {
         return;
     }
+    m_lanes.Collect(m_contacts);
     for (SoftContact& c : m_contacts)
     {
         if (c.restitution == 0)
@@ -437,31 +441,57 @@ void SoftContactSolver::RestoreImpulses()
     }
 }
 
-void SoftContactSolver::CollectLanes()
+void SetImpulses(SoftContact& c, const SoftContactImpulses& impulses)
 {
-    m_lanes.Collect(m_contacts);
+    c.rollingImpulse = impulses.rolling;
+    c.totalRollingImpulse = impulses.totalRolling;
+    for (int j = 0; j < c.pointCount; ++j)
+    {
+        SoftContactPoint& p = c.points[j];
+        p.normalImpulse = impulses.normal[j];
+        p.tangentImpulse = impulses.tangent[j];
+        p.totalNormalImpulse = impulses.totalNormal[j];
+        p.totalTangentImpulse = impulses.totalTangent[j];
+    }
 }
 
 namespace
 {
 
-/// Contact c's sub-step impulses × perStep into its manifold (next step's warm start), and its
-/// step's totals into `solved`.
-void StoreContact(const SoftContact& c, Real perStep, Contact& contact, SolvedContact& solved)
+/// The impulses a scalar row holds (the overflow's, or every contact's once collected).
+SoftContactImpulses ImpulsesOf(const SoftContact& c)
 {
-    solved.contactIndex = c.contactIndex;
-    solved.pointCount = c.pointCount;
-    solved.rollingImpulse = c.totalRollingImpulse;
-    contact.rollingImpulse = perStep * c.rollingImpulse;
-    Manifold& manifold = contact.manifold;
+    SoftContactImpulses impulses{};
     for (int j = 0; j < c.pointCount; ++j)
     {
         const SoftContactPoint& p = c.points[j];
-        manifold.points[j].normalImpulse = perStep * p.normalImpulse;
-        manifold.points[j].tangentImpulse = perStep * p.tangentImpulse;
-        solved.normalImpulse[j] = p.totalNormalImpulse;
-        solved.tangentImpulse[j] = p.totalTangentImpulse;
-        solved.normalVelocity[j] = p.relativeVelocity;
+        impulses.normal[j] = p.normalImpulse;
+        impulses.tangent[j] = p.tangentImpulse;
+        impulses.totalNormal[j] = p.totalNormalImpulse;
+        impulses.totalTangent[j] = p.totalTangentImpulse;
+    }
+    impulses.rolling = c.rollingImpulse;
+    impulses.totalRolling = c.totalRollingImpulse;
+    return impulses;
+}
+
+/// Contact c's sub-step impulses × perStep into its manifold (next step's warm start), and its
+/// step's totals into `solved`.
+void StoreContact(const SoftContact& c, const SoftContactImpulses& impulses, Real perStep,
+                  Contact& contact, SolvedContact& solved)
+{
+    solved.contactIndex = c.contactIndex;
+    solved.pointCount = c.pointCount;
+    solved.rollingImpulse = impulses.totalRolling;
+    contact.rollingImpulse = perStep * impulses.rolling;
+    Manifold& manifold = contact.manifold;
+    for (int j = 0; j < c.pointCount; ++j)
+    {
+        manifold.points[j].normalImpulse = perStep * impulses.normal[j];
+        manifold.points[j].tangentImpulse = perStep * impulses.tangent[j];
+        solved.normalImpulse[j] = impulses.totalNormal[j];
+        solved.tangentImpulse[j] = impulses.totalTangent[j];
+        solved.normalVelocity[j] = c.points[j].relativeVelocity;
     }
 }
 
@@ -471,13 +501,26 @@ void SoftContactSolver::Store(std::span<Contact> contacts, const SoftStepContext
 {
     m_solved.resize(m_contacts.size());
     const Real perStep = Real(context.substeps);
+    const auto store = [&](std::int32_t k, const SoftContactImpulses& impulses)
+    {
+        const SoftContact& c = m_contacts[static_cast<std::size_t>(k)];
+        StoreContact(c, impulses, perStep, contacts[c.contactIndex],
+                     m_solved[static_cast<std::size_t>(k)]);
+    };
     // Each row writes its own contact and its own SolvedContact.
-    ForEachIndex(context.tasks, static_cast<int>(m_contacts.size()), kMinSoftContactsPerTask,
-                 [&](int k)
+    if (m_lanesCollected)
+    {
+        ForEachIndex(context.tasks, static_cast<int>(m_contacts.size()), kMinSoftContactsPerTask,
+                     [&](int k) { store(k, ImpulsesOf(m_contacts[static_cast<std::size_t>(k)])); });
+        return;
+    }
+    m_lanes.ForEachLaneImpulses(store);
+    const std::span<const std::int32_t> overflow = m_lanes.Overflow();
+    ForEachIndex(context.tasks, static_cast<int>(overflow.size()), kMinSoftContactsPerTask,
+                 [&](int o)
                  {
-                     const SoftContact& c = m_contacts[static_cast<std::size_t>(k)];
-                     StoreContact(c, perStep, contacts[c.contactIndex],
-                                  m_solved[static_cast<std::size_t>(k)]);
+                     const std::int32_t k = overflow[static_cast<std::size_t>(o)];
+                     store(k, ImpulsesOf(m_contacts[static_cast<std::size_t>(k)]));
                  });
 }
 

@@ -75,6 +75,9 @@ struct SoftContact
     std::int32_t contactIndex = 0;
 };
 
+/// Contact c's impulses (SoftContactImpulses) set to `impulses`, its points' only.
+void SetImpulses(SoftContact& c, const SoftContactImpulses& impulses);
+
 class SoftContactSolver
 {
   public:
@@ -92,6 +95,9 @@ class SoftContactSolver
     void CorrectPositions(const SoftStepContext& context);
     /// Call when the island's positions were integrated (SoftContactLanes::BodiesMoved).
     void BodiesMoved() { m_lanes.BodiesMoved(); }
+    /// Restitution after the sub-steps: an approaching point that was pushed is driven to
+    /// −e·vn, contact after contact in island order (first copying the lanes' impulses into the
+    /// contacts, when a contact has restitution).
     void Restitution(const SoftStepContext& context);
     /// Scales the accumulated impulses (a half kick's are half a sub-step's).
     void ScaleImpulses(Real factor);
@@ -99,11 +105,10 @@ class SoftContactSolver
     /// solved (its impulses count towards the step's totals, not towards the warm start).
     void SaveImpulses();
     void RestoreImpulses();
-    /// Copies the lanes' impulses into the contacts' rows: call after the sub-steps, before
-    /// Restitution and Store.
-    void CollectLanes();
     /// Writes the sub-step impulses × substeps into the manifolds (per-step impulses, as the
-    /// other back ends store them: next step's warm start) and fills SolvedContacts().
+    /// other back ends store them: next step's warm start) and fills SolvedContacts(), after
+    /// Restitution: the coloured contacts' impulses straight from the lanes unless Restitution
+    /// copied them into the contacts.
     void Store(std::span<Contact> contacts, const SoftStepContext& context);
 
     /// Whether every contact is solved row by row (the island is too small for the lanes).
@@ -134,7 +139,9 @@ class SoftContactSolver
     std::vector<Vec2> m_saved;
     std::vector<Real> m_savedRolling;
     bool m_anyHitEvents = false;
-    bool m_anyRestitution = false;             ///< whether a contact's restitution is not zero
+    bool m_anyRestitution = false; ///< whether a contact's restitution is not zero
+    bool m_lanesCollected =
+        false; ///< whether the contacts hold their lanes' impulses (Restitution)
     std::vector<std::uint8_t> m_needsOfWorker; ///< Prepare: per worker, its contacts' ContactNeeds
 };
 

@@ -98,7 +98,6 @@ void SoftStepSolver::SolveIsland(SolverWorld& world, Island& island, const StepC
         SubStep(i == 0, step);
     }
     CloseStep();
-    m_contacts.CollectLanes();
     m_contacts.Restitution(m_context);
     m_contacts.Store(world.contacts, m_context);
     for (Joint* joint : m_joints)
