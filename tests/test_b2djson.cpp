@@ -4,6 +4,7 @@
 // field for field, the level alone (without meff's authoring forms) builds the same world bit
 // for bit, hand-written levels (tests/b2djson/) import to exactly the values they spell in each
 // of the format's conventions, and bad levels are refused naming the file and the JSON path.
+#include "sample_scenes.h"
 #include "meff/b2djson.h"
 #include "meff/scene.h"
 
@@ -24,24 +25,6 @@ using namespace meff;
 
 namespace
 {
-
-std::vector<std::string> SampleScenes()
-{
-    std::vector<std::string> paths;
-    for (const char* folder : {"samples/scenes", "samples/extreme"})
-    {
-        for (const auto& entry :
-             std::filesystem::directory_iterator(std::string(MEFF_SOURCE_DIR) + "/" + folder))
-        {
-            if (entry.path().extension() == ".json")
-            {
-                paths.push_back(entry.path().string());
-            }
-        }
-    }
-    std::sort(paths.begin(), paths.end());
-    return paths;
-}
 
 std::string Level(const std::string& name)
 {
@@ -111,7 +94,7 @@ float Bits(std::uint32_t bits)
 
 TEST_CASE("b2dJson round trip: every sample comes back as the same scene")
 {
-    const std::vector<std::string> paths = SampleScenes();
+    const std::vector<std::string> paths = SampleScenes({"samples/scenes", "samples/extreme"});
     REQUIRE(paths.size() >= 40); // samples/scenes and samples/extreme
     for (const std::string& path : paths)
     {
@@ -159,7 +142,7 @@ TEST_CASE("b2dJson round trip: the level's joint fields build the same world, bi
     // step. (A box without meff.box comes back as a polygon, whose centroid and inertia the
     // engine computes by the general formula, as Box2D's b2PolygonShape::Set does: the same
     // to float round-off, not to the bit.)
-    for (const std::string& path : SampleScenes())
+    for (const std::string& path : SampleScenes({"samples/scenes", "samples/extreme"}))
     {
         INFO(path);
         const Scene original = LoadScene(path);

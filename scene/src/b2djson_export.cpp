@@ -7,6 +7,7 @@
 // (docs/b2djson.md).
 #include "b2djson_values.h"
 #include "joint_frame.h"
+#include "scene_sections.h"
 
 #include "meff/b2djson.h"
 #include "meff/box2d_v3_features.h"
@@ -26,11 +27,6 @@ using b2djson_detail::WriteVector;
 
 namespace
 {
-
-Json Pair(SceneVec2 v)
-{
-    return Json::array({v.x, v.y});
-}
 
 SceneVec2 FromEngine(Vec2 v)
 {
@@ -93,28 +89,28 @@ class Exporter
                 Property(custom, name, "bool", value);
             }
         }
-        if (const std::optional<Json> soft = SoftStep())
+        if (const std::optional<Json> soft = scene_detail::SoftStepJson(solver.softStep))
         {
             Property(custom, "meff.soft_step", "string", soft->dump());
         }
-        if (const std::optional<Json> validate = Validate())
+        if (const std::optional<Json> validate =
+                scene_detail::ValidateJson(m_scene.tolerances, m_scene.validation))
         {
             Property(custom, "meff.validate", "string", validate->dump());
         }
-        if (const std::optional<Json> plausibility = Plausibility())
+        if (const std::optional<Json> plausibility =
+                scene_detail::PlausibilityJson(m_scene.plausibility))
         {
             Property(custom, "meff.plausibility", "string", plausibility->dump());
         }
         if (m_scene.camera)
         {
-            const Json render = {
-                {"camera",
-                 {{"center", Pair(m_scene.camera->center)}, {"height", m_scene.camera->height}}}};
-            Property(custom, "meff.render", "string", render.dump());
+            Property(custom, "meff.render", "string",
+                     scene_detail::RenderJson(*m_scene.camera).dump());
         }
         if (m_scene.analytic)
         {
-            Property(custom, "meff.analytic", "string", Analytic().dump());
+            Property(custom, "meff.analytic", "string", scene_detail::AnalyticJson(m_scene).dump());
         }
         level["customProperties"] = custom;
 
@@ -140,159 +136,6 @@ class Exporter
     {
         list.push_back({{"name", name},
                         {type, value.is_number_float() ? Number(value.get<double>()) : value}});
-    }
-
-    /// world.soft_step (SoftStepSettings) with the members that differ from the defaults, or
-    /// nothing when none does. The Real members go as the doubles they convert to, which the
-    /// loader turns back into the same floats.
-    std::optional<Json> SoftStep() const
-    {
-        const SoftStepSettings& soft = m_scene.world.solver.softStep;
-        const SoftStepSettings defaults;
-        Json out = Json::object();
-        if (soft.substeps != defaults.substeps)
-        {
-            out["substeps"] = soft.substeps;
-        }
-        if (soft.relaxIterations != defaults.relaxIterations)
-        {
-            out["relax_iterations"] = soft.relaxIterations;
-        }
-        if (soft.contacts != defaults.contacts)
-        {
-            out["contacts"] = soft.contacts == SoftContactModel::Rigid ? "rigid" : "soft";
-        }
-        if (soft.jointTrees != defaults.jointTrees)
-        {
-            out["joint_trees"] = soft.jointTrees;
-        }
-        const std::tuple<const char*, Real, Real> numbers[] = {
-            {"contact_correction", soft.contactCorrection, defaults.contactCorrection},
-            {"contact_hertz", soft.contactHertz, defaults.contactHertz},
-            {"contact_damping_ratio", soft.contactDampingRatio, defaults.contactDampingRatio},
-            {"max_push_out_speed", soft.maxPushOutSpeed, defaults.maxPushOutSpeed},
-            {"joint_hertz", soft.jointHertz, defaults.jointHertz},
-            {"joint_damping_ratio", soft.jointDampingRatio, defaults.jointDampingRatio}};
-        for (const auto& [name, value, fallback] : numbers)
-        {
-            if (value != fallback)
-            {
-                out[name] = double(value);
-            }
-        }
-        if (out.empty())
-        {
-            return std::nullopt;
-        }
-        return out;
-    }
-
-    /// The "validate" section when anything in it differs from the defaults.
-    /// The scene's "plausibility" section, each field that differs from its default (none:
-    /// nothing to carry).
-    std::optional<Json> Plausibility() const
-    {
-        const ScenePlausibility& p = m_scene.plausibility;
-        const ScenePlausibility defaults;
-        if (p == defaults)
-        {
-            return std::nullopt;
-        }
-        Json out = Json::object();
-        const std::tuple<const char*, double, double> thresholds[] = {
-            {"energy_gain", p.energyGain, defaults.energyGain},
-            {"energy_lift", p.energyLift, defaults.energyLift},
-            {"energy_speed", p.energySpeed, defaults.energySpeed},
-            {"rebound_speed", p.reboundSpeed, defaults.reboundSpeed},
-            {"rebound_approach", p.reboundApproach, defaults.reboundApproach},
-            {"penetration", p.penetration, defaults.penetration},
-            {"joint_gap", p.jointGap, defaults.jointGap}};
-        for (const auto& [name, value, fallback] : thresholds)
-        {
-            if (value != fallback)
-            {
-                out[name] = value;
-            }
-        }
-        if (p.maxSpeed)
-        {
-            out["max_speed"] = *p.maxSpeed;
-        }
-        if (p.maxRise)
-        {
-            out["max_rise"] = *p.maxRise;
-        }
-        if (p.rest)
-        {
-            out["rest"] = {{"after", p.rest->after}, {"speed", p.rest->speed}};
-        }
-        return out;
-    }
-
-    std::optional<Json> Validate() const
-    {
-        const SceneTolerances& t = m_scene.tolerances;
-        const SceneValidation& v = m_scene.validation;
-        const SceneTolerances defaults;
-        Json validate = Json::object();
-        if (t.position != defaults.position || t.angle != defaults.angle ||
-            t.velocity != defaults.velocity || t.impulse != defaults.impulse ||
-            t.impulseRelative != defaults.impulseRelative)
-        {
-            validate["tolerances"] = {{"position", t.position},
-                                      {"angle", t.angle},
-                                      {"velocity", t.velocity},
-                                      {"impulse", t.impulse},
-                                      {"impulse_relative", t.impulseRelative}};
-        }
-        if (v.chaotic)
-        {
-            validate["chaotic"] = true;
-            validate["horizon_frames"] = v.horizonFrames;
-        }
-        if (v.settle)
-        {
-            Json settle = {{"position", v.settle->position}};
-            if (v.settle->angle)
-            {
-                settle["angle"] = *v.settle->angle;
-            }
-            if (v.settle->minimumHeight)
-            {
-                settle["min_height"] = *v.settle->minimumHeight;
-            }
-            validate["settle"] = settle;
-        }
-        if (validate.empty())
-        {
-            return std::nullopt;
-        }
-        return validate;
-    }
-
-    Json Analytic() const
-    {
-        const SceneAnalytic& analytic = *m_scene.analytic;
-        static const char* const kKinds[] = {"pendulum", "cradle", "bounce"};
-        Json out = {{"kind", kKinds[int(analytic.kind)]}};
-        switch (analytic.kind)
-        {
-        case SceneAnalyticKind::Pendulum:
-            out["joint"] = m_scene.joints.at(analytic.joints.at(0)).name;
-            break;
-        case SceneAnalyticKind::Cradle:
-            out["joints"] = Json::array();
-            for (const std::size_t joint : analytic.joints)
-            {
-                out["joints"].push_back(m_scene.joints.at(joint).name);
-            }
-            break;
-        case SceneAnalyticKind::Bounce:
-            out["body"] = m_scene.bodies.at(analytic.body).name;
-            out["contact_height"] = analytic.contactHeight;
-            break;
-        }
-        return out;
     }
 
     Json Body(std::size_t index) const
@@ -422,7 +265,7 @@ class Exporter
             out["polygon"] = {{"vertices", Points(corners)}};
             const Json authored = {{"half_width", shape.halfWidth},
                                    {"half_height", shape.halfHeight},
-                                   {"center", Pair(shape.center)},
+                                   {"center", scene_detail::PairJson(shape.center)},
                                    {"angle", shape.angle}};
             Property(custom, "meff.box", "string", authored.dump());
             break;
@@ -643,18 +486,18 @@ class Exporter
             {
                 if (joint.type == JointType::Distance)
                 {
-                    form["anchor_a"] = Pair(joint.anchorA);
-                    form["anchor_b"] = Pair(joint.anchorB);
+                    form["anchor_a"] = scene_detail::PairJson(joint.anchorA);
+                    form["anchor_b"] = scene_detail::PairJson(joint.anchorB);
                 }
                 else
                 {
-                    form["anchor"] = Pair(joint.anchor);
+                    form["anchor"] = scene_detail::PairJson(joint.anchor);
                 }
             }
             if ((joint.type == JointType::Prismatic || joint.type == JointType::Wheel) &&
                 !joint.localAxisA)
             {
-                form["axis"] = Pair(joint.axis);
+                form["axis"] = scene_detail::PairJson(joint.axis);
             }
             if (joint.type != JointType::Wheel && joint.type != JointType::Distance &&
                 joint.type != JointType::Friction && !joint.referenceAngle)

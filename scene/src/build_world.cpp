@@ -278,6 +278,10 @@ BuiltCharacter MakeCharacter(const BuiltScene& built, const Scene& scene,
 BuiltScene BuildWorld(const Scene& scene)
 {
     BuiltScene built{World(MakeWorldDef(scene.world))};
+    if (scene.world.lastStepInverseDt != 0)
+    {
+        built.world.SetLastStepInverseDt(Real(scene.world.lastStepInverseDt));
+    }
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
     {
         const SceneBody& body = scene.bodies[i];
@@ -319,6 +323,12 @@ BuiltScene BuildWorld(const Scene& scene)
         try
         {
             const JointId id = CreateJoint(built, scene.joints[j]);
+            if (!scene.joints[j].impulses.empty())
+            {
+                const std::vector<Real> impulses(scene.joints[j].impulses.begin(),
+                                                 scene.joints[j].impulses.end());
+                built.world.SetJointImpulses(id, impulses);
+            }
             built.joints.push_back(id);
             built.jointByName.emplace(scene.joints[j].name, id);
         }

@@ -498,6 +498,37 @@ std::optional<std::vector<SceneVec2>> ObjectReader::VectorList(std::string_view 
     return points;
 }
 
+std::optional<std::vector<double>> ObjectReader::NumberList(std::string_view key)
+{
+    const Json* list = Array(key, true);
+    if (list == nullptr)
+    {
+        return std::nullopt;
+    }
+    std::vector<double> numbers;
+    bool allValid = true;
+    for (std::size_t i = 0; i < list->size(); ++i)
+    {
+        const Json& value = (*list)[i];
+        if (value.is_number() && !LooksNonFinite(value) && FitsReal(value.get<double>()))
+        {
+            numbers.push_back(value.get<double>());
+        }
+        else
+        {
+            m_diagnostics.Report(
+                IndexPath(PathOf(key), i),
+                "must be a finite number (at most " + MaxRealText() + " in magnitude)", value);
+            allValid = false;
+        }
+    }
+    if (!allValid)
+    {
+        return std::nullopt;
+    }
+    return numbers;
+}
+
 const Json* ObjectReader::Array(std::string_view key, bool required)
 {
     const Json* value = Find(key);
@@ -578,6 +609,32 @@ bool CheckInRange(ObjectReader& reader, std::string_view key, double value, doub
     }
     reader.Fail(key, "must be in [" + FormatNumber(low) + ", " + FormatNumber(high) + "]");
     return false;
+}
+
+const char* JointTypeName(JointType type)
+{
+    static const char* const kNames[] = {"revolute", "distance", "prismatic", "wheel",  "weld",
+                                         "motor",    "mouse",    "friction",  "pulley", "gear"};
+    return kNames[int(type)];
+}
+
+bool IsPlainName(const std::string& name)
+{
+    constexpr std::size_t kMaxNameLength = 64;
+    if (name.empty() || name.size() > kMaxNameLength)
+    {
+        return false;
+    }
+    for (const char c : name)
+    {
+        const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                           (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+        if (!plain)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 } // namespace meff::scene_detail

@@ -47,6 +47,11 @@ class Diagnostics
 
 /// A JSON value as shown after "got": compact, and shortened when long.
 std::string Describe(const Json& value);
+/// The scene file's name of a joint type ("revolute", ...).
+const char* JointTypeName(JointType type);
+/// A name as scene files allow it (bodies, joints, characters): 1 to 64 characters from
+/// A-Z a-z 0-9 _ - . (names end up unquoted in CSV columns and in file names).
+bool IsPlainName(const std::string& name);
 /// A number as shown in messages: the shortest text that reads back as the same double.
 std::string FormatNumber(double value);
 /// The same for an engine scalar, in its own precision (0.0025f is "0.0025").
@@ -84,6 +89,9 @@ class ObjectReader
 
     /// The field's value, or nullptr when absent. Marks the key as known.
     const Json* Find(std::string_view key);
+    /// Whether the object has the field, without marking it as known: for fields that only
+    /// saved worlds write (joints' "impulses"), which the unknown-field hint does not offer.
+    bool Has(std::string_view key) const { return m_object.contains(key); }
     /// Reports "PATH.KEY: MESSAGE, got VALUE" (without ", got" when the field is absent).
     void Fail(std::string_view key, const std::string& message);
 
@@ -95,6 +103,9 @@ class ObjectReader
     std::optional<SceneVec2> Vector(std::string_view key, std::optional<SceneVec2> fallback);
     /// A list of [x, y] points; reports a wrong element type once, for the whole list.
     std::optional<std::vector<SceneVec2>> VectorList(std::string_view key);
+    /// A required list of numbers, each finite and within the engine's scalar; reports each
+    /// bad element at its index.
+    std::optional<std::vector<double>> NumberList(std::string_view key);
     /// An array field: nullptr (and a report unless `required` is false) when absent or not an
     /// array.
     const Json* Array(std::string_view key, bool required);

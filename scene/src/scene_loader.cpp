@@ -27,33 +27,13 @@ using scene_detail::CheckNonNegative;
 using scene_detail::CheckPositive;
 using scene_detail::Diagnostics;
 using scene_detail::IndexPath;
+using scene_detail::IsPlainName;
 using scene_detail::Json;
 using scene_detail::ObjectReader;
 using scene_detail::ToEngine;
 
 namespace
 {
-
-// Names end up unquoted in CSV columns and in file names, so keep them plain.
-constexpr std::size_t kMaxNameLength = 64;
-
-bool IsPlainName(const std::string& name)
-{
-    if (name.empty() || name.size() > kMaxNameLength)
-    {
-        return false;
-    }
-    for (const char c : name)
-    {
-        const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                           (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
-        if (!plain)
-        {
-            return false;
-        }
-    }
-    return true;
-}
 
 template <typename T, typename U>
 void Assign(T& target, const std::optional<U>& value)
@@ -222,6 +202,8 @@ void ReadWorld(ObjectReader& reader, SceneWorldSettings& world)
     }
     Assign(world.allowSleep, reader.Boolean("allow_sleep", defaults.allowSleep));
     Assign(world.continuous, reader.Boolean("continuous", defaults.continuous));
+    Assign(world.lastStepInverseDt,
+           ReadNonNegative(reader, "last_step_inv_dt", defaults.lastStepInverseDt));
     reader.Finish();
 }
 
@@ -810,6 +792,28 @@ void ReadWeldFields(ObjectReader& reader, SceneJoint& joint)
     Assign(joint.dampingRatio, ReadNonNegative(reader, "damping_ratio", 0.0));
 }
 
+/// "impulses": a saved joint's warm start (World::GetJointImpulses), as many as its type has.
+void ReadJointImpulses(ObjectReader& reader, SceneJoint& joint)
+{
+    if (!reader.Has("impulses"))
+    {
+        return;
+    }
+    const std::optional<std::vector<double>> impulses = reader.NumberList("impulses");
+    if (!impulses)
+    {
+        return;
+    }
+    const std::size_t count = std::size_t(JointImpulseCount(joint.type));
+    if (impulses->size() != count)
+    {
+        reader.Fail("impulses", "a " + std::string(scene_detail::JointTypeName(joint.type)) +
+                                    " joint has " + std::to_string(count) + " impulses");
+        return;
+    }
+    joint.impulses = *impulses;
+}
+
 void ReadMotorFields(ObjectReader& reader, SceneJoint& joint)
 {
     const SceneJoint defaults;
@@ -966,6 +970,7 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
         joint.type = JointType::Gear;
         ReadGearFields(reader, scene, self, joint);
         Assign(joint.collideConnected, reader.Boolean("collide_connected", false));
+        ReadJointImpulses(reader, joint);
         reader.Finish();
         return;
     }
@@ -1034,6 +1039,7 @@ void ReadJoint(ObjectReader& reader, const Scene& scene,
     case JointType::Gear:
         break; // read above
     }
+    ReadJointImpulses(reader, joint);
     reader.Finish();
 }
 

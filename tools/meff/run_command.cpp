@@ -29,6 +29,8 @@ struct RunOptions
     std::string trajectoryPath;
     std::string contactsPath;
     std::string jointsPath;
+    std::string savePath;      ///< --save: the world as a scene file
+    std::optional<int> saveAt; ///< --save-at: after this frame (default: the last)
     int threads = 1;
     std::optional<SolverKind> solver; ///< instead of the scene's world.solver
 };
@@ -54,6 +56,7 @@ class RunOutputs
         m_contacts = Open(options.contactsPath, "frame,body_a,body_b,point,px,py,nx,ny,"
                                                 "normal_impulse,tangent_impulse\n");
         m_joints = Open(options.jointsPath, "frame,joint,fx,fy,torque\n");
+        m_save = Open(options.savePath, "");
     }
 
     /// Throws std::runtime_error as soon as an output can no longer be written (a closed
@@ -68,6 +71,21 @@ class RunOutputs
             WriteJoints(frame);
         }
         ForEach([](OutputFile& file) { file.CheckWrites(); });
+    }
+
+    /// --save: the world as it is after `frame` as a scene file whose frames are the run's
+    /// `frames` left, to replay from there. Throws SceneError (a scene with characters).
+    void SaveWorld(int frame, int frames)
+    {
+        if (!m_save)
+        {
+            return;
+        }
+        Scene saved = SceneFromBuilt(m_built, m_scene);
+        saved.world.frames = frames - frame;
+        errno = 0;
+        std::fputs(WriteScene(saved).c_str(), m_save->Stream());
+        m_save->CheckWrites();
     }
 
     void Commit()
@@ -87,7 +105,8 @@ class RunOutputs
     template <typename Function>
     void ForEach(Function function)
     {
-        for (OutputFile* file : {m_trajectory.get(), m_contacts.get(), m_joints.get()})
+        for (OutputFile* file :
+             {m_trajectory.get(), m_contacts.get(), m_joints.get(), m_save.get()})
         {
             if (file != nullptr)
             {
@@ -189,6 +208,7 @@ class RunOutputs
     std::unique_ptr<OutputFile> m_trajectory;
     std::unique_ptr<OutputFile> m_contacts;
     std::unique_ptr<OutputFile> m_joints;
+    std::unique_ptr<OutputFile> m_save;
 };
 
 /// Two options naming one file (through links, or both standard output) would race to rename
@@ -197,7 +217,7 @@ bool OutputsAreDistinct(const RunOptions& options)
 {
     std::vector<const std::string*> seen;
     for (const std::string* path :
-         {&options.trajectoryPath, &options.contactsPath, &options.jointsPath})
+         {&options.trajectoryPath, &options.contactsPath, &options.jointsPath, &options.savePath})
     {
         if (path->empty())
         {
@@ -228,6 +248,21 @@ int Run(const RunOptions& options)
     }
     ApplySolverOption(options.solver, *scene);
     const int frames = options.frames.value_or(scene->world.frames);
+    const int saveAt = options.saveAt.value_or(frames);
+    if (saveAt > frames)
+    {
+        std::fprintf(stderr, "meff run: --save-at %d: after the run's last frame (%d)\n", saveAt,
+                     frames);
+        return kExitBadInput;
+    }
+    if (!options.savePath.empty() && !scene->characters.empty())
+    {
+        std::fprintf(stderr,
+                     "%s: characters: --save cannot save a scene with characters (the character "
+                     "mover's state is not in the world)\n",
+                     options.scenePath.c_str());
+        return kExitBadInput;
+    }
 
     std::optional<BuiltScene> built = BuildWorldOrReport(*scene);
     if (!built)
@@ -254,8 +289,16 @@ int Run(const RunOptions& options)
         outputs->WriteFrame(0);
         for (int frame = 1; frame <= frames; ++frame)
         {
+            if (frame - 1 == saveAt)
+            {
+                outputs->SaveWorld(saveAt, frames);
+            }
             built->Step(dt);
             outputs->WriteFrame(frame);
+        }
+        if (saveAt == frames)
+        {
+            outputs->SaveWorld(saveAt, frames);
         }
     }
     catch (const SimulationError& error)
@@ -495,6 +538,15 @@ Command AddRunCommand(CLI::App& parent)
                     "Write frame,joint,fx,fy,torque: each joint's reaction force (N) and torque "
                     "(N·m) on body_b after each step, i.e. its impulse divided by dt")
         ->type_name("OUT.csv");
+    app->add_option("--save", options->savePath,
+                    "Write the world as it is after frame --save-at as a meff scene file, to "
+                    "replay from there (its frames are the frames left; docs/api-guide.md, "
+                    "\"Saving a world as a scene\", says what replays bit for bit)")
+        ->type_name("OUT.json");
+    app->add_option("--save-at", options->saveAt,
+                    "The frame after which --save saves the world (default: the last)")
+        ->type_name("FRAME")
+        ->check(CLI::Range(0, INT_MAX));
     AddThreadsOption(*app, options->threads, "Threads to step the world on");
     AddSolverOption(*app, options->solver);
     return {app, [options] { return Run(*options); }};

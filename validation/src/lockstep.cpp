@@ -335,7 +335,23 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
     }
     result.notes = MirrorNotes(scene, options, unmirrored);
 
-    BuiltScene built = BuildWorld(scene);
+    // Box2D 2.4.1 cannot be given a saved world's warm start (its joints' "impulses", the
+    // last step's 1/dt): both engines start without it.
+    Scene cold = scene;
+    bool warmStart = cold.world.lastStepInverseDt != 0;
+    cold.world.lastStepInverseDt = 0;
+    for (SceneJoint& joint : cold.joints)
+    {
+        warmStart = warmStart || !joint.impulses.empty();
+        joint.impulses.clear();
+    }
+    if (warmStart)
+    {
+        result.notes.emplace_back("the saved warm start (joints' \"impulses\", "
+                                  "world.last_step_inv_dt) is left out: Box2D 2.4.1 cannot be "
+                                  "given it, so both engines start without it");
+    }
+    BuiltScene built = BuildWorld(cold);
     SolverSettings solver = built.world.GetSolverSettings();
     solver.blockSolver = result.blockSolver;
     solver.velocityIterations = result.meffVelocityIterations;

@@ -9,6 +9,7 @@
 #include "meff/math.h"
 
 #include <cstdint>
+#include <variant>
 
 namespace meff
 {
@@ -257,5 +258,20 @@ struct GearJointDef
     Real ratio = 1;                ///< dimensionless (rad/rad, m/rad or m/m), finite; default 1
     bool collideConnected = false; ///< may the gear's bodies A and B collide; default false
 };
+
+/// How many accumulated impulses a joint of this type has (World::GetJointImpulses lists
+/// them): revolute and prismatic 6, wheel 5, distance, weld, motor and friction 3, mouse 2,
+/// pulley and gear 1.
+constexpr int JointImpulseCount(JointType type)
+{
+    constexpr int kCounts[] = {6, 3, 6, 5, 3, 3, 2, 3, 1, 1};
+    return kCounts[int(type)];
+}
+
+/// Any joint's definition, the alternative of its JointType (in the enumeration's order), as
+/// World::GetJointDef gives it.
+using AnyJointDef =
+    std::variant<RevoluteJointDef, DistanceJointDef, PrismaticJointDef, WheelJointDef, WeldJointDef,
+                 MotorJointDef, MouseJointDef, FrictionJointDef, PulleyJointDef, GearJointDef>;
 
 } // namespace meff

@@ -34,6 +34,9 @@ struct Tolerances
     /// Smallest approach speed that makes a contact hit event (m/s; Box2D v3's
     /// hitEventThreshold). A speed, but in length units per second, so it scales with them.
     Real hitEventThreshold = 1;
+
+    /// Every member equal.
+    friend bool operator==(const Tolerances&, const Tolerances&) = default;
 };
 
 /// Tolerances for a world measured in `lengthUnitsPerMeter` units per metre (32 for a game

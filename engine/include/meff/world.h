@@ -99,6 +99,12 @@ class World
     /// falloff, naming the field.
     void Explode(const ExplosionDef& def);
     void ApplyAngularImpulse(BodyId id, Real impulse, bool wake = true); ///< N·m·s
+    /// A definition that creates this body as it is now (World::CreateBody, then the same
+    /// shapes): its type, origin, angle (its centre of mass's angle), velocities, damping,
+    /// gravity scale, flags, awake state and user data. What a definition cannot hold is left
+    /// out: the time it has rested (Tolerances::timeToSleep) and the force and torque applied
+    /// since the last step.
+    BodyDef GetBodyDef(BodyId id) const;
     /// Sleeping. Static bodies are never awake.
     bool IsAwake(BodyId id) const;
     /// Box2D's SetAwake: true wakes the body and restarts its rest time; false puts it to
@@ -173,6 +179,10 @@ class World
     /// The chain's segment shapes in order along the chain (for a loop, the closing segment,
     /// last point to first, is the last).
     std::span<const ShapeId> GetChainSegments(ChainId id) const;
+    /// Whether the chain is a loop (Chain::loop). Its points are its segments' first points,
+    /// in order; an open chain's last point is its last segment's second point, and its ghosts
+    /// (Chain::prev, Chain::next) are its first segment's ghost1 and its last segment's ghost2.
+    bool IsChainLoop(ChainId id) const;
     /// The chain a shape belongs to; null for any other shape (a one-sided segment made alone
     /// included).
     ChainId GetChain(ShapeId id) const;
@@ -206,6 +216,27 @@ class World
     bool IsValid(JointId id) const;
     /// Which kind of joint it is.
     JointType GetJointType(JointId id) const;
+    /// A definition that creates this joint again with its present settings (the alternative
+    /// of its type): the bodies (or, for a gear, the joints), local anchors and axes as the
+    /// joint holds them (an axis as it was given, before the joint normalized it), reference
+    /// angles, limits, motors, springs (their frequencies and damping ratios, from which a new
+    /// joint computes its stiffness with the bodies' masses then), a pulley's ground anchors
+    /// and reference lengths, a motor joint's offsets. A mouse joint's target is the point it
+    /// grabs body B at, where that point is now (GetMouseTarget gives where it is pulled to).
+    /// A gear takes its constant from the poses it is created at, and every joint starts
+    /// without the impulses this one has accumulated.
+    AnyJointDef GetJointDef(JointId id) const;
+    /// The impulses the joint has accumulated, which start its next step when warm starting is
+    /// on (SolverSettings::warmStarting), what GetJointDef leaves out: N·s for linear rows,
+    /// N·m·s for angular ones, in this order: revolute: point x, point y, motor, lower, upper,
+    /// spring; distance: rod, lower, upper; prismatic: perpendicular, angular, motor, lower,
+    /// upper, spring; wheel: perpendicular, motor, spring, lower, upper; weld: point x, point y,
+    /// angle; motor and friction: linear x, linear y, angular; mouse: x, y; pulley, gear: one.
+    std::vector<Real> GetJointImpulses(JointId id) const;
+    /// Sets them, as GetJointImpulses orders them (a joint made again from a saved world,
+    /// carrying on where it was). Throws InvalidArgument for another count than the joint
+    /// type's or a value that is not finite.
+    void SetJointImpulses(JointId id, std::span<const Real> impulses);
     /// The joint's body A.
     BodyId GetBodyA(JointId id) const;
     /// The joint's body B.
@@ -290,6 +321,14 @@ class World
     /// Whether continuous collision is on.
     bool GetContinuous() const;
     void SetContinuous(bool continuous); ///< takes effect from the next step
+    /// 1/dt of the last step taken (1/s; 0 before the first): the next step scales the
+    /// warm-starting impulses of contacts and joints by its dt times this (Box2D's dtRatio), so
+    /// a fresh world's first step starts them from zero.
+    Real GetLastStepInverseDt() const;
+    /// Sets it, for a world made again from a saved one (SceneFromWorld: "last_step_inv_dt"),
+    /// whose first step then warm-starts as the original's next step would. Throws
+    /// InvalidArgument for a value that is negative or not finite, or during a step.
+    void SetLastStepInverseDt(Real invDt);
     /// Whether islands may fall asleep.
     bool GetAllowSleeping() const;
     /// Turning sleeping off wakes every body (Box2D's SetAllowSleeping).

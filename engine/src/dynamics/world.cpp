@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace meff
@@ -1447,6 +1448,16 @@ void World::SetContinuous(bool continuous)
     RequireNotStepping(State(), "World::SetContinuous");
     State().continuous = continuous;
 }
+Real World::GetLastStepInverseDt() const
+{
+    return State().invDt0;
+}
+void World::SetLastStepInverseDt(Real invDt)
+{
+    RequireNotStepping(State(), "World::SetLastStepInverseDt");
+    RequireNonNegative(invDt, "World::SetLastStepInverseDt: invDt");
+    State().invDt0 = invDt;
+}
 bool World::GetAllowSleeping() const
 {
     return State().allowSleep;
@@ -1543,6 +1554,259 @@ int World::GetTouchingContactCount() const
         count += State().contacts[c].IsTouching() ? 1 : 0;
     }
     return count;
+}
+
+BodyDef World::GetBodyDef(BodyId id) const
+{
+    const Body& body = Resolve(State().bodies, id, "body");
+    BodyDef def;
+    def.type = body.type;
+    def.position = body.xf.p;
+    def.angle = body.sweep.a;
+    def.linearVelocity = body.linearVelocity;
+    def.angularVelocity = body.angularVelocity;
+    def.linearDamping = body.linearDamping;
+    def.angularDamping = body.angularDamping;
+    def.gravityScale = body.gravityScale;
+    def.fixedRotation = body.fixedRotation;
+    def.bullet = body.bullet;
+    def.allowSleep = body.allowSleep;
+    def.awake = body.type == BodyType::Static || body.awake; // a static body is never awake
+    def.userData = body.userData;
+    return def;
+}
+
+namespace
+{
+
+/// The definition's bodies, anchors and collide flag, which most joint types share.
+template <typename Def, typename Data>
+Def AnchoredDef(const WorldState& world, const Joint& joint, const Data& data)
+{
+    Def def;
+    def.bodyA = {joint.bodyA, world.bodies[joint.bodyA].generation};
+    def.bodyB = {joint.bodyB, world.bodies[joint.bodyB].generation};
+    if constexpr (requires { def.localAnchorA; })
+    {
+        def.localAnchorA = data.localAnchorA;
+    }
+    if constexpr (requires { def.localAnchorB; })
+    {
+        def.localAnchorB = data.localAnchorB;
+    }
+    def.collideConnected = joint.collideConnected;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const RevoluteJoint& r)
+{
+    auto def = AnchoredDef<RevoluteJointDef>(world, joint, r);
+    def.referenceAngle = r.referenceAngle;
+    def.enableLimit = r.enableLimit;
+    def.lowerAngle = r.lowerAngle;
+    def.upperAngle = r.upperAngle;
+    def.enableMotor = r.enableMotor;
+    def.motorSpeed = r.motorSpeed;
+    def.maxMotorTorque = r.maxMotorTorque;
+    def.enableSpring = r.enableSpring;
+    def.hertz = r.hertz;
+    def.dampingRatio = r.dampingRatio;
+    def.targetAngle = r.targetAngle;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const DistanceJoint& d)
+{
+    auto def = AnchoredDef<DistanceJointDef>(world, joint, d);
+    def.length = d.length;
+    def.minLength = d.minLength;
+    def.maxLength = d.maxLength;
+    def.hertz = d.hertz;
+    def.dampingRatio = d.dampingRatio;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const PrismaticJoint& p)
+{
+    auto def = AnchoredDef<PrismaticJointDef>(world, joint, p);
+    def.localAxisA = p.definedAxisA;
+    def.referenceAngle = p.referenceAngle;
+    def.enableLimit = p.enableLimit;
+    def.lowerTranslation = p.lowerTranslation;
+    def.upperTranslation = p.upperTranslation;
+    def.enableMotor = p.enableMotor;
+    def.motorSpeed = p.motorSpeed;
+    def.maxMotorForce = p.maxMotorForce;
+    def.enableSpring = p.enableSpring;
+    def.hertz = p.hertz;
+    def.dampingRatio = p.dampingRatio;
+    def.targetTranslation = p.targetTranslation;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const WheelJoint& w)
+{
+    auto def = AnchoredDef<WheelJointDef>(world, joint, w);
+    def.localAxisA = w.definedAxisA;
+    def.enableLimit = w.enableLimit;
+    def.lowerTranslation = w.lowerTranslation;
+    def.upperTranslation = w.upperTranslation;
+    def.enableMotor = w.enableMotor;
+    def.motorSpeed = w.motorSpeed;
+    def.maxMotorTorque = w.maxMotorTorque;
+    def.hertz = w.hertz;
+    def.dampingRatio = w.dampingRatio;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const WeldJoint& w)
+{
+    auto def = AnchoredDef<WeldJointDef>(world, joint, w);
+    def.referenceAngle = w.referenceAngle;
+    def.hertz = w.hertz;
+    def.dampingRatio = w.dampingRatio;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const MotorJoint& m)
+{
+    auto def = AnchoredDef<MotorJointDef>(world, joint, m);
+    def.linearOffset = m.linearOffset;
+    def.angularOffset = m.angularOffset;
+    def.maxForce = m.maxForce;
+    def.maxTorque = m.maxTorque;
+    def.correctionFactor = m.correctionFactor;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const MouseJoint& m)
+{
+    auto def = AnchoredDef<MouseJointDef>(world, joint, m);
+    def.target = Mul(world.bodies[joint.bodyB].xf, m.localAnchorB); // the grabbed point now
+    def.maxForce = m.maxForce;
+    def.hertz = m.hertz;
+    def.dampingRatio = m.dampingRatio;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const FrictionJoint& f)
+{
+    auto def = AnchoredDef<FrictionJointDef>(world, joint, f);
+    def.maxForce = f.maxForce;
+    def.maxTorque = f.maxTorque;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState& world, const Joint& joint, const PulleyJoint& p)
+{
+    auto def = AnchoredDef<PulleyJointDef>(world, joint, p);
+    def.groundAnchorA = p.groundAnchorA;
+    def.groundAnchorB = p.groundAnchorB;
+    def.lengthA = p.lengthA;
+    def.lengthB = p.lengthB;
+    def.ratio = p.ratio;
+    return def;
+}
+
+AnyJointDef JointDefOf(const WorldState&, const Joint& joint, const GearJoint& g)
+{
+    GearJointDef def;
+    def.joint1 = g.joint1;
+    def.joint2 = g.joint2;
+    def.ratio = g.ratio;
+    def.collideConnected = joint.collideConnected;
+    return def;
+}
+
+} // namespace
+
+AnyJointDef World::GetJointDef(JointId id) const
+{
+    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    return std::visit([&](const auto& data) { return JointDefOf(State(), joint, data); },
+                      joint.data);
+}
+
+namespace
+{
+
+/// The joint's accumulated impulses, as World::GetJointImpulses orders them (Real* or, for a
+/// const joint, const Real*).
+template <typename JointT>
+auto ImpulsesOf(JointT& joint)
+{
+    using Pointer = std::conditional_t<std::is_const_v<JointT>, const Real*, Real*>;
+    return std::visit(
+        [](auto& j) -> std::vector<Pointer>
+        {
+            using Data = std::decay_t<decltype(j)>;
+            if constexpr (std::is_same_v<Data, RevoluteJoint> ||
+                          std::is_same_v<Data, PrismaticJoint>)
+            {
+                return {&j.impulse.x,    &j.impulse.y,    &j.motorImpulse,
+                        &j.lowerImpulse, &j.upperImpulse, &j.springImpulse};
+            }
+            else if constexpr (std::is_same_v<Data, DistanceJoint>)
+            {
+                return {&j.impulse, &j.lowerImpulse, &j.upperImpulse};
+            }
+            else if constexpr (std::is_same_v<Data, WheelJoint>)
+            {
+                return {&j.impulse, &j.motorImpulse, &j.springImpulse, &j.lowerImpulse,
+                        &j.upperImpulse};
+            }
+            else if constexpr (std::is_same_v<Data, WeldJoint>)
+            {
+                return {&j.impulse.x, &j.impulse.y, &j.impulse.z};
+            }
+            else if constexpr (std::is_same_v<Data, MotorJoint> ||
+                               std::is_same_v<Data, FrictionJoint>)
+            {
+                return {&j.linearImpulse.x, &j.linearImpulse.y, &j.angularImpulse};
+            }
+            else if constexpr (std::is_same_v<Data, MouseJoint>)
+            {
+                return {&j.impulse.x, &j.impulse.y};
+            }
+            else // pulley, gear
+            {
+                return {&j.impulse};
+            }
+        },
+        joint.data);
+}
+
+} // namespace
+
+std::vector<Real> World::GetJointImpulses(JointId id) const
+{
+    std::vector<Real> impulses;
+    for (const Real* impulse : ImpulsesOf(Resolve(State().joints, id, "joint").joint))
+    {
+        impulses.push_back(*impulse);
+    }
+    return impulses;
+}
+
+void World::SetJointImpulses(JointId id, std::span<const Real> impulses)
+{
+    RequireNotStepping(State(), "World::SetJointImpulses");
+    Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const std::vector<Real*> rows = ImpulsesOf(joint);
+    Require(impulses.size() == std::size_t(JointImpulseCount(joint.type)),
+            [&]
+            {
+                return "World::SetJointImpulses: this joint has " + std::to_string(rows.size()) +
+                       " impulses, got " + std::to_string(impulses.size());
+            });
+    for (const Real impulse : impulses)
+    {
+        RequireFinite(impulse, "World::SetJointImpulses: impulses");
+    }
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        *rows[i] = impulses[i];
+    }
 }
 
 } // namespace meff

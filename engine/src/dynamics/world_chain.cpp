@@ -116,6 +116,7 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
     ChainSlot& slot = world.chains[index];
     slot.body = body.index;
     slot.segments = ids;
+    slot.loop = chain.loop;
     for (const ShapeId id : ids)
     {
         world.shapes[id.index].chain = index;
@@ -182,6 +183,11 @@ bool World::IsValid(ChainId id) const
 std::span<const ShapeId> World::GetChainSegments(ChainId id) const
 {
     return ResolveChain(State(), id).segments;
+}
+
+bool World::IsChainLoop(ChainId id) const
+{
+    return ResolveChain(State(), id).loop;
 }
 
 ChainId World::GetChain(ShapeId id) const

@@ -38,6 +38,7 @@ struct ChainSlot
     bool alive = false;
     std::int32_t body = kNullIndex;
     std::vector<ShapeId> segments;
+    bool loop = false; ///< Chain::loop (World::IsChainLoop)
 };
 
 struct WorldState

@@ -171,6 +171,8 @@ Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bo
     distance.maxLength = Max(def.maxLength, distance.minLength);
     LinearStiffness(distance.stiffness, distance.damping, def.hertz, def.dampingRatio, massA,
                     massB);
+    distance.hertz = def.hertz;
+    distance.dampingRatio = def.dampingRatio;
 
     Joint joint = MakeTypedJoint(JointType::Distance, bodyA, bodyB, def.collideConnected);
     joint.data = distance;
@@ -197,6 +199,7 @@ Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t b
     prismatic.localAnchorA = def.localAnchorA;
     prismatic.localAnchorB = def.localAnchorB;
     prismatic.localXAxisA = axis;
+    prismatic.definedAxisA = def.localAxisA;
     prismatic.localYAxisA = Cross(Real(1), axis);
     prismatic.referenceAngle = def.referenceAngle;
     prismatic.enableLimit = def.enableLimit;
@@ -234,6 +237,7 @@ Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB
     wheel.localAnchorA = def.localAnchorA;
     wheel.localAnchorB = def.localAnchorB;
     wheel.localXAxisA = axis;
+    wheel.definedAxisA = def.localAxisA;
     wheel.localYAxisA = Cross(Real(1), axis);
     wheel.enableLimit = def.enableLimit;
     wheel.lowerTranslation = def.lowerTranslation;
@@ -244,6 +248,8 @@ Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB
     // The suspension's oscillator mass is the reduced mass of chassis and wheel, as the
     // testbed's car passes both bodies to b2LinearStiffness.
     LinearStiffness(wheel.stiffness, wheel.damping, def.hertz, def.dampingRatio, massA, massB);
+    wheel.hertz = def.hertz;
+    wheel.dampingRatio = def.dampingRatio;
 
     Joint joint = MakeTypedJoint(JointType::Wheel, bodyA, bodyB, def.collideConnected);
     joint.data = wheel;
@@ -265,6 +271,8 @@ Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB,
     weld.referenceAngle = def.referenceAngle;
     // hertz = 0 gives stiffness 0: the rigid weld.
     AngularStiffness(weld.stiffness, weld.damping, def.hertz, def.dampingRatio, inertiaA, inertiaB);
+    weld.hertz = def.hertz;
+    weld.dampingRatio = def.dampingRatio;
 
     Joint joint = MakeTypedJoint(JointType::Weld, bodyA, bodyB, def.collideConnected);
     joint.data = weld;
@@ -427,6 +435,8 @@ Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB
     mouse.localAnchorB = MulT(xfB, def.target);
     mouse.maxForce = def.maxForce;
     LinearStiffness(mouse.stiffness, mouse.damping, def.hertz, def.dampingRatio, massA, massB);
+    mouse.hertz = def.hertz;
+    mouse.dampingRatio = def.dampingRatio;
 
     Joint joint = MakeTypedJoint(JointType::Mouse, bodyA, bodyB, def.collideConnected);
     joint.data = mouse;

@@ -63,8 +63,9 @@ struct DistanceJoint
     // Definition
     Vec2 localAnchorA, localAnchorB;
     Real length = 1, minLength = 0, maxLength = kMaxReal;
-    Real stiffness = 0; ///< N/m, from hertz and the bodies' masses at creation
-    Real damping = 0;   ///< N·s/m
+    Real stiffness = 0;               ///< N/m, from hertz and the bodies' masses at creation
+    Real damping = 0;                 ///< N·s/m
+    Real hertz = 0, dampingRatio = 0; ///< as defined (World::GetJointDef)
     // Accumulated impulses
     Real impulse = 0, lowerImpulse = 0, upperImpulse = 0;
     // Solver temporaries
@@ -79,8 +80,9 @@ struct PrismaticJoint
 {
     // Definition
     Vec2 localAnchorA, localAnchorB;
-    Vec2 localXAxisA{1, 0}; ///< unit slide axis in A's frame
-    Vec2 localYAxisA{0, 1}; ///< its perpendicular, 1 × localXAxisA
+    Vec2 localXAxisA{1, 0};  ///< unit slide axis in A's frame
+    Vec2 localYAxisA{0, 1};  ///< its perpendicular, 1 × localXAxisA
+    Vec2 definedAxisA{1, 0}; ///< the axis as defined, before normalizing (World::GetJointDef)
     Real referenceAngle = 0;
     bool enableLimit = false;
     Real lowerTranslation = 0, upperTranslation = 0;
@@ -108,14 +110,16 @@ struct WheelJoint
 {
     // Definition
     Vec2 localAnchorA, localAnchorB;
-    Vec2 localXAxisA{1, 0}; ///< unit suspension axis in A's frame
-    Vec2 localYAxisA{0, 1}; ///< its perpendicular, 1 × localXAxisA
+    Vec2 localXAxisA{1, 0};  ///< unit suspension axis in A's frame
+    Vec2 localYAxisA{0, 1};  ///< its perpendicular, 1 × localXAxisA
+    Vec2 definedAxisA{1, 0}; ///< the axis as defined, before normalizing (World::GetJointDef)
     bool enableLimit = false;
     Real lowerTranslation = 0, upperTranslation = 0;
     bool enableMotor = false;
     Real motorSpeed = 0, maxMotorTorque = 0;
-    Real stiffness = 0; ///< N/m, from hertz and the bodies' masses at creation
-    Real damping = 0;   ///< N·s/m
+    Real stiffness = 0;               ///< N/m, from hertz and the bodies' masses at creation
+    Real damping = 0;                 ///< N·s/m
+    Real hertz = 0, dampingRatio = 0; ///< as defined (World::GetJointDef)
     // Accumulated impulses
     Real impulse = 0, motorImpulse = 0, springImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
     // Solver temporaries
@@ -136,6 +140,7 @@ struct WeldJoint
     Real referenceAngle = 0;
     Real stiffness = 0; ///< N·m/rad, from hertz and the bodies' inertias at creation; 0 = rigid
     Real damping = 0;   ///< N·m·s/rad
+    Real hertz = 0, dampingRatio = 0; ///< as defined (World::GetJointDef)
     // Accumulated impulses (point x, point y, angle)
     Vec3 impulse;
     // Solver temporaries
@@ -173,8 +178,9 @@ struct MouseJoint
     Vec2 target;       ///< world point (m)
     Vec2 localAnchorB; ///< the grabbed point in bodyB's frame
     Real maxForce = 0;
-    Real stiffness = 0; ///< N/m, from hertz and the bodies' masses at creation
-    Real damping = 0;   ///< N·s/m
+    Real stiffness = 0;               ///< N/m, from hertz and the bodies' masses at creation
+    Real damping = 0;                 ///< N·s/m
+    Real hertz = 0, dampingRatio = 0; ///< as defined (World::GetJointDef)
     // Accumulated impulse
     Vec2 impulse;
     // Solver temporaries (the A members are stored but unused: body A takes no part)

@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -48,6 +49,10 @@ struct SceneWorldSettings
     SolverSettings solver{};
     bool allowSleep = false; ///< let resting islands sleep (Box2D's rules)
     bool continuous = false; ///< Box2D's continuous physics (time of impact)
+    /// "last_step_inv_dt": 1/dt of the step before a saved world was saved
+    /// (World::GetLastStepInverseDt), which scales its first step's warm start; 0 for a world
+    /// that had not stepped (its first step starts cold).
+    double lastStepInverseDt = 0;
 
     friend bool operator==(const SceneWorldSettings&, const SceneWorldSettings&) = default;
 };
@@ -205,6 +210,10 @@ struct SceneJoint
     std::string jointB;          ///< name as written
     std::size_t jointIndexA = 0; ///< index into Scene::joints
     std::size_t jointIndexB = 0; ///< index into Scene::joints
+    /// "impulses": the impulses the joint had accumulated when its world was saved
+    /// (World::GetJointImpulses, JointImpulseCount(type) of them), which warm-start its first
+    /// step; empty: none (a joint starts without impulses).
+    std::vector<double> impulses;
 
     friend bool operator==(const SceneJoint&, const SceneJoint&) = default;
 };
@@ -450,5 +459,52 @@ struct BuiltScene
 /// Creates the scene's world, bodies, shapes and joints. Throws SceneError if the engine
 /// refuses something the loader let through (a scene that did not come from LoadScene).
 BuiltScene BuildWorld(const Scene& scene);
+
+/// What SceneFromWorld cannot learn from the world: the file's name and run length, and what
+/// to call the bodies and joints.
+struct SceneFromWorldOptions
+{
+    std::string name = "world"; ///< Scene::name
+    double dt = 1.0 / 60.0;     ///< world.dt (s, > 0): the step the world is run with
+    int frames = 240;           ///< world.frames: how many steps `meff run` takes
+    /// The scene name of each body (unique names of 1 to 64 characters from A-Z a-z 0-9 _ - .);
+    /// empty, or an empty answer: "body" and its place in World::GetBodies ("body0", ...).
+    std::function<std::string(BodyId)> bodyName{};
+    /// The same for joints ("joint0", ... by their place in World::GetJoints).
+    std::function<std::string(JointId)> jointName{};
+};
+
+/// The world as it is now, as a scene: its settings (gravity, the solver back end and all its
+/// settings, sleeping, continuous collision), every body in creation order (type, pose,
+/// velocities, damping, gravity scale, flags, awake state) with its shapes in creation order
+/// (geometry, material, filter, sensor; a box made by MakeBox or MakeOffsetBox as a "box", a
+/// chain as one "chain") and every joint in creation order, in the bodies' frames (local
+/// anchors and axes, reference angles, limits, motors, springs, offsets; World::GetJointDef)
+/// with its accumulated impulses (World::GetJointImpulses). Built with BuildWorld, it gives the
+/// same world; stepping on from it is bit-identical to stepping the original when nothing a
+/// scene cannot hold matters at that moment: no contact touches (their warm start is not in
+/// the file), and see docs/api-guide.md, "Saving a world as a scene", for the rest (rest times
+/// towards sleep, a gear's or pulley's drift, a centre of mass off its body's origin, to the
+/// last bit). Shapes' user data and hit-event flags, bodies' user data and forces applied since
+/// the last step are left out. Throws SceneError for what a scene cannot say at all: tolerances
+/// other than the defaults, a name `options` gives twice or malformed.
+Scene SceneFromWorld(const World& world, const SceneFromWorldOptions& options = {});
+
+/// A built scene's world as it is now (SceneFromWorld), keeping the scene's name, names of
+/// bodies and joints, dt, frames, description and its validate, plausibility and render
+/// sections; not its analytic answer, which holds from the scene's start. Throws SceneError
+/// for a scene with characters: their mover's state lives in BuiltScene, not in the world.
+Scene SceneFromBuilt(const BuiltScene& built, const Scene& scene);
+
+/// The world a snapshot holds, as a scene (SceneFromWorld); throws InvalidArgument for an
+/// empty snapshot.
+Scene SceneFromSnapshot(const WorldSnapshot& snapshot, const SceneFromWorldOptions& options = {});
+
+/// The scene as a meff scene file (docs/scene-format.md), which LoadScene reads back as the same
+/// scene (sourcePath and warnings aside): every number as the shortest decimal that reads back
+/// as the same double (a zero's sign kept), every field that differs from its default, and
+/// always the fields that say what a body or joint is. Write it whole or not at all (the `meff`
+/// tool does: `meff run --save-at`).
+std::string WriteScene(const Scene& scene);
 
 } // namespace meff
