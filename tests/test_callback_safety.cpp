@@ -6,6 +6,7 @@
 // it came from.
 #include <catch2/catch.hpp>
 
+#include "error_checks.h"
 #include "world_fixtures.h"
 #include "meff/world.h"
 
@@ -104,17 +105,7 @@ TEST_CASE("A callback cannot replace itself, or change the world, while a step r
         const BodyId body = world.GetBodies()[1];
         std::vector<std::string> refusals;
         const auto expectRefused = [&refusals](auto&& call)
-        {
-            try
-            {
-                call();
-                refusals.push_back("accepted");
-            }
-            catch (const InvalidArgument& error)
-            {
-                refusals.push_back(error.what());
-            }
-        };
+        { refusals.push_back(meff::test::ErrorMessageOf(call)); };
         const std::string padding(64, 'x'); // the closure's state, on the heap
         world.SetPreSolveCallback(
             [&, padding](const PreSolveContact&)
@@ -158,17 +149,10 @@ TEST_CASE("Misuse inside the custom filter is refused, named as from the custom 
         {
             if (refused.empty())
             {
-                try
-                {
-                    world.SetCustomFilterCallback({}); // destroyed itself under it
-                    refused = "accepted";
-                }
-                catch (const InvalidArgument& error)
-                {
-                    refused = error.what();
-                }
-                CHECK_THROWS_WITH(world.CreateBody({}),
-                                  Catch::Contains("(from the custom filter)"));
+                // Replacing itself would destroy it under it.
+                refused = meff::test::ErrorMessageOf([&] { world.SetCustomFilterCallback({}); });
+                MEFF_CHECK_ERROR_WITH(world.CreateBody({}),
+                                      Catch::Contains("(from the custom filter)"));
             }
             return !padding.empty();
         });

@@ -4,6 +4,7 @@
 // and rollback (stepping on from a restored snapshot is bit-identical to the original run).
 #include <catch2/catch.hpp>
 
+#include "error_checks.h"
 #include "world_fixtures.h"
 #include "meff/world.h"
 
@@ -81,7 +82,7 @@ TEST_CASE("stepping on from a restored snapshot is bit-identical", "[determinism
 TEST_CASE("restoring an empty snapshot is refused", "[determinism]")
 {
     World world = MakePile();
-    CHECK_THROWS_AS(world.RestoreSnapshot(WorldSnapshot{}), InvalidArgument);
+    MEFF_CHECK_ERROR(world.RestoreSnapshot(WorldSnapshot{}));
 }
 
 namespace

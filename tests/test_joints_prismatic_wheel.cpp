@@ -4,13 +4,13 @@
 // balance, spring frequency), that the scalar-row form converges, and that bad definitions and
 // calls are refused. Their bit-for-bit agreement with Box2D is
 // test_joints_box2d_prismatic_wheel.cpp.
+#include "error_checks.h"
 #include "meff/world.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,19 +36,6 @@ struct Rig
         world.CreateShape(box, ShapeDef{.density = mass}, MakeBox(0.5f, 0.5f));
     }
 };
-
-std::string MessageOf(const std::function<void()>& call)
-{
-    try
-    {
-        call();
-    }
-    catch (const InvalidArgument& error)
-    {
-        return error.what();
-    }
-    return "(no exception)";
-}
 
 } // namespace
 
@@ -257,40 +244,40 @@ TEST_CASE("Prismatic and wheel definitions are validated", "[joints][prismatic][
     PrismaticJointDef prismatic = world.MakePrismaticJointDef(rig.ground, rig.box, {0, 0}, {1, 0});
     prismatic.lowerTranslation = 2;
     prismatic.upperTranslation = 1;
-    CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
+    CHECK(meff::test::ErrorMessageOf([&] { world.CreateJoint(prismatic); }) ==
           "PrismaticJointDef::lowerTranslation: must not exceed upperTranslation (1), got 2");
     prismatic.upperTranslation = 3;
     prismatic.maxMotorForce = -1;
-    CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
+    CHECK(meff::test::ErrorMessageOf([&] { world.CreateJoint(prismatic); }) ==
           "PrismaticJointDef::maxMotorForce: must be finite and >= 0, got -1");
     prismatic.maxMotorForce = 1;
     prismatic.motorSpeed = std::nanf("");
-    CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
+    CHECK(meff::test::ErrorMessageOf([&] { world.CreateJoint(prismatic); }) ==
           "PrismaticJointDef::motorSpeed: must be finite, got nan");
     prismatic.motorSpeed = 0;
     prismatic.localAxisA = {0, 0};
-    CHECK(MessageOf([&] { world.CreateJoint(prismatic); }) ==
+    CHECK(meff::test::ErrorMessageOf([&] { world.CreateJoint(prismatic); }) ==
           "PrismaticJointDef::localAxisA: must have a direction (a length > 0), got (0, 0)");
-    CHECK_THROWS_AS(world.MakePrismaticJointDef(rig.ground, rig.box, {0, 0}, {kMaxReal * 2, 0}),
-                    InvalidArgument);
+    MEFF_CHECK_ERROR(world.MakePrismaticJointDef(rig.ground, rig.box, {0, 0}, {kMaxReal * 2, 0}));
 
     WheelJointDef wheel = world.MakeWheelJointDef(rig.ground, rig.box, {0, 0}, {0, 1});
     wheel.maxMotorTorque = -2;
-    CHECK(MessageOf([&] { world.CreateJoint(wheel); }) ==
+    CHECK(meff::test::ErrorMessageOf([&] { world.CreateJoint(wheel); }) ==
           "WheelJointDef::maxMotorTorque: must be finite and >= 0, got -2");
     wheel.maxMotorTorque = 0;
     wheel.hertz = -1;
-    CHECK(MessageOf([&] { world.CreateJoint(wheel); }) == "WheelJointDef::hertz: must be finite and >= 0, got -1");
+    CHECK(meff::test::ErrorMessageOf([&] { world.CreateJoint(wheel); }) ==
+          "WheelJointDef::hertz: must be finite and >= 0, got -1");
     wheel.hertz = 1;
     wheel.lowerTranslation = 0.5f;
-    CHECK(MessageOf([&] { world.CreateJoint(wheel); }) ==
+    CHECK(meff::test::ErrorMessageOf([&] { world.CreateJoint(wheel); }) ==
           "WheelJointDef::lowerTranslation: must not exceed upperTranslation (0), got 0.5");
     wheel.lowerTranslation = 0;
     wheel.localAxisA = {0, 0};
-    CHECK_THROWS_AS(world.CreateJoint(wheel), InvalidArgument);
+    MEFF_CHECK_ERROR(world.CreateJoint(wheel));
     wheel.localAxisA = {0, 1};
     wheel.bodyB = wheel.bodyA;
-    CHECK_THROWS_AS(world.CreateJoint(wheel), InvalidArgument);
+    MEFF_CHECK_ERROR(world.CreateJoint(wheel));
     // Nothing refused was created.
     CHECK(world.GetJoints().empty());
 }
@@ -302,21 +289,21 @@ TEST_CASE("Joint motor speed, translation and speed calls check the joint type",
     World& world = rig.world;
     const JointId rod =
         world.CreateJoint(world.MakeDistanceJointDef(rig.ground, rig.box, {0, 2}, {0, 0}));
-    CHECK(MessageOf([&] { world.SetJointMotorSpeed(rod, 1); }) ==
+    CHECK(meff::test::ErrorMessageOf([&] { world.SetJointMotorSpeed(rod, 1); }) ==
           "World::SetJointMotorSpeed: the joint has no motor (only revolute, prismatic and wheel "
           "joints do)");
-    CHECK_THROWS_AS(world.GetJointTranslation(rod), InvalidArgument);
-    CHECK_THROWS_AS(world.GetJointSpeed(rod), InvalidArgument);
+    MEFF_CHECK_ERROR(world.GetJointTranslation(rod));
+    MEFF_CHECK_ERROR(world.GetJointSpeed(rod));
 
     const JointId pin = world.CreateJoint(world.MakeRevoluteJointDef(rig.ground, rig.box, {0, 0}));
-    CHECK_THROWS_AS(world.GetJointTranslation(pin), InvalidArgument);
+    MEFF_CHECK_ERROR(world.GetJointTranslation(pin));
     world.SetAngularVelocity(rig.box, 2);
     CHECK(world.GetJointSpeed(pin) == 2);
-    CHECK_THROWS_AS(world.SetJointMotorSpeed(pin, std::nanf("")), InvalidArgument);
+    MEFF_CHECK_ERROR(world.SetJointMotorSpeed(pin, std::nanf("")));
 
     const JointId wheel =
         world.CreateJoint(world.MakeWheelJointDef(rig.ground, rig.box, {0, 0}, {0, 1}));
     world.SetJointMotorSpeed(wheel, -3); // accepted
     world.DestroyJoint(wheel);
-    CHECK_THROWS_AS(world.SetJointMotorSpeed(wheel, 1), InvalidArgument); // stale id
+    MEFF_CHECK_ERROR(world.SetJointMotorSpeed(wheel, 1)); // stale id
 }

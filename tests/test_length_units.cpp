@@ -4,6 +4,7 @@
 // tolerances come from TolerancesForLengthUnits.
 #include <catch2/catch.hpp>
 
+#include "error_checks.h"
 #include "meff/world.h"
 
 #include <cmath>
@@ -60,8 +61,8 @@ TEST_CASE("a world in pixels is the metre world scaled, with scaled tolerances",
 
 TEST_CASE("TolerancesForLengthUnits refuses a non-positive scale", "[units]")
 {
-    CHECK_THROWS_AS(TolerancesForLengthUnits(0), InvalidArgument);
-    CHECK_THROWS_AS(TolerancesForLengthUnits(-1), InvalidArgument);
+    MEFF_CHECK_ERROR(TolerancesForLengthUnits(0));
+    MEFF_CHECK_ERROR(TolerancesForLengthUnits(-1));
     CHECK(TolerancesForLengthUnits(100).linearSlop == Approx(0.5));
     CHECK(TolerancesForLengthUnits(100).angularSlop == Tolerances{}.angularSlop);
 }

@@ -3,6 +3,7 @@
 // The character mover (meff/mover.h, World::CollideMover, World::CastMover): the plane solver
 // and the velocity clip against hand-worked answers, and a capsule character walking into a
 // wall, falling onto a floor and climbing a ramp in a world.
+#include "error_checks.h"
 #include "meff/mover.h"
 #include "meff/world.h"
 
@@ -306,18 +307,7 @@ TEST_CASE("CastMover: a wall ahead stops the move, the floor it stands on does n
 TEST_CASE("The mover queries refuse a bad capsule and translation", "[mover][errors]")
 {
     World world(WorldDef{});
-    const auto message = [](auto&& call)
-    {
-        try
-        {
-            call();
-        }
-        catch (const InvalidArgument& error)
-        {
-            return std::string(error.what());
-        }
-        return std::string("accepted");
-    };
+    const auto message = [](auto&& call) { return meff::test::ErrorMessageOf(call); };
     const Capsule flat{{0, 0}, {0, 1}, 0};
     CHECK_THAT(
         message(

@@ -1,14 +1,38 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 the meff authors
-// How the library reports errors: by exception, never by undefined behaviour.
+// How the library reports errors: by exception (the default), or, in an engine built with
+// MEFF_EXCEPTIONS=OFF (-fno-exceptions), through an error handler the game sets; never by
+// undefined behaviour.
 #pragma once
 
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 
+#ifndef MEFF_EXCEPTIONS
+/// 1 when the engine reports errors by throwing them (CMake option MEFF_EXCEPTIONS, the
+/// default); 0 in an engine built with MEFF_EXCEPTIONS=OFF, whose usage requirements (the CMake
+/// package, meff.pc) define it so.
+#define MEFF_EXCEPTIONS 1
+#endif
+
 namespace meff
 {
+
+/// A function the engine calls with the message of each error it reports when it is built
+/// without exceptions (MEFF_EXCEPTIONS=OFF): the same text an exception's what() would carry,
+/// "World::CreateBody: BodyDef::position: must be finite, got (nan, 0)". `context` is the
+/// pointer given to SetErrorHandler. The call that reported the error then returns without
+/// changing anything: a null id, zero, an empty result. The handler may be called from any
+/// thread that calls into the engine (and from the task system's threads for an error found
+/// inside World::Step); it must not call back into the world that reported the error.
+using ErrorHandler = void (*)(const char* message, void* context);
+
+/// Sets the function that receives the engine's errors when it is built without exceptions,
+/// and the context pointer passed to it (nullptr handler: the default, which writes
+/// "meff: MESSAGE" to stderr). With exceptions (the default build) errors are thrown as the
+/// classes below and the handler is not called. Thread-safe; the handler is global.
+void SetErrorHandler(ErrorHandler handler, void* context = nullptr);
 
 /// Base class of every error meff throws.
 class Error : public std::runtime_error

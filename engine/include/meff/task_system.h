@@ -49,7 +49,8 @@ class TaskSystem
 /// A pool of `threads` − 1 std::threads that, with the thread calling ParallelFor, share each
 /// range of work (threads ≥ 1; 1 runs everything on the caller). Threads wait on a condition
 /// variable between jobs, after a short spin. A job allocates nothing. Destroying the pool
-/// joins its threads; it must not be destroyed during a ParallelFor.
+/// joins its threads; it must not be destroyed during a ParallelFor. A count outside 1 to 1024
+/// is refused (InvalidArgument; without exceptions, reported and nullptr returned).
 std::unique_ptr<TaskSystem> MakeThreadPool(int threads);
 
 } // namespace meff

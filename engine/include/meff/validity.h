@@ -52,18 +52,16 @@ class RefusedArgument : public InvalidArgument
     Refusal m_refusal;
 };
 
-/// The refusal as World throws it: RefusedArgument("FIELD: REASON").
+/// The refusal as World throws it: RefusedArgument("FIELD: REASON"). In an engine built
+/// without exceptions (MEFF_EXCEPTIONS=OFF), the error handler gets the message, then
+/// std::abort() ends the program: World's calls report a refusal and return instead.
 [[noreturn]] void ThrowRefusal(const Refusal& refusal);
 
-/// Throws the refusal, if there is one (ThrowRefusal): how World, the joints and the queries
-/// apply these rules to their arguments.
-inline void Require(const std::optional<Refusal>& refusal)
-{
-    if (refusal)
-    {
-        ThrowRefusal(*refusal);
-    }
-}
+/// Reports the refusal, if there is one, as RefusedArgument("FIELD: REASON") and returns
+/// false; true when there is none: how World, the joints and the queries apply these rules to
+/// their arguments, `if (!Require(...)) { return {}; }`. Thrown with exceptions (the default);
+/// in an engine built without them (MEFF_EXCEPTIONS=OFF), the error handler gets the message.
+[[nodiscard]] bool Require(const std::optional<Refusal>& refusal);
 
 // Numbers: the checks every argument of World goes through, and the one way its messages
 // write a number. `field` names the argument as the message should ("BodyDef::position",
@@ -81,22 +79,23 @@ std::optional<Refusal> CheckFinite(Vec2 value, const char* field);
 std::optional<Refusal> CheckNonNegative(Real value, const char* field);
 /// "must be finite and > 0, got V".
 std::optional<Refusal> CheckPositive(Real value, const char* field);
-/// The checks as World applies them: RefusedArgument("FIELD: must be finite, got V") and so on.
-inline void RequireFinite(Real value, const char* field)
+/// The checks as World applies them (Require): RefusedArgument("FIELD: must be finite, got V")
+/// and so on; false once reported.
+[[nodiscard]] inline bool RequireFinite(Real value, const char* field)
 {
-    Require(CheckFinite(value, field));
+    return Require(CheckFinite(value, field));
 }
-inline void RequireFinite(Vec2 value, const char* field)
+[[nodiscard]] inline bool RequireFinite(Vec2 value, const char* field)
 {
-    Require(CheckFinite(value, field));
+    return Require(CheckFinite(value, field));
 }
-inline void RequireNonNegative(Real value, const char* field)
+[[nodiscard]] inline bool RequireNonNegative(Real value, const char* field)
 {
-    Require(CheckNonNegative(value, field));
+    return Require(CheckNonNegative(value, field));
 }
-inline void RequirePositive(Real value, const char* field)
+[[nodiscard]] inline bool RequirePositive(Real value, const char* field)
 {
-    Require(CheckPositive(value, field));
+    return Require(CheckPositive(value, field));
 }
 
 // Shapes, on their own (any body). Circles: a finite centre, a finite radius > 0, and an area

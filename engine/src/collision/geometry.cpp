@@ -5,13 +5,18 @@
 // SetAsBox, ComputeMass and ComputeAABB, b2CircleShape and b2EdgeShape of Box2D 2.4.1, with
 // the same floating-point operation order; where Box2D asserts on bad input we throw.
 #include "collision/manifold_internal.h"
+#include "core/report_error.h"
 #include "meff/error.h"
 #include "meff/validity.h"
 
+#include <optional>
 #include <string>
 
 namespace meff
 {
+
+using detail::Refuse;
+using detail::ReportError;
 
 namespace
 {
@@ -49,14 +54,16 @@ Vec2 ComputeCentroid(const Vec2* vertices, int count, Real& area)
 }
 
 /// The box of b2PolygonShape::SetAsBox before any offset: vertices counter-clockwise from the
-/// lower left, normals of the faces below, right, above and left.
-Polygon MakeCenteredBox(Real halfWidth, Real halfHeight, const char* caller)
+/// lower left, normals of the faces below, right, above and left. None (reported) for bad
+/// half-extents.
+std::optional<Polygon> MakeCenteredBox(Real halfWidth, Real halfHeight, const char* caller)
 {
     if (!IsValid(halfWidth) || !IsValid(halfHeight) || !(halfWidth > 0) || !(halfHeight > 0))
     {
-        throw InvalidArgument(std::string(caller) +
-                              ": half-extents must be finite and > 0, got halfWidth = " +
-                              NumberText(halfWidth) + ", halfHeight = " + NumberText(halfHeight));
+        ReportError(InvalidArgument(
+            std::string(caller) + ": half-extents must be finite and > 0, got halfWidth = " +
+            NumberText(halfWidth) + ", halfHeight = " + NumberText(halfHeight)));
+        return std::nullopt;
     }
 
     Polygon box;
@@ -75,23 +82,23 @@ Polygon MakeCenteredBox(Real halfWidth, Real halfHeight, const char* caller)
 
 /// What the Make functions return, World::CreateShape accepts: the one rule of
 /// meff/validity.h, with its reason (a box too large for its area to be a float, or too thin
-/// for its edges to have a direction).
+/// for its edges to have a direction). A refused polygon is reported, and the empty Polygon
+/// (no vertices, which World::CreateShape refuses) returned.
 Polygon Accepted(Polygon polygon, const char* caller)
 {
     if (const std::optional<Refusal> refusal = CheckPolygon(polygon))
     {
-        throw RefusedArgument(std::string(caller) + ": " + refusal->reason, *refusal);
+        ReportError(RefusedArgument(std::string(caller) + ": " + refusal->reason, *refusal));
+        return {};
     }
     return polygon;
 }
 
-void CheckDensity(Real density, const char* caller)
+[[nodiscard]] bool CheckDensity(Real density, const char* caller)
 {
-    if (!IsValid(density) || density < 0)
-    {
-        throw InvalidArgument(std::string(caller) + ": density must be finite and >= 0, got " +
-                              NumberText(density));
-    }
+    return (IsValid(density) && density >= 0) ||
+           Refuse(InvalidArgument(std::string(caller) + ": density must be finite and >= 0, got " +
+                                  NumberText(density)));
 }
 
 } // namespace
@@ -101,15 +108,18 @@ Polygon MakePolygon(std::span<const Vec2> points)
     const std::size_t pointCount = points.size();
     if (pointCount < 3 || pointCount > std::size_t(kMaxPolygonVertices))
     {
-        throw InvalidArgument("MakePolygon: needs 3 to " + std::to_string(kMaxPolygonVertices) +
-                              " points, got " + std::to_string(pointCount));
+        ReportError(InvalidArgument("MakePolygon: needs 3 to " +
+                                    std::to_string(kMaxPolygonVertices) + " points, got " +
+                                    std::to_string(pointCount)));
+        return {};
     }
     for (std::size_t i = 0; i < pointCount; ++i)
     {
         if (!points[i].IsValid())
         {
-            throw InvalidArgument("MakePolygon: point " + std::to_string(i) +
-                                  " has a non-finite coordinate " + NumberText(points[i]));
+            ReportError(InvalidArgument("MakePolygon: point " + std::to_string(i) +
+                                        " has a non-finite coordinate " + NumberText(points[i])));
+            return {};
         }
     }
 
@@ -140,9 +150,10 @@ Polygon MakePolygon(std::span<const Vec2> points)
 
     if (uniqueCount < 3)
     {
-        throw InvalidArgument("MakePolygon: only " + std::to_string(uniqueCount) +
-                              " distinct point(s) remain after welding points closer than " +
-                              NumberText(kPolygonWeldTolerance) + " m; need 3");
+        ReportError(InvalidArgument("MakePolygon: only " + std::to_string(uniqueCount) +
+                                    " distinct point(s) remain after welding points closer than " +
+                                    NumberText(kPolygonWeldTolerance) + " m; need 3"));
+        return {};
     }
 
     // Convex hull by gift wrapping. Start at the right-most point (lowest on a tie).
@@ -167,8 +178,10 @@ Polygon MakePolygon(std::span<const Vec2> points)
         // the wrap cycle (Box2D asserts here).
         if (m >= uniqueCount)
         {
-            throw InvalidArgument("MakePolygon: the convex hull of the points is ill-conditioned "
-                                  "(gift wrapping did not close)");
+            ReportError(
+                InvalidArgument("MakePolygon: the convex hull of the points is ill-conditioned "
+                                "(gift wrapping did not close)"));
+            return {};
         }
         hull[m] = ih;
 
@@ -206,8 +219,10 @@ Polygon MakePolygon(std::span<const Vec2> points)
 
     if (m < 3)
     {
-        throw InvalidArgument("MakePolygon: the points are collinear (their convex hull has " +
-                              std::to_string(m) + " vertices)");
+        ReportError(
+            InvalidArgument("MakePolygon: the points are collinear (their convex hull has " +
+                            std::to_string(m) + " vertices)"));
+        return {};
     }
 
     Polygon polygon;
@@ -233,25 +248,34 @@ Polygon MakePolygon(std::span<const Vec2> points)
     // Box2D asserts area > b2_epsilon: nearly collinear points give a sliver it cannot use.
     if (!(area > kEpsilon))
     {
-        throw InvalidArgument("MakePolygon: the points are (nearly) collinear: hull area " +
-                              NumberText(area) + " m^2 is not above " + NumberText(kEpsilon));
+        ReportError(InvalidArgument("MakePolygon: the points are (nearly) collinear: hull area " +
+                                    NumberText(area) + " m^2 is not above " +
+                                    NumberText(kEpsilon)));
+        return {};
     }
     return Accepted(polygon, "MakePolygon");
 }
 
 Polygon MakeBox(Real halfWidth, Real halfHeight)
 {
-    return Accepted(MakeCenteredBox(halfWidth, halfHeight, "MakeBox"), "MakeBox");
+    const std::optional<Polygon> box = MakeCenteredBox(halfWidth, halfHeight, "MakeBox");
+    return box ? Accepted(*box, "MakeBox") : Polygon{};
 }
 
 Polygon MakeOffsetBox(Real halfWidth, Real halfHeight, Vec2 center, Real angle)
 {
-    Polygon box = MakeCenteredBox(halfWidth, halfHeight, "MakeOffsetBox");
+    const std::optional<Polygon> centred = MakeCenteredBox(halfWidth, halfHeight, "MakeOffsetBox");
+    if (!centred)
+    {
+        return {};
+    }
     if (!center.IsValid() || !IsValid(angle))
     {
-        throw InvalidArgument("MakeOffsetBox: center and angle must be finite, got center " +
-                              NumberText(center) + ", angle " + NumberText(angle));
+        ReportError(InvalidArgument("MakeOffsetBox: center and angle must be finite, got center " +
+                                    NumberText(center) + ", angle " + NumberText(angle)));
+        return {};
     }
+    Polygon box = *centred;
 
     box.centroid = center;
 
@@ -268,7 +292,10 @@ Polygon MakeOffsetBox(Real halfWidth, Real halfHeight, Vec2 center, Real angle)
 
 MassData ComputeMass(const Circle& circle, Real density)
 {
-    CheckDensity(density, "ComputeMass(Circle)");
+    if (!CheckDensity(density, "ComputeMass(Circle)"))
+    {
+        return {};
+    }
 
     MassData massData;
     massData.mass = density * kPi * circle.radius * circle.radius;
@@ -281,11 +308,16 @@ MassData ComputeMass(const Circle& circle, Real density)
 
 MassData ComputeMass(const Polygon& polygon, Real density)
 {
-    CheckDensity(density, "ComputeMass(Polygon)");
+    if (!CheckDensity(density, "ComputeMass(Polygon)"))
+    {
+        return {};
+    }
     if (polygon.count < 3 || polygon.count > kMaxPolygonVertices)
     {
-        throw InvalidArgument("ComputeMass(Polygon): polygon has " + std::to_string(polygon.count) +
-                              " vertices; build it with MakePolygon or MakeBox");
+        ReportError(InvalidArgument("ComputeMass(Polygon): polygon has " +
+                                    std::to_string(polygon.count) +
+                                    " vertices; build it with MakePolygon or MakeBox"));
+        return {};
     }
 
     // Sum over a fan of triangles (s, v[i], v[i+1]) from the first vertex s. For one triangle

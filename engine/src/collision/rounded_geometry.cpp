@@ -4,6 +4,8 @@
 // Capsules and rounded polygons (Box2D v3's shapes; Box2D 2.4.1 has neither): the capsule as
 // a two-vertex rounded polygon, exact mass properties of the rounded outline, and bounding boxes.
 #include "meff/collision.h"
+
+#include "core/report_error.h"
 #include "meff/error.h"
 #include "meff/validity.h"
 
@@ -11,6 +13,9 @@
 
 namespace meff
 {
+
+using detail::Refuse;
+using detail::ReportError;
 
 Polygon MakeCapsulePolygon(const Capsule& capsule)
 {
@@ -83,14 +88,17 @@ MassData ComputeRoundedMass(const Polygon& polygon, Real density)
 {
     if (!(density >= 0) || !std::isfinite(double(density)))
     {
-        throw InvalidArgument("ComputeRoundedMass: density must be finite and >= 0, got " +
-                              NumberText(density));
+        ReportError(InvalidArgument("ComputeRoundedMass: density must be finite and >= 0, got " +
+                                    NumberText(density)));
+        return {};
     }
     if (polygon.count < 2 || polygon.count > kMaxPolygonVertices)
     {
-        throw InvalidArgument("ComputeRoundedMass: polygon has " + std::to_string(polygon.count) +
-                              " vertices; build it with MakePolygon, MakeBox or "
-                              "MakeCapsulePolygon");
+        ReportError(InvalidArgument("ComputeRoundedMass: polygon has " +
+                                    std::to_string(polygon.count) +
+                                    " vertices; build it with MakePolygon, MakeBox or "
+                                    "MakeCapsulePolygon"));
+        return {};
     }
     MassData total;
     Vec2 moment{0, 0};

@@ -6,6 +6,7 @@
 // The impulse on a shape is J = p·w·s along the line from the centre to the shape's closest
 // point, w the shape's width across that line (its projection on the perpendicular, radius
 // included) and s the falloff scale, so a wide box takes more than a thin edge-on one.
+#include "core/report_error.h"
 #include "dynamics/world_state.h"
 #include "model/shape_proxy.h"
 #include "meff/distance.h"
@@ -54,10 +55,13 @@ Vec2 CoreCentre(const DistanceProxy& proxy)
 
 void World::Explode(const ExplosionDef& def)
 {
-    RequireFinite(def.position, "World::Explode: ExplosionDef::position");
-    RequireNonNegative(def.radius, "World::Explode: ExplosionDef::radius");
-    RequireNonNegative(def.falloff, "World::Explode: ExplosionDef::falloff");
-    RequireFinite(def.impulsePerLength, "World::Explode: ExplosionDef::impulsePerLength");
+    if (!RequireFinite(def.position, "World::Explode: ExplosionDef::position") ||
+        !RequireNonNegative(def.radius, "World::Explode: ExplosionDef::radius") ||
+        !RequireNonNegative(def.falloff, "World::Explode: ExplosionDef::falloff") ||
+        !RequireFinite(def.impulsePerLength, "World::Explode: ExplosionDef::impulsePerLength"))
+    {
+        return;
+    }
 
     struct Push
     {

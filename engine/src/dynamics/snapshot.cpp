@@ -5,6 +5,7 @@
 // Every member of WorldState is a value (pools, lists as indices, the broad phase's node
 // vector, the warm-starting impulses in the manifolds), so a snapshot is a copy and restoring
 // it is an assignment: nothing is rebuilt, hence stepping on is bit-identical.
+#include "core/report_error.h"
 #include "dynamics/world_state.h"
 #include "meff/world.h"
 
@@ -97,10 +98,14 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
 {
     if (snapshot.IsEmpty())
     {
-        throw InvalidArgument("World::RestoreSnapshot: the snapshot is empty");
+        detail::ReportError(InvalidArgument("World::RestoreSnapshot: the snapshot is empty"));
+        return;
     }
     detail::WorldState& world = State();
-    detail::RequireNotStepping(world, "World::RestoreSnapshot");
+    if (!detail::RequireNotStepping(world, "World::RestoreSnapshot"))
+    {
+        return;
+    }
     // Configuration, not state: the current callbacks and task system stay.
     PreSolveCallback preSolve = std::move(world.preSolve);
     CustomFilterCallback customFilter = std::move(world.customFilter);

@@ -18,6 +18,7 @@
 // (events.cpp).
 #include "dynamics/step_stages.h"
 
+#include "core/report_error.h"
 #include "dynamics/contact_reports.h"
 #include "dynamics/events.h"
 #include "dynamics/world_state.h"
@@ -100,14 +101,19 @@ void World::Step(Real dt)
     WorldState& world = State();
     if (const std::optional<Refusal> refusal = CheckStepDt(dt))
     {
-        throw InvalidArgument("World::Step: dt " + refusal->reason);
+        ReportError(InvalidArgument("World::Step: dt " + refusal->reason));
+        return;
     }
-    RequireNotStepping(world, "World::Step");
+    if (!RequireNotStepping(world, "World::Step"))
+    {
+        return;
+    }
     if (world.failed)
     {
-        throw Error("World::Step: an earlier step failed (a non-finite state, or an exception "
-                    "from the pre-solve callback); the world is frozen (read it, then rebuild "
-                    "it or restore a snapshot)");
+        ReportError(Error("World::Step: an earlier step failed (a non-finite state, or an "
+                          "exception from the pre-solve callback); the world is frozen (read it, "
+                          "then rebuild it or restore a snapshot)"));
+        return;
     }
     const SteppingGuard stepping(world);
 
@@ -115,7 +121,9 @@ void World::Step(Real dt)
     profile = {};
     const StageTimer whole(profile.step);
     const StepContext step = BeginStep(world, dt);
-    try
+    // A body that became non-finite stops the step (FinishBodies): a thrown SimulationError, or
+    // without exceptions the error handler and world.failed.
+    const auto stages = [&]
     {
         if (world.newShapes)
         {
@@ -124,18 +132,34 @@ void World::Step(Real dt)
         Timed(profile.collide, [&] { Collide(world); });
 
         Timed(profile.solve, [&] { Solve(world, step); });
+        if (world.failed)
+        {
+            return;
+        }
         Timed(profile.synchronize, [&] { SynchronizeShapes(world); });
         Timed(profile.findContacts, [&] { FindNewContacts(world); });
         if (world.continuous)
         {
             Timed(profile.continuous, [&] { SolveContinuous(world, step); });
         }
+    };
+#if MEFF_EXCEPTIONS
+    try
+    {
+        stages();
     }
     catch (const SimulationError&)
     {
         world.failed = true; // the bodies kept their last good state; stepping is refused
         throw;
     }
+#else
+    stages();
+    if (world.failed)
+    {
+        return; // reported; the bodies kept their last good state; stepping is refused
+    }
+#endif
     ClearForces(world);
     MarkStepEvents(world);
     world.invDt0 = step.invDt;

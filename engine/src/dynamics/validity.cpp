@@ -5,6 +5,8 @@
 // scene loader.
 #include "meff/validity.h"
 
+#include "core/report_error.h"
+
 #include "meff/error.h"
 
 #include <charconv>
@@ -139,7 +141,17 @@ std::optional<Refusal> CheckEdges(const Polygon& polygon)
 
 void ThrowRefusal(const Refusal& refusal)
 {
-    throw RefusedArgument(refusal.field + ": " + refusal.reason, refusal);
+    detail::ReportFatalError(RefusedArgument(refusal.field + ": " + refusal.reason, refusal));
+}
+
+bool detail::ReportRefusal(const Refusal& refusal)
+{
+    return Refuse(RefusedArgument(refusal.field + ": " + refusal.reason, refusal));
+}
+
+bool Require(const std::optional<Refusal>& refusal)
+{
+    return !refusal || detail::ReportRefusal(*refusal);
 }
 
 std::string NumberText(Real value)

@@ -5,11 +5,13 @@
 // itself is in step.cpp.
 #include "meff/world.h"
 
+#include "core/report_error.h"
 #include "dynamics/step_stages.h"
 #include "dynamics/world_state.h"
 #include "meff/validity.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -23,58 +25,67 @@ using namespace detail;
 namespace
 {
 
-/// Throws InvalidArgument when `condition` is false. The message is built only then
-/// (`message()` returns it): formatting it on every call cost more than the checks
+/// Reports InvalidArgument and returns false when `condition` is false. The message is built
+/// only then (`message()` returns it): formatting it on every call cost more than the checks
 /// themselves when a scene creates ten thousand bodies.
 template <typename MakeMessage>
-void Require(bool condition, MakeMessage&& message)
+[[nodiscard]] bool Require(bool condition, MakeMessage&& message)
 {
-    if (!condition)
-    {
-        throw InvalidArgument(message());
-    }
+    return condition || Refuse(InvalidArgument(message()));
 }
 
-void RequireSoftStepSettings(const SoftStepSettings& soft)
+[[nodiscard]] bool RequireSoftStepSettings(const SoftStepSettings& soft)
 {
-    Require(soft.substeps >= 1,
-            [&]
-            {
-                return "SolverSettings::softStep.substeps: must be >= 1, got " +
-                       std::to_string(soft.substeps);
-            });
-    Require(soft.relaxIterations >= 0,
-            [&]
-            {
-                return "SolverSettings::softStep.relaxIterations: must be >= 0, got " +
-                       std::to_string(soft.relaxIterations);
-            });
-    Require(soft.contacts == SoftContactModel::Rigid || soft.contacts == SoftContactModel::Soft,
-            [&]
-            {
-                return "SolverSettings::softStep.contacts: not a SoftContactModel (" +
-                       std::to_string(static_cast<int>(soft.contacts)) + ")";
-            });
-    Require(meff::IsValid(soft.contactCorrection) && soft.contactCorrection > 0 &&
-                soft.contactCorrection <= 1,
-            [&]
-            {
-                return "SolverSettings::softStep.contactCorrection: must be in (0, 1], got " +
-                       NumberText(soft.contactCorrection);
-            });
-    RequirePositive(soft.contactHertz, "SolverSettings::softStep.contactHertz");
-    RequireNonNegative(soft.contactDampingRatio, "SolverSettings::softStep.contactDampingRatio");
-    RequirePositive(soft.jointHertz, "SolverSettings::softStep.jointHertz");
-    RequireNonNegative(soft.jointDampingRatio, "SolverSettings::softStep.jointDampingRatio");
-    RequirePositive(soft.maxPushOutSpeed, "SolverSettings::softStep.maxPushOutSpeed");
+    return Require(soft.substeps >= 1,
+                   [&]
+                   {
+                       return "SolverSettings::softStep.substeps: must be >= 1, got " +
+                              std::to_string(soft.substeps);
+                   }) &&
+           Require(soft.relaxIterations >= 0,
+                   [&]
+                   {
+                       return "SolverSettings::softStep.relaxIterations: must be >= 0, got " +
+                              std::to_string(soft.relaxIterations);
+                   }) &&
+           Require(soft.contacts == SoftContactModel::Rigid ||
+                       soft.contacts == SoftContactModel::Soft,
+                   [&]
+                   {
+                       return "SolverSettings::softStep.contacts: not a SoftContactModel (" +
+                              std::to_string(static_cast<int>(soft.contacts)) + ")";
+                   }) &&
+           Require(
+               meff::IsValid(soft.contactCorrection) && soft.contactCorrection > 0 &&
+                   soft.contactCorrection <= 1,
+               [&]
+               {
+                   return "SolverSettings::softStep.contactCorrection: must be in (0, 1], got " +
+                          NumberText(soft.contactCorrection);
+               }) &&
+           RequirePositive(soft.contactHertz, "SolverSettings::softStep.contactHertz") &&
+           RequireNonNegative(soft.contactDampingRatio,
+                              "SolverSettings::softStep.contactDampingRatio") &&
+           RequirePositive(soft.jointHertz, "SolverSettings::softStep.jointHertz") &&
+           RequireNonNegative(soft.jointDampingRatio,
+                              "SolverSettings::softStep.jointDampingRatio") &&
+           RequirePositive(soft.maxPushOutSpeed, "SolverSettings::softStep.maxPushOutSpeed");
 }
 
 /// Looks an id up in a pool (a Pool or a const Pool), refusing null, out-of-range and stale
-/// ids: Pool::Resolve, as World's calls write it.
+/// ids: Pool::Resolve, as World's calls write it (reported, then nullptr).
 template <typename Pool, typename IdType>
-auto& Resolve(Pool& pool, IdType id, const char* kind)
+[[nodiscard]] auto* Resolve(Pool& pool, IdType id, const char* kind)
 {
     return pool.Resolve(id, kind);
+}
+
+/// What a refused call that returns a reference returns: a value-initialized T.
+template <typename T>
+const T& Nothing()
+{
+    static const T none{};
+    return none;
 }
 
 /// A shape's mass data (ComputeMass at its density).
@@ -193,7 +204,10 @@ const char* SolverKindName(SolverKind kind)
 
 Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
 {
-    RequirePositive(lengthUnitsPerMeter, "TolerancesForLengthUnits");
+    if (!RequirePositive(lengthUnitsPerMeter, "TolerancesForLengthUnits"))
+    {
+        return {};
+    }
     Tolerances t;
     t.linearSlop *= lengthUnitsPerMeter;
     t.polygonSkin *= lengthUnitsPerMeter;
@@ -205,9 +219,41 @@ Tolerances TolerancesForLengthUnits(Real lengthUnitsPerMeter)
     return t;
 }
 
-World::World(const WorldDef& def)
+namespace
 {
-    RequireFinite(def.gravity, "WorldDef::gravity");
+
+/// The rules of SetSolverSettings.
+[[nodiscard]] bool RequireSolverSettings(const SolverSettings& settings)
+{
+    return Require(settings.velocityIterations >= 1,
+                   [&]
+                   {
+                       return std::string("SolverSettings::velocityIterations: must be >= 1, got " +
+                                          std::to_string(settings.velocityIterations));
+                   }) &&
+           Require(settings.positionIterations >= 0,
+                   [&]
+                   {
+                       return std::string("SolverSettings::positionIterations: must be >= 0, got " +
+                                          std::to_string(settings.positionIterations));
+                   }) &&
+           Require(settings.kind == SolverKind::Box2D || settings.kind == SolverKind::Colour ||
+                       settings.kind == SolverKind::SoftStep,
+                   [&]
+                   {
+                       return "SolverSettings::kind: not a SolverKind (" +
+                              std::to_string(static_cast<int>(settings.kind)) + ")";
+                   }) &&
+           RequireSoftStepSettings(settings.softStep);
+}
+
+/// The rules of World's constructor.
+[[nodiscard]] bool RequireWorldDef(const WorldDef& def)
+{
+    if (!RequireFinite(def.gravity, "WorldDef::gravity"))
+    {
+        return false;
+    }
     const Tolerances& t = def.tolerances;
     const std::pair<const char*, Real> tolerances[] = {
         {"linearSlop", t.linearSlop},
@@ -226,10 +272,22 @@ World::World(const WorldDef& def)
         {"hitEventThreshold", t.hitEventThreshold}};
     for (const auto& [name, value] : tolerances)
     {
-        RequireNonNegative(value, (std::string("WorldDef::tolerances.") + name).c_str());
+        if (!RequireNonNegative(value, (std::string("WorldDef::tolerances.") + name).c_str()))
+        {
+            return false;
+        }
     }
-    m_state = std::make_unique<WorldState>(def);
-    SetSolverSettings(def.solver);
+    return RequireSolverSettings(def.solver);
+}
+
+} // namespace
+
+World::World(const WorldDef& def)
+{
+    // A refused definition throws; without exceptions it is reported and the World is built
+    // from the default WorldDef, so that it stays usable.
+    m_state = std::make_unique<WorldState>(RequireWorldDef(def) ? def : WorldDef{});
+    SetSolverSettings(m_state->solver);
 }
 
 World::~World() = default;
@@ -239,22 +297,25 @@ World& World::operator=(World&&) noexcept = default;
 namespace
 {
 
+/// A moved-from World has no state to work on: without exceptions the handler is called, then
+/// std::abort (docs/api-guide.md, "Errors").
 [[noreturn]] void ThrowMovedFrom()
 {
-    throw InvalidArgument("World: this World was moved from and has no state; use the World it "
-                          "was moved to, or assign a new one to it");
+    ReportFatalError(InvalidArgument("World: this World was moved from and has no state; use the "
+                                     "World it was moved to, or assign a new one to it"));
 }
 
 } // namespace
 
-void detail::RequireNotStepping(const WorldState& world, const char* call)
+bool detail::RequireNotStepping(const WorldState& world, const char* call)
 {
     if (world.stepping || world.callback != nullptr)
     {
-        throw InvalidArgument(std::string(call) + ": called during World::Step (from " +
-                              (world.callback != nullptr ? world.callback : "a callback") +
-                              "); the callback must not change the world");
+        return Refuse(InvalidArgument(std::string(call) + ": called during World::Step (from " +
+                                      (world.callback != nullptr ? world.callback : "a callback") +
+                                      "); the callback must not change the world"));
     }
+    return true;
 }
 
 WorldState& World::State()
@@ -281,14 +342,17 @@ const WorldState& World::State() const
 BodyId World::CreateBody(const BodyDef& def)
 {
     WorldState& world = State();
-    RequireNotStepping(world, "World::CreateBody");
-    RequireFinite(def.position, "BodyDef::position");
-    RequireFinite(def.angle, "BodyDef::angle");
-    RequireFinite(def.linearVelocity, "BodyDef::linearVelocity");
-    RequireFinite(def.angularVelocity, "BodyDef::angularVelocity");
-    RequireNonNegative(def.linearDamping, "BodyDef::linearDamping");
-    RequireNonNegative(def.angularDamping, "BodyDef::angularDamping");
-    RequireFinite(def.gravityScale, "BodyDef::gravityScale");
+    if (!RequireNotStepping(world, "World::CreateBody") ||
+        !RequireFinite(def.position, "BodyDef::position") ||
+        !RequireFinite(def.angle, "BodyDef::angle") ||
+        !RequireFinite(def.linearVelocity, "BodyDef::linearVelocity") ||
+        !RequireFinite(def.angularVelocity, "BodyDef::angularVelocity") ||
+        !RequireNonNegative(def.linearDamping, "BodyDef::linearDamping") ||
+        !RequireNonNegative(def.angularDamping, "BodyDef::angularDamping") ||
+        !RequireFinite(def.gravityScale, "BodyDef::gravityScale"))
+    {
+        return {};
+    }
 
     const BodyId id = world.bodies.Allocate();
     const std::int32_t index = id.index;
@@ -325,8 +389,16 @@ BodyId World::CreateBody(const BodyDef& def)
 void World::DestroyBody(BodyId id)
 {
     WorldState& world = State();
-    RequireNotStepping(world, "World::DestroyBody");
-    Body& body = Resolve(world.bodies, id, "body");
+    if (!RequireNotStepping(world, "World::DestroyBody"))
+    {
+        return;
+    }
+    auto* const found = Resolve(world.bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
     BuildContactReports(world); // the last step's reports still name this body
     // Bodies resting on this one must not sleep on in mid-air. Box2D 2.4.1 wakes only the
     // jointed bodies (through DestroyJoint); meff also wakes the touching ones.
@@ -377,64 +449,88 @@ bool World::IsValid(BodyId id) const
 
 BodyType World::GetType(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").type;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->type : BodyType{};
 }
 Vec2 World::GetPosition(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").xf.p;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->xf.p : Vec2{};
 }
 Real World::GetAngle(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").sweep.a;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->sweep.a : Real{};
 }
 Transform World::GetTransform(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").xf;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->xf : Transform{};
 }
 Vec2 World::GetWorldCenter(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").sweep.c;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->sweep.c : Vec2{};
 }
 Vec2 World::GetLocalCenter(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").sweep.localCenter;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->sweep.localCenter : Vec2{};
 }
 Vec2 World::GetLinearVelocity(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").linearVelocity;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->linearVelocity : Vec2{};
 }
 Real World::GetAngularVelocity(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").angularVelocity;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->angularVelocity : Real{};
 }
 Real World::GetMass(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").mass;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->mass : Real{};
 }
 Real World::GetRotationalInertia(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").I;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->I : Real{};
 }
 std::uint64_t World::GetUserData(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").userData;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->userData : std::uint64_t{};
 }
 Vec2 World::GetWorldPoint(BodyId id, Vec2 localPoint) const
 {
-    return Mul(Resolve(State().bodies, id, "body").xf, localPoint);
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? Mul(found->xf, localPoint) : Vec2{};
 }
 Vec2 World::GetLocalPoint(BodyId id, Vec2 worldPoint) const
 {
-    return MulT(Resolve(State().bodies, id, "body").xf, worldPoint);
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? MulT(found->xf, worldPoint) : Vec2{};
 }
 
 void World::SetTransform(BodyId id, Vec2 position, Real angle)
 {
     WorldState& world = State();
-    RequireNotStepping(world, "World::SetTransform");
-    Body& body = Resolve(world.bodies, id, "body");
-    RequireFinite(position, "World::SetTransform: position");
-    RequireFinite(angle, "World::SetTransform: angle");
+    if (!RequireNotStepping(world, "World::SetTransform"))
+    {
+        return;
+    }
+    auto* const found = Resolve(world.bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(position, "World::SetTransform: position") ||
+        !RequireFinite(angle, "World::SetTransform: angle"))
+    {
+        return;
+    }
     BuildContactReports(world); // the last step's reports are where the step left the body
     body.xf.Set(position, angle);
     body.sweep.c = Mul(body.xf, body.sweep.localCenter);
@@ -457,9 +553,20 @@ void World::SetTransform(BodyId id, Vec2 position, Real angle)
 
 void World::SetLinearVelocity(BodyId id, Vec2 v)
 {
-    RequireNotStepping(State(), "World::SetLinearVelocity");
-    Body& body = Resolve(State().bodies, id, "body");
-    RequireFinite(v, "World::SetLinearVelocity: v");
+    if (!RequireNotStepping(State(), "World::SetLinearVelocity"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(v, "World::SetLinearVelocity: v"))
+    {
+        return;
+    }
     if (body.type == BodyType::Static)
     {
         return;
@@ -473,9 +580,20 @@ void World::SetLinearVelocity(BodyId id, Vec2 v)
 
 void World::SetAngularVelocity(BodyId id, Real w)
 {
-    RequireNotStepping(State(), "World::SetAngularVelocity");
-    Body& body = Resolve(State().bodies, id, "body");
-    RequireFinite(w, "World::SetAngularVelocity: w");
+    if (!RequireNotStepping(State(), "World::SetAngularVelocity"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(w, "World::SetAngularVelocity: w"))
+    {
+        return;
+    }
     if (body.type == BodyType::Static)
     {
         return;
@@ -509,10 +627,21 @@ bool TakesLoad(Body& body, bool wake)
 
 void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake)
 {
-    RequireNotStepping(State(), "World::ApplyForce");
-    Body& body = Resolve(State().bodies, id, "body");
-    RequireFinite(force, "World::ApplyForce: force");
-    RequireFinite(worldPoint, "World::ApplyForce: point");
+    if (!RequireNotStepping(State(), "World::ApplyForce"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(force, "World::ApplyForce: force") ||
+        !RequireFinite(worldPoint, "World::ApplyForce: point"))
+    {
+        return;
+    }
     if (TakesLoad(body, wake))
     {
         body.force += force;
@@ -522,9 +651,20 @@ void World::ApplyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake)
 
 void World::ApplyForceToCenter(BodyId id, Vec2 force, bool wake)
 {
-    RequireNotStepping(State(), "World::ApplyForceToCenter");
-    Body& body = Resolve(State().bodies, id, "body");
-    RequireFinite(force, "World::ApplyForceToCenter: force");
+    if (!RequireNotStepping(State(), "World::ApplyForceToCenter"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(force, "World::ApplyForceToCenter: force"))
+    {
+        return;
+    }
     if (TakesLoad(body, wake))
     {
         body.force += force;
@@ -533,9 +673,20 @@ void World::ApplyForceToCenter(BodyId id, Vec2 force, bool wake)
 
 void World::ApplyTorque(BodyId id, Real torque, bool wake)
 {
-    RequireNotStepping(State(), "World::ApplyTorque");
-    Body& body = Resolve(State().bodies, id, "body");
-    RequireFinite(torque, "World::ApplyTorque: torque");
+    if (!RequireNotStepping(State(), "World::ApplyTorque"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(torque, "World::ApplyTorque: torque"))
+    {
+        return;
+    }
     if (TakesLoad(body, wake))
     {
         body.torque += torque;
@@ -544,10 +695,21 @@ void World::ApplyTorque(BodyId id, Real torque, bool wake)
 
 void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake)
 {
-    RequireNotStepping(State(), "World::ApplyLinearImpulse");
-    Body& body = Resolve(State().bodies, id, "body");
-    RequireFinite(impulse, "World::ApplyLinearImpulse: impulse");
-    RequireFinite(worldPoint, "World::ApplyLinearImpulse: point");
+    if (!RequireNotStepping(State(), "World::ApplyLinearImpulse"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(impulse, "World::ApplyLinearImpulse: impulse") ||
+        !RequireFinite(worldPoint, "World::ApplyLinearImpulse: point"))
+    {
+        return;
+    }
     if (TakesLoad(body, wake))
     {
         body.linearVelocity += body.invMass * impulse;
@@ -557,9 +719,20 @@ void World::ApplyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wa
 
 void World::ApplyAngularImpulse(BodyId id, Real impulse, bool wake)
 {
-    RequireNotStepping(State(), "World::ApplyAngularImpulse");
-    Body& body = Resolve(State().bodies, id, "body");
-    RequireFinite(impulse, "World::ApplyAngularImpulse: impulse");
+    if (!RequireNotStepping(State(), "World::ApplyAngularImpulse"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
+    if (!RequireFinite(impulse, "World::ApplyAngularImpulse: impulse"))
+    {
+        return;
+    }
     if (TakesLoad(body, wake))
     {
         body.angularVelocity += body.invI * impulse;
@@ -568,13 +741,22 @@ void World::ApplyAngularImpulse(BodyId id, Real impulse, bool wake)
 
 bool World::IsAwake(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").awake;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->awake : bool{};
 }
 
 void World::SetAwake(BodyId id, bool awake)
 {
-    RequireNotStepping(State(), "World::SetAwake");
-    Body& body = Resolve(State().bodies, id, "body");
+    if (!RequireNotStepping(State(), "World::SetAwake"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
     if (awake)
     {
         WakeBody(body);
@@ -587,13 +769,22 @@ void World::SetAwake(BodyId id, bool awake)
 
 bool World::IsSleepingAllowed(BodyId id) const
 {
-    return Resolve(State().bodies, id, "body").allowSleep;
+    const auto* const found = Resolve(State().bodies, id, "body");
+    return found != nullptr ? found->allowSleep : bool{};
 }
 
 void World::SetSleepingAllowed(BodyId id, bool allowed)
 {
-    RequireNotStepping(State(), "World::SetSleepingAllowed");
-    Body& body = Resolve(State().bodies, id, "body");
+    if (!RequireNotStepping(State(), "World::SetSleepingAllowed"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Body& body = *found;
     body.allowSleep = allowed;
     if (!allowed)
     {
@@ -614,30 +805,53 @@ namespace
 
 /// A dynamic body must be able to take the new shape's mass: the shape's own mass and
 /// inertia, and the body's with it (meff/validity.h), checked before anything changes.
-void RequireMassAccepted(const WorldState& world, const Body& body, const Shape& shape)
+[[nodiscard]] bool RequireMassAccepted(const WorldState& world, const Body& body,
+                                       const Shape& shape)
 {
     if (body.type != BodyType::Dynamic || !HasMass(shape))
     {
-        return;
+        return true;
     }
     const Real density = shape.def.density;
-    Require(shape.type == ShapeType::Circle ? CheckMass(shape.circle, density, body.fixedRotation)
-            : shape.type == ShapeType::Capsule
-                ? CheckMass(shape.capsule, density, body.fixedRotation)
-            : shape.rounded ? CheckRoundedMass(shape.polygon, density, body.fixedRotation)
-                            : CheckMass(shape.polygon, density, body.fixedRotation));
+    if (!Require(shape.type == ShapeType::Circle
+                     ? CheckMass(shape.circle, density, body.fixedRotation)
+                 : shape.type == ShapeType::Capsule
+                     ? CheckMass(shape.capsule, density, body.fixedRotation)
+                 : shape.rounded ? CheckRoundedMass(shape.polygon, density, body.fixedRotation)
+                                 : CheckMass(shape.polygon, density, body.fixedRotation)))
+    {
+        return false;
+    }
     std::vector<MassData> masses = ShapeMasses(world, body);
     masses.insert(masses.begin(), ShapeMass(shape)); // the new shape will be the newest
-    Require(CheckBodyMass(masses, body.fixedRotation));
+    if (!Require(CheckBodyMass(masses, body.fixedRotation)))
+    {
+        return false;
+    }
+    return true;
 }
 
 ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape prototype)
 {
-    RequireNotStepping(world, "World::CreateShape");
-    Body& body = Resolve(world.bodies, bodyId, "body");
-    Require(CheckShapeDef(def));
+    if (!RequireNotStepping(world, "World::CreateShape"))
+    {
+        return {};
+    }
+    auto* const found = Resolve(world.bodies, bodyId, "body");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    Body& body = *found;
+    if (!Require(CheckShapeDef(def)))
+    {
+        return {};
+    }
     prototype.def = def;
-    RequireMassAccepted(world, body, prototype);
+    if (!RequireMassAccepted(world, body, prototype))
+    {
+        return {};
+    }
     const ShapeId id = world.shapes.Allocate(std::move(prototype));
     const std::int32_t index = id.index;
     Shape& shape = world.shapes[index];
@@ -664,7 +878,10 @@ ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape pr
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Circle& circle)
 {
-    Require(CheckCircle(circle));
+    if (!Require(CheckCircle(circle)))
+    {
+        return {};
+    }
     Shape shape;
     shape.type = ShapeType::Circle;
     shape.circle = circle;
@@ -675,8 +892,10 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& poly
 {
     // Polygon is a public struct, so one built by hand reaches CreateShape without
     // MakePolygon's checks: the same rule is applied here (found by the hostile-input tests).
-    Require(CheckPolygon(polygon));
-    Require(CheckPolygonRadius(polygon));
+    if (!Require(CheckPolygon(polygon)) || !Require(CheckPolygonRadius(polygon)))
+    {
+        return {};
+    }
     Shape shape;
     shape.type = ShapeType::Polygon;
     shape.polygon = polygon;
@@ -689,7 +908,10 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Polygon& poly
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Capsule& capsule)
 {
-    Require(CheckCapsule(capsule, State().tolerances.linearSlop));
+    if (!Require(CheckCapsule(capsule, State().tolerances.linearSlop)))
+    {
+        return {};
+    }
     Shape shape;
     shape.type = ShapeType::Capsule;
     shape.capsule = capsule;
@@ -701,24 +923,28 @@ namespace
 {
 
 /// Box2D asserts this of edges and of every link of a chain.
-void RequireValidSegment(const Segment& segment, const Tolerances& tolerances, const char* where)
+[[nodiscard]] bool RequireValidSegment(const Segment& segment, const Tolerances& tolerances,
+                                       const char* where)
 {
-    RequireFinite(segment.point1, (std::string(where) + "::point1").c_str());
-    RequireFinite(segment.point2, (std::string(where) + "::point2").c_str());
-    Require(!CheckSegment(segment, tolerances.linearSlop), // the rule of meff/validity.h
-            [&]
-            {
-                return std::string(where) +
-                       ": points must be further apart than the linear slop, got " +
-                       NumberText(segment.point1) + " and " + NumberText(segment.point2);
-            });
+    return RequireFinite(segment.point1, (std::string(where) + "::point1").c_str()) &&
+           RequireFinite(segment.point2, (std::string(where) + "::point2").c_str()) &&
+           Require(!CheckSegment(segment, tolerances.linearSlop), // the rule of meff/validity.h
+                   [&]
+                   {
+                       return std::string(where) +
+                              ": points must be further apart than the linear slop, got " +
+                              NumberText(segment.point1) + " and " + NumberText(segment.point2);
+                   });
 }
 
 } // namespace
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segment)
 {
-    RequireValidSegment(segment, State().tolerances, "Segment");
+    if (!RequireValidSegment(segment, State().tolerances, "Segment"))
+    {
+        return {};
+    }
     Shape shape;
     shape.type = ShapeType::Segment;
     shape.segment = segment;
@@ -728,13 +954,19 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const Segment& segm
 
 ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const ChainSegment& segment)
 {
-    RequireValidSegment(segment.segment, State().tolerances, "ChainSegment::segment");
+    if (!RequireValidSegment(segment.segment, State().tolerances, "ChainSegment::segment"))
+    {
+        return {};
+    }
     // A ghost on its end point would give the end no direction to meet: the same rule as
     // for the segment's length.
-    RequireValidSegment({segment.ghost1, segment.segment.point1}, State().tolerances,
-                        "ChainSegment (ghost1 to point1)");
-    RequireValidSegment({segment.segment.point2, segment.ghost2}, State().tolerances,
-                        "ChainSegment (point2 to ghost2)");
+    if (!RequireValidSegment({segment.ghost1, segment.segment.point1}, State().tolerances,
+                             "ChainSegment (ghost1 to point1)") ||
+        !RequireValidSegment({segment.segment.point2, segment.ghost2}, State().tolerances,
+                             "ChainSegment (point2 to ghost2)"))
+    {
+        return {};
+    }
     Shape shape;
     shape.type = ShapeType::ChainSegment;
     shape.chainSegment = segment;
@@ -745,14 +977,25 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const ChainSegment&
 void World::DestroyShape(ShapeId id)
 {
     WorldState& world = State();
-    RequireNotStepping(world, "World::DestroyShape");
-    Shape& shape = Resolve(world.shapes, id, "shape");
-    Require(shape.chain < 0,
-            [&]
-            {
-                return std::string("World::DestroyShape: the shape is a segment of a chain; "
-                                   "destroy the whole chain with DestroyChain");
-            });
+    if (!RequireNotStepping(world, "World::DestroyShape"))
+    {
+        return;
+    }
+    auto* const found = Resolve(world.shapes, id, "shape");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Shape& shape = *found;
+    if (!Require(shape.chain < 0,
+                 [&]
+                 {
+                     return std::string("World::DestroyShape: the shape is a segment of a chain; "
+                                        "destroy the whole chain with DestroyChain");
+                 }))
+    {
+        return;
+    }
     BuildContactReports(world); // the last step's reports still name this shape
     Body& body = world.bodies[shape.body];
     WakeTouchingBodies(world, shape.body, id.index); // departs from Box2D 2.4.1, see world.h
@@ -779,55 +1022,105 @@ bool World::IsValid(ShapeId id) const
 
 BodyId World::GetBody(ShapeId id) const
 {
-    const Shape& shape = Resolve(State().shapes, id, "shape");
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Shape& shape = *found;
     return {shape.body, State().bodies[shape.body].generation};
 }
 ShapeType World::GetShapeType(ShapeId id) const
 {
-    return Resolve(State().shapes, id, "shape").type;
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    return found != nullptr ? found->type : ShapeType{};
 }
 const Circle& World::GetCircle(ShapeId id) const
 {
-    const Shape& shape = Resolve(State().shapes, id, "shape");
-    Require(shape.type == ShapeType::Circle,
-            [&] { return std::string("World::GetCircle: the shape is not a circle"); });
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    if (found == nullptr)
+    {
+        return Nothing<Circle>();
+    }
+    const Shape& shape = *found;
+    if (!Require(shape.type == ShapeType::Circle,
+                 [&] { return std::string("World::GetCircle: the shape is not a circle"); }))
+    {
+        return Nothing<Circle>();
+    }
     return shape.circle;
 }
 const Polygon& World::GetPolygon(ShapeId id) const
 {
-    const Shape& shape = Resolve(State().shapes, id, "shape");
-    Require(shape.type == ShapeType::Polygon,
-            [&] { return std::string("World::GetPolygon: the shape is not a polygon"); });
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    if (found == nullptr)
+    {
+        return Nothing<Polygon>();
+    }
+    const Shape& shape = *found;
+    if (!Require(shape.type == ShapeType::Polygon,
+                 [&] { return std::string("World::GetPolygon: the shape is not a polygon"); }))
+    {
+        return Nothing<Polygon>();
+    }
     return shape.polygon;
 }
 const Capsule& World::GetCapsule(ShapeId id) const
 {
-    const Shape& shape = Resolve(State().shapes, id, "shape");
-    Require(shape.type == ShapeType::Capsule,
-            [&] { return std::string("World::GetCapsule: the shape is not a capsule"); });
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    if (found == nullptr)
+    {
+        return Nothing<Capsule>();
+    }
+    const Shape& shape = *found;
+    if (!Require(shape.type == ShapeType::Capsule,
+                 [&] { return std::string("World::GetCapsule: the shape is not a capsule"); }))
+    {
+        return Nothing<Capsule>();
+    }
     return shape.capsule;
 }
 const Segment& World::GetSegment(ShapeId id) const
 {
-    const Shape& shape = Resolve(State().shapes, id, "shape");
-    Require(shape.type == ShapeType::Segment,
-            [&] { return std::string("World::GetSegment: the shape is not a segment"); });
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    if (found == nullptr)
+    {
+        return Nothing<Segment>();
+    }
+    const Shape& shape = *found;
+    if (!Require(shape.type == ShapeType::Segment,
+                 [&] { return std::string("World::GetSegment: the shape is not a segment"); }))
+    {
+        return Nothing<Segment>();
+    }
     return shape.segment;
 }
 const ChainSegment& World::GetChainSegment(ShapeId id) const
 {
-    const Shape& shape = Resolve(State().shapes, id, "shape");
-    Require(shape.type == ShapeType::ChainSegment, [&]
-            { return std::string("World::GetChainSegment: the shape is not a chain segment"); });
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    if (found == nullptr)
+    {
+        return Nothing<ChainSegment>();
+    }
+    const Shape& shape = *found;
+    if (!Require(shape.type == ShapeType::ChainSegment,
+                 [&] {
+                     return std::string("World::GetChainSegment: the shape is not a chain segment");
+                 }))
+    {
+        return Nothing<ChainSegment>();
+    }
     return shape.chainSegment;
 }
 const ShapeDef& World::GetShapeDef(ShapeId id) const
 {
-    return Resolve(State().shapes, id, "shape").def;
+    const auto* const found = Resolve(State().shapes, id, "shape");
+    return found != nullptr ? found->def : Nothing<ShapeDef>();
 }
 std::vector<ShapeId> World::GetShapes(BodyId body) const
 {
-    return Resolve(State().bodies, body, "body").shapeIds;
+    const auto* const found = Resolve(State().bodies, body, "body");
+    return found != nullptr ? found->shapeIds : std::vector<ShapeId>{};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -836,8 +1129,13 @@ std::vector<ShapeId> World::GetShapes(BodyId body) const
 namespace
 {
 
+/// Adds a joint MakeJoint made; a joint it refused (reported, no bodies) adds nothing.
 JointId AddJoint(WorldState& world, Joint joint)
 {
+    if (joint.bodyA == kNullIndex)
+    {
+        return {};
+    }
     const JointId id = world.joints.Allocate();
     const std::int32_t index = id.index;
     JointSlot& slot = world.joints[index];
@@ -864,25 +1162,46 @@ JointId AddJoint(WorldState& world, Joint joint)
 }
 
 /// Both ids live, and the pair allowed for this joint type (meff/validity.h).
-void RequireTwoBodies(WorldState& world, JointType type, BodyId a, BodyId b)
+[[nodiscard]] bool RequireTwoBodies(WorldState& world, JointType type, BodyId a, BodyId b)
 {
-    RequireNotStepping(world, "World::CreateJoint");
-    Resolve(world.bodies, a, "body");
-    const Body& bodyB = Resolve(world.bodies, b, "body");
-    Require(CheckJointBodies(type, a == b, bodyB.type));
+    if (!RequireNotStepping(world, "World::CreateJoint"))
+    {
+        return false;
+    }
+    if (Resolve(world.bodies, a, "body") == nullptr)
+    {
+        return false;
+    }
+    const auto* const found = Resolve(world.bodies, b, "body");
+    if (found == nullptr)
+    {
+        return false;
+    }
+    const Body& bodyB = *found;
+    if (!Require(CheckJointBodies(type, a == b, bodyB.type)))
+    {
+        return false;
+    }
+    return true;
 }
 
 } // namespace
 
 JointId World::CreateJoint(const RevoluteJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Revolute, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Revolute, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const DistanceJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Distance, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Distance, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass,
@@ -891,7 +1210,10 @@ JointId World::CreateJoint(const DistanceJointDef& def)
 
 JointId World::CreateJoint(const PrismaticJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Prismatic, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Prismatic, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
@@ -909,7 +1231,10 @@ Real InertiaAboutOrigin(const Body& body)
 
 JointId World::CreateJoint(const WeldJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Weld, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Weld, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, InertiaAboutOrigin(a),
@@ -918,13 +1243,19 @@ JointId World::CreateJoint(const WeldJointDef& def)
 
 JointId World::CreateJoint(const MotorJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Motor, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Motor, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const WheelJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Wheel, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Wheel, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass));
@@ -932,41 +1263,64 @@ JointId World::CreateJoint(const WheelJointDef& def)
 
 JointId World::CreateJoint(const FrictionJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Friction, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Friction, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const PulleyJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Pulley, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Pulley, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index));
 }
 
 JointId World::CreateJoint(const GearJointDef& def)
 {
     WorldState& world = State();
-    RequireNotStepping(world, "World::CreateJoint");
-    const Joint& joint1 = Resolve(world.joints, def.joint1, "joint").joint;
-    const Joint& joint2 = Resolve(world.joints, def.joint2, "joint").joint;
+    if (!RequireNotStepping(world, "World::CreateJoint"))
+    {
+        return {};
+    }
+    const auto* const slot1 = Resolve(world.joints, def.joint1, "joint");
+    if (slot1 == nullptr)
+    {
+        return {};
+    }
+    const auto* const slot2 = Resolve(world.joints, def.joint2, "joint");
+    if (slot2 == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint1 = slot1->joint;
+    const Joint& joint2 = slot2->joint;
     const auto requireGearable = [&](const Joint& joint, const char* field)
     {
         if (joint.type != JointType::Revolute && joint.type != JointType::Prismatic)
         {
-            throw InvalidArgument(std::string("GearJointDef::") + field +
-                                  ": must be a revolute or prismatic joint");
+            return Refuse(InvalidArgument(std::string("GearJointDef::") + field +
+                                          ": must be a revolute or prismatic joint"));
         }
-        if (world.bodies[joint.bodyB].type != BodyType::Dynamic)
-        {
-            // The gear moves the joint's body B; Box2D 2.4.1 asserts the same.
-            throw InvalidArgument(std::string("GearJointDef::") + field +
-                                  ": its body B must be dynamic (the gear turns it)");
-        }
+        // The gear moves the joint's body B; Box2D 2.4.1 asserts the same.
+        return Require(world.bodies[joint.bodyB].type == BodyType::Dynamic,
+                       [&]
+                       {
+                           return std::string("GearJointDef::") + field +
+                                  ": its body B must be dynamic (the gear turns it)";
+                       });
     };
-    requireGearable(joint1, "joint1");
-    requireGearable(joint2, "joint2");
+    if (!requireGearable(joint1, "joint1") || !requireGearable(joint2, "joint2"))
+    {
+        return {};
+    }
     if (def.joint1 == def.joint2)
     {
-        throw InvalidArgument("GearJointDef::joint2: must be a different joint from joint1");
+        ReportError(InvalidArgument("GearJointDef::joint2: must be a different joint from joint1"));
+        return {};
     }
     const auto pose = [&](std::int32_t body) {
         return GearPose{world.bodies[body].xf, world.bodies[body].sweep.a};
@@ -977,7 +1331,10 @@ JointId World::CreateJoint(const GearJointDef& def)
 
 JointId World::CreateJoint(const MouseJointDef& def)
 {
-    RequireTwoBodies(State(), JointType::Mouse, def.bodyA, def.bodyB);
+    if (!RequireTwoBodies(State(), JointType::Mouse, def.bodyA, def.bodyB))
+    {
+        return {};
+    }
     const Body& a = State().bodies[def.bodyA.index];
     const Body& b = State().bodies[def.bodyB.index];
     return AddJoint(State(), MakeJoint(def, def.bodyA.index, def.bodyB.index, a.mass, b.mass, b.xf,
@@ -986,12 +1343,26 @@ JointId World::CreateJoint(const MouseJointDef& def)
 
 void World::SetMouseTarget(JointId id, Vec2 target)
 {
-    RequireNotStepping(State(), "World::SetMouseTarget");
-    Joint& joint = Resolve(State().joints, id, "joint").joint;
+    if (!RequireNotStepping(State(), "World::SetMouseTarget"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Joint& joint = found->joint;
     auto* mouse = std::get_if<MouseJoint>(&joint.data);
-    Require(mouse != nullptr,
-            [&] { return std::string("World::SetMouseTarget: the joint is not a mouse joint"); });
-    RequireFinite(target, "World::SetMouseTarget: target");
+    if (!Require(mouse != nullptr, [&]
+                 { return std::string("World::SetMouseTarget: the joint is not a mouse joint"); }))
+    {
+        return;
+    }
+    if (!RequireFinite(target, "World::SetMouseTarget: target"))
+    {
+        return;
+    }
     if (target != mouse->target)
     {
         // The pointer moved: the dragged body must follow (Box2D's SetTarget wakes it then;
@@ -1003,22 +1374,45 @@ void World::SetMouseTarget(JointId id, Vec2 target)
 
 Vec2 World::GetMouseTarget(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
     const auto* mouse = std::get_if<MouseJoint>(&joint.data);
-    Require(mouse != nullptr,
-            [&] { return std::string("World::GetMouseTarget: the joint is not a mouse joint"); });
+    if (!Require(mouse != nullptr, [&]
+                 { return std::string("World::GetMouseTarget: the joint is not a mouse joint"); }))
+    {
+        return {};
+    }
     return mouse->target;
 }
 
 void World::SetMotorJointOffsets(JointId id, Vec2 linearOffset, Real angularOffset)
 {
-    RequireNotStepping(State(), "World::SetMotorJointOffsets");
-    Joint& joint = Resolve(State().joints, id, "joint").joint;
+    if (!RequireNotStepping(State(), "World::SetMotorJointOffsets"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Joint& joint = found->joint;
     auto* motor = std::get_if<MotorJoint>(&joint.data);
-    Require(motor != nullptr, [&]
-            { return std::string("World::SetMotorJointOffsets: the joint is not a motor joint"); });
-    RequireFinite(linearOffset, "World::SetMotorJointOffsets: linearOffset");
-    RequireFinite(angularOffset, "World::SetMotorJointOffsets: angularOffset");
+    if (!Require(
+            motor != nullptr, [&]
+            { return std::string("World::SetMotorJointOffsets: the joint is not a motor joint"); }))
+    {
+        return;
+    }
+    if (!RequireFinite(linearOffset, "World::SetMotorJointOffsets: linearOffset") ||
+        !RequireFinite(angularOffset, "World::SetMotorJointOffsets: angularOffset"))
+    {
+        return;
+    }
     if (linearOffset != motor->linearOffset || angularOffset != motor->angularOffset)
     {
         // A new target pose moves the bodies: wake them, as Box2D's SetLinearOffset and
@@ -1054,8 +1448,14 @@ std::vector<JointId> GearsOf(const WorldState& world, JointId id)
 void World::DestroyJoint(JointId id)
 {
     WorldState& world = State();
-    RequireNotStepping(world, "World::DestroyJoint");
-    Resolve(world.joints, id, "joint");
+    if (!RequireNotStepping(world, "World::DestroyJoint"))
+    {
+        return;
+    }
+    if (Resolve(world.joints, id, "joint") == nullptr)
+    {
+        return;
+    }
     for (const JointId gear : GearsOf(world, id))
     {
         DestroyJoint(gear);
@@ -1092,32 +1492,54 @@ bool World::IsValid(JointId id) const
 
 JointType World::GetJointType(JointId id) const
 {
-    return Resolve(State().joints, id, "joint").joint.type;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    return found != nullptr ? found->joint.type : JointType{};
 }
 BodyId World::GetBodyA(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
     return {joint.bodyA, State().bodies[joint.bodyA].generation};
 }
 BodyId World::GetBodyB(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
     return {joint.bodyB, State().bodies[joint.bodyB].generation};
 }
 
 Vec2 World::GetAnchorA(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
     return JointAnchorA(joint, State().bodies[joint.bodyA].xf);
 }
 Vec2 World::GetAnchorB(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
     return JointAnchorB(joint, State().bodies[joint.bodyB].xf);
 }
 JointReaction World::GetReaction(JointId id, Real invDt) const
 {
-    return GetJointReaction(Resolve(State().joints, id, "joint").joint, invDt);
+    const auto* const found = Resolve(State().joints, id, "joint");
+    return found != nullptr ? GetJointReaction(found->joint, invDt) : JointReaction{};
 }
 std::vector<JointId> World::GetJoints() const
 {
@@ -1126,9 +1548,20 @@ std::vector<JointId> World::GetJoints() const
 
 void World::SetJointMotorSpeed(JointId id, Real speed)
 {
-    RequireNotStepping(State(), "World::SetJointMotorSpeed");
-    Joint& joint = Resolve(State().joints, id, "joint").joint;
-    RequireFinite(speed, "World::SetJointMotorSpeed: speed");
+    if (!RequireNotStepping(State(), "World::SetJointMotorSpeed"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Joint& joint = found->joint;
+    if (!RequireFinite(speed, "World::SetJointMotorSpeed: speed"))
+    {
+        return;
+    }
     Real* motorSpeed = nullptr;
     if (auto* r = std::get_if<RevoluteJoint>(&joint.data))
     {
@@ -1144,8 +1577,9 @@ void World::SetJointMotorSpeed(JointId id, Real speed)
     }
     else
     {
-        throw InvalidArgument("World::SetJointMotorSpeed: the joint has no motor (only "
-                              "revolute, prismatic and wheel joints do)");
+        ReportError(InvalidArgument("World::SetJointMotorSpeed: the joint has no motor (only "
+                                    "revolute, prismatic and wheel joints do)"));
+        return;
     }
     if (speed != *motorSpeed)
     {
@@ -1161,32 +1595,57 @@ namespace
 {
 
 /// References to a revolute or prismatic joint's spring members (enable, hertz, damping ratio,
-/// target: targetAngle or targetTranslation), const for a const joint; throws for other types.
+/// target: targetAngle or targetTranslation), const for a const joint; for other types, none
+/// (reported).
 template <typename JointT>
 auto SpringOf(JointT& joint, const char* caller)
 {
+    using Members = decltype(std::tie(std::get<RevoluteJoint>(joint.data).enableSpring,
+                                      std::get<RevoluteJoint>(joint.data).hertz,
+                                      std::get<RevoluteJoint>(joint.data).dampingRatio,
+                                      std::get<RevoluteJoint>(joint.data).targetAngle));
     if (auto* r = std::get_if<RevoluteJoint>(&joint.data))
     {
-        return std::tie(r->enableSpring, r->hertz, r->dampingRatio, r->targetAngle);
+        return std::optional<Members>(
+            std::tie(r->enableSpring, r->hertz, r->dampingRatio, r->targetAngle));
     }
     if (auto* p = std::get_if<PrismaticJoint>(&joint.data))
     {
-        return std::tie(p->enableSpring, p->hertz, p->dampingRatio, p->targetTranslation);
+        return std::optional<Members>(
+            std::tie(p->enableSpring, p->hertz, p->dampingRatio, p->targetTranslation));
     }
-    throw InvalidArgument(std::string("World::") + caller +
-                          ": the joint has no spring (only revolute and prismatic joints do)");
+    ReportError(
+        InvalidArgument(std::string("World::") + caller +
+                        ": the joint has no spring (only revolute and prismatic joints do)"));
+    return std::optional<Members>();
 }
 
 } // namespace
 
 void World::SetJointSpring(JointId id, const JointSpring& spring)
 {
-    RequireNotStepping(State(), "World::SetJointSpring");
-    Joint& joint = Resolve(State().joints, id, "joint").joint;
-    auto [enable, hertz, dampingRatio, target] = SpringOf(joint, "SetJointSpring");
-    RequireNonNegative(spring.hertz, "World::SetJointSpring: hertz");
-    RequireNonNegative(spring.dampingRatio, "World::SetJointSpring: dampingRatio");
-    RequireFinite(spring.target, "World::SetJointSpring: target");
+    if (!RequireNotStepping(State(), "World::SetJointSpring"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Joint& joint = found->joint;
+    auto members = SpringOf(joint, "SetJointSpring");
+    if (!members)
+    {
+        return;
+    }
+    auto [enable, hertz, dampingRatio, target] = *members;
+    if (!RequireNonNegative(spring.hertz, "World::SetJointSpring: hertz") ||
+        !RequireNonNegative(spring.dampingRatio, "World::SetJointSpring: dampingRatio") ||
+        !RequireFinite(spring.target, "World::SetJointSpring: target"))
+    {
+        return;
+    }
     if (spring.enable != enable || spring.hertz != hertz || spring.dampingRatio != dampingRatio ||
         spring.target != target)
     {
@@ -1203,8 +1662,18 @@ void World::SetJointSpring(JointId id, const JointSpring& spring)
 
 JointSpring World::GetJointSpring(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
-    const auto [enable, hertz, dampingRatio, target] = SpringOf(joint, "GetJointSpring");
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
+    const auto members = SpringOf(joint, "GetJointSpring");
+    if (!members)
+    {
+        return {};
+    }
+    const auto [enable, hertz, dampingRatio, target] = *members;
     return {enable, hertz, dampingRatio, target};
 }
 
@@ -1217,27 +1686,38 @@ struct SlideFrame
     Vec2 localAnchorA, localAnchorB, localAxisA;
 };
 
-/// The slide frame of a prismatic or wheel joint; throws for other types.
-SlideFrame GetSlideFrame(const Joint& joint, const char* caller)
+/// The slide frame of a prismatic or wheel joint; for other types, none (reported).
+std::optional<SlideFrame> GetSlideFrame(const Joint& joint, const char* caller)
 {
     if (const auto* p = std::get_if<PrismaticJoint>(&joint.data))
     {
-        return {p->localAnchorA, p->localAnchorB, p->localXAxisA};
+        return SlideFrame{p->localAnchorA, p->localAnchorB, p->localXAxisA};
     }
     if (const auto* w = std::get_if<WheelJoint>(&joint.data))
     {
-        return {w->localAnchorA, w->localAnchorB, w->localXAxisA};
+        return SlideFrame{w->localAnchorA, w->localAnchorB, w->localXAxisA};
     }
-    throw InvalidArgument(std::string("World::") + caller +
-                          ": only prismatic and wheel joints have an axis");
+    ReportError(InvalidArgument(std::string("World::") + caller +
+                                ": only prismatic and wheel joints have an axis"));
+    return std::nullopt;
 }
 
 } // namespace
 
 Real World::GetJointTranslation(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
-    const SlideFrame frame = GetSlideFrame(joint, "GetJointTranslation");
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
+    const auto frameOrNone = GetSlideFrame(joint, "GetJointTranslation");
+    if (!frameOrNone)
+    {
+        return {};
+    }
+    const SlideFrame frame = *frameOrNone;
     const Body& a = State().bodies[joint.bodyA];
     const Body& b = State().bodies[joint.bodyB];
     const Vec2 pA = Mul(a.xf, frame.localAnchorA);
@@ -1249,14 +1729,24 @@ Real World::GetJointTranslation(JointId id) const
 
 Real World::GetJointSpeed(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
     const Body& a = State().bodies[joint.bodyA];
     const Body& b = State().bodies[joint.bodyB];
     if (joint.type == JointType::Revolute)
     {
         return b.angularVelocity - a.angularVelocity;
     }
-    const SlideFrame frame = GetSlideFrame(joint, "GetJointSpeed");
+    const auto frameOrNone = GetSlideFrame(joint, "GetJointSpeed");
+    if (!frameOrNone)
+    {
+        return {};
+    }
+    const SlideFrame frame = *frameOrNone;
     // Cdot of the axial row: the axis turns with A, hence the d·(wA × axis) term.
     const Vec2 rA = Mul(a.xf.q, frame.localAnchorA - a.sweep.localCenter);
     const Vec2 rB = Mul(b.xf.q, frame.localAnchorB - b.sweep.localCenter);
@@ -1271,7 +1761,10 @@ Real World::GetJointSpeed(JointId id) const
 
 RevoluteJointDef World::MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
 {
-    RequireFinite(worldAnchor, "MakeRevoluteJointDef: anchor");
+    if (!RequireFinite(worldAnchor, "MakeRevoluteJointDef: anchor"))
+    {
+        return {};
+    }
     RevoluteJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1284,8 +1777,11 @@ RevoluteJointDef World::MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAncho
 DistanceJointDef World::MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAnchorA,
                                              Vec2 worldAnchorB) const
 {
-    RequireFinite(worldAnchorA, "MakeDistanceJointDef: anchorA");
-    RequireFinite(worldAnchorB, "MakeDistanceJointDef: anchorB");
+    if (!RequireFinite(worldAnchorA, "MakeDistanceJointDef: anchorA") ||
+        !RequireFinite(worldAnchorB, "MakeDistanceJointDef: anchorB"))
+    {
+        return {};
+    }
     DistanceJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1301,8 +1797,11 @@ DistanceJointDef World::MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAncho
 PrismaticJointDef World::MakePrismaticJointDef(BodyId a, BodyId b, Vec2 worldAnchor,
                                                Vec2 worldAxis) const
 {
-    RequireFinite(worldAnchor, "MakePrismaticJointDef: anchor");
-    RequireFinite(worldAxis, "MakePrismaticJointDef: axis");
+    if (!RequireFinite(worldAnchor, "MakePrismaticJointDef: anchor") ||
+        !RequireFinite(worldAxis, "MakePrismaticJointDef: axis"))
+    {
+        return {};
+    }
     PrismaticJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1315,8 +1814,11 @@ PrismaticJointDef World::MakePrismaticJointDef(BodyId a, BodyId b, Vec2 worldAnc
 
 WheelJointDef World::MakeWheelJointDef(BodyId a, BodyId b, Vec2 worldAnchor, Vec2 worldAxis) const
 {
-    RequireFinite(worldAnchor, "MakeWheelJointDef: anchor");
-    RequireFinite(worldAxis, "MakeWheelJointDef: axis");
+    if (!RequireFinite(worldAnchor, "MakeWheelJointDef: anchor") ||
+        !RequireFinite(worldAxis, "MakeWheelJointDef: axis"))
+    {
+        return {};
+    }
     WheelJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1328,7 +1830,10 @@ WheelJointDef World::MakeWheelJointDef(BodyId a, BodyId b, Vec2 worldAnchor, Vec
 
 WeldJointDef World::MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
 {
-    RequireFinite(worldAnchor, "MakeWeldJointDef: anchor");
+    if (!RequireFinite(worldAnchor, "MakeWeldJointDef: anchor"))
+    {
+        return {};
+    }
     WeldJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1350,7 +1855,10 @@ MotorJointDef World::MakeMotorJointDef(BodyId a, BodyId b) const
 
 FrictionJointDef World::MakeFrictionJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
 {
-    RequireFinite(worldAnchor, "MakeFrictionJointDef: anchor");
+    if (!RequireFinite(worldAnchor, "MakeFrictionJointDef: anchor"))
+    {
+        return {};
+    }
     FrictionJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1362,10 +1870,13 @@ FrictionJointDef World::MakeFrictionJointDef(BodyId a, BodyId b, Vec2 worldAncho
 PulleyJointDef World::MakePulleyJointDef(BodyId a, BodyId b, Vec2 groundAnchorA, Vec2 groundAnchorB,
                                          Vec2 anchorA, Vec2 anchorB, Real ratio) const
 {
-    RequireFinite(groundAnchorA, "MakePulleyJointDef: groundAnchorA");
-    RequireFinite(groundAnchorB, "MakePulleyJointDef: groundAnchorB");
-    RequireFinite(anchorA, "MakePulleyJointDef: anchorA");
-    RequireFinite(anchorB, "MakePulleyJointDef: anchorB");
+    if (!RequireFinite(groundAnchorA, "MakePulleyJointDef: groundAnchorA") ||
+        !RequireFinite(groundAnchorB, "MakePulleyJointDef: groundAnchorB") ||
+        !RequireFinite(anchorA, "MakePulleyJointDef: anchorA") ||
+        !RequireFinite(anchorB, "MakePulleyJointDef: anchorB"))
+    {
+        return {};
+    }
     PulleyJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1396,27 +1907,11 @@ const SolverSettings& World::GetSolverSettings() const
 }
 void World::SetSolverSettings(const SolverSettings& settings)
 {
-    RequireNotStepping(State(), "World::SetSolverSettings");
-    Require(settings.velocityIterations >= 1,
-            [&]
-            {
-                return std::string("SolverSettings::velocityIterations: must be >= 1, got " +
-                                   std::to_string(settings.velocityIterations));
-            });
-    Require(settings.positionIterations >= 0,
-            [&]
-            {
-                return std::string("SolverSettings::positionIterations: must be >= 0, got " +
-                                   std::to_string(settings.positionIterations));
-            });
-    Require(settings.kind == SolverKind::Box2D || settings.kind == SolverKind::Colour ||
-                settings.kind == SolverKind::SoftStep,
-            [&]
-            {
-                return "SolverSettings::kind: not a SolverKind (" +
-                       std::to_string(static_cast<int>(settings.kind)) + ")";
-            });
-    RequireSoftStepSettings(settings.softStep);
+    if (!RequireNotStepping(State(), "World::SetSolverSettings") ||
+        !RequireSolverSettings(settings))
+    {
+        return;
+    }
     WorldState& world = State();
     world.solver = settings;
     // The back end chooses how the broad phase fattens boxes and whether the narrow phase may
@@ -1431,8 +1926,11 @@ Vec2 World::GetGravity() const
 }
 void World::SetGravity(Vec2 gravity)
 {
-    RequireNotStepping(State(), "World::SetGravity");
-    RequireFinite(gravity, "World::SetGravity: gravity");
+    if (!RequireNotStepping(State(), "World::SetGravity") ||
+        !RequireFinite(gravity, "World::SetGravity: gravity"))
+    {
+        return;
+    }
     State().gravity = gravity;
 }
 const Tolerances& World::GetTolerances() const
@@ -1445,7 +1943,10 @@ bool World::GetContinuous() const
 }
 void World::SetContinuous(bool continuous)
 {
-    RequireNotStepping(State(), "World::SetContinuous");
+    if (!RequireNotStepping(State(), "World::SetContinuous"))
+    {
+        return;
+    }
     State().continuous = continuous;
 }
 Real World::GetLastStepInverseDt() const
@@ -1464,7 +1965,10 @@ bool World::GetAllowSleeping() const
 }
 void World::SetAllowSleeping(bool allow)
 {
-    RequireNotStepping(State(), "World::SetAllowSleeping");
+    if (!RequireNotStepping(State(), "World::SetAllowSleeping"))
+    {
+        return;
+    }
     WorldState& world = State();
     if (allow == world.allowSleep)
     {
@@ -1482,24 +1986,34 @@ void World::SetAllowSleeping(bool allow)
 
 void World::SetPreSolveCallback(PreSolveCallback callback)
 {
-    RequireNotStepping(State(), "World::SetPreSolveCallback");
+    if (!RequireNotStepping(State(), "World::SetPreSolveCallback"))
+    {
+        return;
+    }
     State().preSolve = std::move(callback);
 }
 
 void World::SetCustomFilterCallback(CustomFilterCallback callback)
 {
-    RequireNotStepping(State(), "World::SetCustomFilterCallback");
+    if (!RequireNotStepping(State(), "World::SetCustomFilterCallback"))
+    {
+        return;
+    }
     State().customFilter = std::move(callback);
 }
 
 void World::SetTaskSystem(TaskSystem* tasks)
 {
     WorldState& world = State();
-    RequireNotStepping(world, "World::SetTaskSystem");
+    if (!RequireNotStepping(world, "World::SetTaskSystem"))
+    {
+        return;
+    }
     if (tasks != nullptr && tasks->ThreadCount() < 1)
     {
-        throw InvalidArgument("World::SetTaskSystem: ThreadCount() is " +
-                              std::to_string(tasks->ThreadCount()) + ", must be at least 1");
+        ReportError(InvalidArgument("World::SetTaskSystem: ThreadCount() is " +
+                                    std::to_string(tasks->ThreadCount()) + ", must be at least 1"));
+        return;
     }
     world.tasks = tasks;
 }

@@ -7,6 +7,7 @@
 // created, moved and destroyed in the children's order, and the body's shape list holds them
 // together in that order where Box2D holds the chain fixture, so the broad phase, and so the
 // contacts and the solver, see exactly what Box2D's do.
+#include "core/report_error.h"
 #include "dynamics/step_stages.h"
 #include "dynamics/world_state.h"
 #include "meff/validity.h"
@@ -24,26 +25,30 @@ using namespace detail;
 namespace
 {
 
-[[noreturn]] void Refuse(const std::string& message)
+/// Reports the refusal of a chain; no segments.
+std::vector<ChainSegment> RefuseChain(const std::string& message)
 {
-    throw InvalidArgument("World::CreateChain: " + message);
+    ReportError(InvalidArgument("World::CreateChain: " + message));
+    return {};
 }
 
 /// The chain's segments with their ghosts, as b2ChainShape::CreateChain/CreateLoop and
-/// GetChildEdge make them. Throws for what Box2D asserts (and for a loop's closing link, which
-/// Box2D does not check).
+/// GetChildEdge make them. Refuses (reported, no segments) what Box2D asserts (and a loop's
+/// closing link, which Box2D does not check).
 std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
 {
     const std::size_t minimum = chain.loop ? 3 : 2;
     if (chain.points.size() < minimum)
     {
-        Refuse(std::string(chain.loop ? "a loop" : "an open chain") + " needs at least " +
-               std::to_string(minimum) + " points, got " + std::to_string(chain.points.size()));
+        return RefuseChain(std::string(chain.loop ? "a loop" : "an open chain") +
+                           " needs at least " + std::to_string(minimum) + " points, got " +
+                           std::to_string(chain.points.size()));
     }
     if (chain.loop && (chain.prev || chain.next))
     {
-        Refuse("a loop takes its ghost vertices from its own points: prev and next must be "
-               "unset");
+        return RefuseChain(
+            "a loop takes its ghost vertices from its own points: prev and next must be "
+            "unset");
     }
     // The vertices along the chain; a loop comes back to its first point.
     std::vector<Vec2> v(chain.points.begin(), chain.points.end());
@@ -55,14 +60,15 @@ std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
     {
         if (!v[i].IsValid())
         {
-            Refuse("points[" + std::to_string(i) + "]: must be finite, got " + NumberText(v[i]));
+            return RefuseChain("points[" + std::to_string(i) + "]: must be finite, got " +
+                               NumberText(v[i]));
         }
         if (i > 0 && DistanceSquared(v[i - 1], v[i]) <= linearSlop * linearSlop)
         {
-            Refuse("points " + std::to_string(i - 1) + " and " +
-                   std::to_string(i % chain.points.size()) +
-                   " must be further apart than the linear slop, got " + NumberText(v[i - 1]) +
-                   " and " + NumberText(v[i]));
+            return RefuseChain("points " + std::to_string(i - 1) + " and " +
+                               std::to_string(i % chain.points.size()) +
+                               " must be further apart than the linear slop, got " +
+                               NumberText(v[i - 1]) + " and " + NumberText(v[i]));
         }
     }
     const std::size_t m = v.size();
@@ -74,9 +80,10 @@ std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
         DistanceSquared(prev, v[0]) <= linearSlop * linearSlop ||
         DistanceSquared(next, v[m - 1]) <= linearSlop * linearSlop)
     {
-        Refuse("prev and next: must be finite and further than the linear slop from the first "
-               "and last points, got " +
-               NumberText(prev) + " and " + NumberText(next));
+        return RefuseChain(
+            "prev and next: must be finite and further than the linear slop from the first "
+            "and last points, got " +
+            NumberText(prev) + " and " + NumberText(next));
     }
     std::vector<ChainSegment> segments(m - 1);
     for (std::size_t i = 0; i + 1 < m; ++i)
@@ -89,8 +96,9 @@ std::vector<ChainSegment> MakeSegments(const Chain& chain, Real linearSlop)
     return segments;
 }
 
+/// The live chain `id` names; nullptr (reported) for a null or stale id.
 template <typename State> // WorldState or const WorldState
-auto& ResolveChain(State& world, ChainId id)
+auto* ResolveChain(State& world, ChainId id)
 {
     return world.chains.Resolve(id, "chain");
 }
@@ -101,6 +109,10 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
 {
     WorldState& world = State();
     const std::vector<ChainSegment> segments = MakeSegments(chain, world.tolerances.linearSlop);
+    if (segments.empty())
+    {
+        return {}; // refused (reported)
+    }
 
     // Every check CreateShape makes (body, definition) fails on the first segment, before
     // anything is made, so a refused chain leaves the world as it was.
@@ -108,7 +120,12 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
     ids.reserve(segments.size());
     for (const ChainSegment& segment : segments)
     {
-        ids.push_back(CreateShape(body, def, segment));
+        const ShapeId id = CreateShape(body, def, segment);
+        if (id.IsNull())
+        {
+            return {}; // refused (reported) on the first segment: nothing was made
+        }
+        ids.push_back(id);
     }
 
     const ChainId chainId = world.chains.Allocate();
@@ -137,10 +154,16 @@ void World::DestroyChain(ChainId id)
     WorldState& world = State();
     if (world.stepping)
     {
-        throw InvalidArgument("World::DestroyChain: called during World::Step (from the "
-                              "pre-solve callback); the callback must not change the world");
+        ReportError(InvalidArgument("World::DestroyChain: called during World::Step (from the "
+                                    "pre-solve callback); the callback must not change the world"));
+        return;
     }
-    ChainSlot& chain = ResolveChain(world, id);
+    ChainSlot* const found = ResolveChain(world, id);
+    if (found == nullptr)
+    {
+        return;
+    }
+    ChainSlot& chain = *found;
     BuildContactReports(world); // the last step's reports still name these shapes
     Body& body = world.bodies[chain.body];
     const auto ofChain = [&](std::int32_t shape) { return world.shapes[shape].chain == id.index; };
@@ -182,7 +205,9 @@ bool World::IsValid(ChainId id) const
 
 std::span<const ShapeId> World::GetChainSegments(ChainId id) const
 {
-    return ResolveChain(State(), id).segments;
+    const ChainSlot* const chain = ResolveChain(State(), id);
+    return chain != nullptr ? std::span<const ShapeId>(chain->segments)
+                            : std::span<const ShapeId>();
 }
 
 bool World::IsChainLoop(ChainId id) const
@@ -192,7 +217,10 @@ bool World::IsChainLoop(ChainId id) const
 
 ChainId World::GetChain(ShapeId id) const
 {
-    GetBody(id); // throws for a stale or null shape id
+    if (GetBody(id).IsNull())
+    {
+        return {}; // a stale or null shape id (reported)
+    }
     const std::int32_t chain = State().shapes[id.index].chain;
     return chain < 0 ? ChainId{} : ChainId{chain, State().chains[chain].generation};
 }

@@ -11,6 +11,7 @@
 //
 // Every query only reads the world.
 #include "collision/broad_phase.h"
+#include "core/report_error.h"
 #include "dynamics/world_state.h"
 #include "model/shape_proxy.h"
 #include "meff/distance.h"
@@ -30,16 +31,19 @@ using namespace detail;
 namespace
 {
 
-void RequireValidTransform(const Transform& xf, const char* where)
+[[nodiscard]] bool RequireValidTransform(const Transform& xf, const char* where)
 {
     if (!xf.p.IsValid() || !meff::IsValid(xf.q.s) || !meff::IsValid(xf.q.c))
     {
-        throw InvalidArgument(std::string(where) + ": must be finite, got p = " + NumberText(xf.p) +
-                              ", q = (s " + NumberText(xf.q.s) + ", c " + NumberText(xf.q.c) + ")");
+        return Refuse(
+            InvalidArgument(std::string(where) + ": must be finite, got p = " + NumberText(xf.p) +
+                            ", q = (s " + NumberText(xf.q.s) + ", c " + NumberText(xf.q.c) + ")"));
     }
+    return true;
 }
 
-const Shape& ResolveShape(const WorldState& world, ShapeId id, const char* where)
+/// The live shape `id` names; nullptr (reported) for a null or stale id.
+const Shape* ResolveShape(const WorldState& world, ShapeId id, const char* where)
 {
     return world.shapes.Resolve(id, "shape", where);
 }
@@ -109,34 +113,39 @@ struct ClosestHit
     }
 };
 
-void RequireValidCastShape(const Circle& circle)
+[[nodiscard]] bool RequireValidCastShape(const Circle& circle)
 {
-    RequireFinite(circle.center, "World::CastShape: shape.center");
-    RequirePositive(circle.radius, "World::CastShape: shape.radius");
+    return RequireFinite(circle.center, "World::CastShape: shape.center") &&
+           RequirePositive(circle.radius, "World::CastShape: shape.radius");
 }
 
-void RequireValidCastShape(const Polygon& polygon)
+[[nodiscard]] bool RequireValidCastShape(const Polygon& polygon)
 {
     if (polygon.count < 3 || polygon.count > kMaxPolygonVertices)
     {
-        throw InvalidArgument("World::CastShape: shape.count: must be in [3, 8] (build "
-                              "polygons with MakePolygon or MakeBox), got " +
-                              std::to_string(polygon.count));
+        return Refuse(InvalidArgument("World::CastShape: shape.count: must be in [3, 8] (build "
+                                      "polygons with MakePolygon or MakeBox), got " +
+                                      std::to_string(polygon.count)));
     }
     for (int i = 0; i < polygon.count; ++i)
     {
-        RequireFinite(polygon.vertices[i], "World::CastShape: shape.vertices");
+        if (!RequireFinite(polygon.vertices[i], "World::CastShape: shape.vertices"))
+        {
+            return false;
+        }
     }
-    RequireNonNegative(polygon.radius, "World::CastShape: shape.radius");
+    return RequireNonNegative(polygon.radius, "World::CastShape: shape.radius");
 }
 
-void RequireValidCastShape(const Capsule& capsule, const Tolerances& tolerances,
-                           const char* what = "World::CastShape: shape")
+[[nodiscard]] bool RequireValidCastShape(const Capsule& capsule, const Tolerances& tolerances,
+                                         const char* what = "World::CastShape: shape")
 {
     if (const std::optional<Refusal> refusal = CheckCapsule(capsule, tolerances.linearSlop))
     {
-        throw InvalidArgument(std::string(what) + ": " + refusal->field + ": " + refusal->reason);
+        return Refuse(
+            InvalidArgument(std::string(what) + ": " + refusal->field + ": " + refusal->reason));
     }
+    return true;
 }
 
 /// The shape cast behind the CastShape overloads: `proxy` at `start` swept by `translation`.
@@ -187,9 +196,12 @@ void CastProxy(const WorldState& world, const DistanceProxy& proxy, const AABB& 
 
 void World::CastRay(Vec2 origin, Vec2 translation, QueryFilter filter, CastCallback callback) const
 {
-    RequireFinite(origin, "World::CastRay: origin");
-    RequireFinite(translation, "World::CastRay: translation");
-    RequireFinite(origin + translation, "World::CastRay: origin + translation");
+    if (!RequireFinite(origin, "World::CastRay: origin") ||
+        !RequireFinite(translation, "World::CastRay: translation") ||
+        !RequireFinite(origin + translation, "World::CastRay: origin + translation"))
+    {
+        return;
+    }
     const WorldState& world = State();
 
     const RayCastInput input{origin, origin + translation, 1};
@@ -226,9 +238,11 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
 {
     if (!box.IsValid())
     {
-        throw InvalidArgument("World::OverlapAABB: box: must be finite with lowerBound <= "
-                              "upperBound, got " +
-                              NumberText(box.lowerBound) + " to " + NumberText(box.upperBound));
+        ReportError(InvalidArgument("World::OverlapAABB: box: must be finite with lowerBound <= "
+                                    "upperBound, got " +
+                                    NumberText(box.lowerBound) + " to " +
+                                    NumberText(box.upperBound)));
+        return;
     }
     const WorldState& world = State();
     world.broadPhase.Query(box, {filter.categoryBits, filter.maskBits},
@@ -241,7 +255,10 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
 
 void World::OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callback) const
 {
-    RequireFinite(point, "World::OverlapPoint: point");
+    if (!RequireFinite(point, "World::OverlapPoint: point"))
+    {
+        return;
+    }
     const WorldState& world = State();
     // A shape containing the point has it inside its tight box, so inside its fat box.
     world.broadPhase.Query(AABB{point, point}, {filter.categoryBits, filter.maskBits},
@@ -260,9 +277,11 @@ void World::OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callbac
 void World::CastShape(const Circle& shape, const Transform& start, Vec2 translation,
                       QueryFilter filter, CastCallback callback) const
 {
-    RequireValidCastShape(shape);
-    RequireValidTransform(start, "World::CastShape: start");
-    RequireFinite(translation, "World::CastShape: translation");
+    if (!RequireValidCastShape(shape) || !RequireValidTransform(start, "World::CastShape: start") ||
+        !RequireFinite(translation, "World::CastShape: translation"))
+    {
+        return;
+    }
     CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
               callback);
 }
@@ -270,9 +289,11 @@ void World::CastShape(const Circle& shape, const Transform& start, Vec2 translat
 void World::CastShape(const Polygon& shape, const Transform& start, Vec2 translation,
                       QueryFilter filter, CastCallback callback) const
 {
-    RequireValidCastShape(shape);
-    RequireValidTransform(start, "World::CastShape: start");
-    RequireFinite(translation, "World::CastShape: translation");
+    if (!RequireValidCastShape(shape) || !RequireValidTransform(start, "World::CastShape: start") ||
+        !RequireFinite(translation, "World::CastShape: translation"))
+    {
+        return;
+    }
     CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
               callback);
 }
@@ -280,9 +301,12 @@ void World::CastShape(const Polygon& shape, const Transform& start, Vec2 transla
 void World::CastShape(const Capsule& shape, const Transform& start, Vec2 translation,
                       QueryFilter filter, CastCallback callback) const
 {
-    RequireValidCastShape(shape, State().tolerances);
-    RequireValidTransform(start, "World::CastShape: start");
-    RequireFinite(translation, "World::CastShape: translation");
+    if (!RequireValidCastShape(shape, State().tolerances) ||
+        !RequireValidTransform(start, "World::CastShape: start") ||
+        !RequireFinite(translation, "World::CastShape: translation"))
+    {
+        return;
+    }
     CastProxy(State(), MakeProxy(shape), ComputeAABB(shape, start), start, translation, filter,
               callback);
 }
@@ -291,7 +315,10 @@ void World::CollideMover(
     const Capsule& mover, QueryFilter filter,
     FunctionRef<bool(ShapeId shape, const CollisionPlane& plane)> callback) const
 {
-    RequireValidCastShape(mover, State().tolerances, "World::CollideMover: mover");
+    if (!RequireValidCastShape(mover, State().tolerances, "World::CollideMover: mover"))
+    {
+        return;
+    }
     const WorldState& world = State();
     const DistanceProxy moverProxy = MakeProxy(mover);
     const Transform identity{}; // the mover is in world coordinates
@@ -323,8 +350,11 @@ void World::CollideMover(
 
 Real World::CastMover(const Capsule& mover, Vec2 translation, QueryFilter filter) const
 {
-    RequireValidCastShape(mover, State().tolerances, "World::CastMover: mover");
-    RequireFinite(translation, "World::CastMover: translation");
+    if (!RequireValidCastShape(mover, State().tolerances, "World::CastMover: mover") ||
+        !RequireFinite(translation, "World::CastMover: translation"))
+    {
+        return {};
+    }
     Real fraction = 1;
     const Transform identity{}; // the mover is in world coordinates
     CastShape(mover, identity, translation, filter,
@@ -344,11 +374,17 @@ Real World::CastMover(const Capsule& mover, Vec2 translation, QueryFilter filter
 CharacterMove World::MoveCharacter(const Capsule& mover, Vec2 velocity, Real dt,
                                    QueryFilter filter) const
 {
-    RequireValidCastShape(mover, State().tolerances, "World::MoveCharacter: mover");
-    RequireFinite(velocity, "World::MoveCharacter: velocity");
-    RequirePositive(dt, "World::MoveCharacter: dt");
+    if (!RequireValidCastShape(mover, State().tolerances, "World::MoveCharacter: mover") ||
+        !RequireFinite(velocity, "World::MoveCharacter: velocity") ||
+        !RequirePositive(dt, "World::MoveCharacter: dt"))
+    {
+        return {};
+    }
     const Vec2 step = dt * velocity;
-    RequireFinite(step, "World::MoveCharacter: velocity · dt");
+    if (!RequireFinite(step, "World::MoveCharacter: velocity · dt"))
+    {
+        return {};
+    }
     const Capsule target{mover.center1 + step, mover.center2 + step, mover.radius};
     std::array<CollisionPlane, kMaxMoverPlanes> planes;
     int count = 0;
@@ -394,13 +430,23 @@ RayResult World::CastShapeClosest(const Polygon& shape, const Transform& start, 
 
 AABB World::GetShapeAABB(ShapeId id) const
 {
-    const Shape& shape = ResolveShape(State(), id, "World::GetShapeAABB");
+    const auto* const found = ResolveShape(State(), id, "World::GetShapeAABB");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Shape& shape = *found;
     return shape.ComputeAABB(State().bodies[shape.body].xf);
 }
 
 AABB World::GetShapeFatAABB(ShapeId id) const
 {
-    const Shape& shape = ResolveShape(State(), id, "World::GetShapeFatAABB");
+    const auto* const found = ResolveShape(State(), id, "World::GetShapeFatAABB");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Shape& shape = *found;
     return State().broadPhase.GetFatAABB(shape.proxyId);
 }
 

@@ -125,8 +125,8 @@ struct WorldState
 /// threads themselves, a snapshot's restore, Step) is refused while a step walks it: from the
 /// pre-solve callback or the custom filter, whose messages name it. A callback that replaced
 /// itself was destroyed while it ran. Throws InvalidArgument "CALL: called during World::Step
-/// (from CALLBACK); ...".
-void RequireNotStepping(const WorldState& world, const char* call);
+/// (from CALLBACK); ...". Returns false after reporting it (core/report_error.h).
+[[nodiscard]] bool RequireNotStepping(const WorldState& world, const char* call);
 
 /// Marks `world` as inside the user's callback `name` for its lifetime (WorldState::callback).
 class InUserCallback
@@ -148,9 +148,9 @@ class InUserCallback
 /// What a solver back end sees of the world (solvers/solver.h).
 inline SolverWorld SolverView(WorldState& world, SolvedContactSink& solvedContacts)
 {
-    return SolverWorld{world.bodies.Slots(), world.contacts, world.joints.Slots(),
-                       world.bodyList,       world.gravity,  world.allowSleep,
-                       world.stepCount,      solvedContacts, world.tasks};
+    return SolverWorld{world.bodies.Slots(), world.contacts,   world.joints.Slots(), world.bodyList,
+                       world.gravity,        world.allowSleep, world.stepCount,      solvedContacts,
+                       world.tasks,          &world.failed};
 }
 
 /// Wakes body `bodyIndex` (see WakeBody(Body&)): the helper for any world change — a joint

@@ -5,6 +5,7 @@
 // from the type-erased Joint to the per-type solvers.
 #include "joints/joint.h"
 
+#include "core/report_error.h"
 #include "meff/error.h"
 #include "meff/validity.h"
 
@@ -43,28 +44,35 @@ void LinearStiffness(Real& stiffness, Real& damping, Real hertz, Real dampingRat
     damping = Real(2) * mass * dampingRatio * omega;
 }
 
-/// `lower` (the field named) at most `upper` (its sibling field, named as a member).
-void RequireOrdered(const char* lowerField, Real lower, const char* upperMember, Real upper)
+/// `lower` (the field named) at most `upper` (its sibling field, named as a member); false once
+/// reported.
+[[nodiscard]] bool RequireOrdered(const char* lowerField, Real lower, const char* upperMember,
+                                  Real upper)
 {
     if (lower > upper)
     {
-        ThrowRefusal({lowerField, std::string("must not exceed ") + upperMember + " (" +
-                                      NumberText(upper) + "), got " + NumberText(lower)});
+        return ReportRefusal({lowerField, std::string("must not exceed ") + upperMember + " (" +
+                                              NumberText(upper) + "), got " + NumberText(lower)});
     }
+    return true;
 }
 
 /// The unit axis of a prismatic or wheel joint. A zero axis has no direction to slide along.
 /// Normalized as b2Vec2::Normalize does (Box2D's prismatic constructor normalizes; its wheel
 /// joint does not, so the Box2D mirror normalizes the wheel axis it hands over).
-Vec2 RequireUnitAxis(const char* field, Vec2 axis)
+[[nodiscard]] bool RequireUnitAxis(const char* field, Vec2 axis, Vec2& unit)
 {
-    RequireFinite(axis, field);
-    Vec2 unit = axis;
+    if (!RequireFinite(axis, field))
+    {
+        return false;
+    }
+    unit = axis;
     if (unit.Normalize() == 0)
     {
-        ThrowRefusal({field, "must have a direction (a length > 0), got " + NumberText(axis)});
+        return ReportRefusal(
+            {field, "must have a direction (a length > 0), got " + NumberText(axis)});
     }
-    return unit;
+    return true;
 }
 
 /// Torsional spring constants from a frequency and damping ratio, as Box2D's
@@ -107,17 +115,21 @@ Joint MakeTypedJoint(JointType type, std::int32_t bodyA, std::int32_t bodyB, boo
 
 Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    RequireFinite(def.localAnchorA, "RevoluteJointDef::localAnchorA");
-    RequireFinite(def.localAnchorB, "RevoluteJointDef::localAnchorB");
-    RequireFinite(def.referenceAngle, "RevoluteJointDef::referenceAngle");
-    RequireFinite(def.lowerAngle, "RevoluteJointDef::lowerAngle");
-    RequireFinite(def.upperAngle, "RevoluteJointDef::upperAngle");
-    RequireFinite(def.motorSpeed, "RevoluteJointDef::motorSpeed");
-    RequireNonNegative(def.maxMotorTorque, "RevoluteJointDef::maxMotorTorque");
-    RequireNonNegative(def.hertz, "RevoluteJointDef::hertz");
-    RequireNonNegative(def.dampingRatio, "RevoluteJointDef::dampingRatio");
-    RequireFinite(def.targetAngle, "RevoluteJointDef::targetAngle");
-    RequireOrdered("RevoluteJointDef::lowerAngle", def.lowerAngle, "upperAngle", def.upperAngle);
+    if (!RequireFinite(def.localAnchorA, "RevoluteJointDef::localAnchorA") ||
+        !RequireFinite(def.localAnchorB, "RevoluteJointDef::localAnchorB") ||
+        !RequireFinite(def.referenceAngle, "RevoluteJointDef::referenceAngle") ||
+        !RequireFinite(def.lowerAngle, "RevoluteJointDef::lowerAngle") ||
+        !RequireFinite(def.upperAngle, "RevoluteJointDef::upperAngle") ||
+        !RequireFinite(def.motorSpeed, "RevoluteJointDef::motorSpeed") ||
+        !RequireNonNegative(def.maxMotorTorque, "RevoluteJointDef::maxMotorTorque") ||
+        !RequireNonNegative(def.hertz, "RevoluteJointDef::hertz") ||
+        !RequireNonNegative(def.dampingRatio, "RevoluteJointDef::dampingRatio") ||
+        !RequireFinite(def.targetAngle, "RevoluteJointDef::targetAngle") ||
+        !RequireOrdered("RevoluteJointDef::lowerAngle", def.lowerAngle, "upperAngle",
+                        def.upperAngle))
+    {
+        return {};
+    }
 
     RevoluteJoint revolute;
     revolute.localAnchorA = def.localAnchorA;
@@ -142,23 +154,30 @@ Joint MakeJoint(const RevoluteJointDef& def, std::int32_t bodyA, std::int32_t bo
 Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB, const Tolerances& tolerances)
 {
-    RequireFinite(def.localAnchorA, "DistanceJointDef::localAnchorA");
-    RequireFinite(def.localAnchorB, "DistanceJointDef::localAnchorB");
-    RequireFinite(def.length, "DistanceJointDef::length");
-    RequireFinite(def.minLength, "DistanceJointDef::minLength");
-    RequireFinite(def.maxLength, "DistanceJointDef::maxLength");
-    RequireNonNegative(def.hertz, "DistanceJointDef::hertz");
-    RequireNonNegative(def.dampingRatio, "DistanceJointDef::dampingRatio");
+    if (!RequireFinite(def.localAnchorA, "DistanceJointDef::localAnchorA") ||
+        !RequireFinite(def.localAnchorB, "DistanceJointDef::localAnchorB") ||
+        !RequireFinite(def.length, "DistanceJointDef::length") ||
+        !RequireFinite(def.minLength, "DistanceJointDef::minLength") ||
+        !RequireFinite(def.maxLength, "DistanceJointDef::maxLength") ||
+        !RequireNonNegative(def.hertz, "DistanceJointDef::hertz") ||
+        !RequireNonNegative(def.dampingRatio, "DistanceJointDef::dampingRatio"))
+    {
+        return {};
+    }
     for (const auto& [field, value] : {std::pair{"DistanceJointDef::length", def.length},
                                        {"DistanceJointDef::minLength", def.minLength}})
     {
         if (value > MaxDistanceJointLength())
         {
-            ThrowRefusal({field, "must be at most " + NumberText(MaxDistanceJointLength()) +
-                                     " m (its square must be finite), got " + NumberText(value)});
+            ReportRefusal({field, "must be at most " + NumberText(MaxDistanceJointLength()) +
+                                      " m (its square must be finite), got " + NumberText(value)});
+            return {};
         }
     }
-    RequireOrdered("DistanceJointDef::minLength", def.minLength, "maxLength", def.maxLength);
+    if (!RequireOrdered("DistanceJointDef::minLength", def.minLength, "maxLength", def.maxLength))
+    {
+        return {};
+    }
 
     DistanceJoint distance;
     distance.localAnchorA = def.localAnchorA;
@@ -181,19 +200,23 @@ Joint MakeJoint(const DistanceJointDef& def, std::int32_t bodyA, std::int32_t bo
 
 Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    RequireFinite(def.localAnchorA, "PrismaticJointDef::localAnchorA");
-    RequireFinite(def.localAnchorB, "PrismaticJointDef::localAnchorB");
-    const Vec2 axis = RequireUnitAxis("PrismaticJointDef::localAxisA", def.localAxisA);
-    RequireFinite(def.referenceAngle, "PrismaticJointDef::referenceAngle");
-    RequireFinite(def.lowerTranslation, "PrismaticJointDef::lowerTranslation");
-    RequireFinite(def.upperTranslation, "PrismaticJointDef::upperTranslation");
-    RequireFinite(def.motorSpeed, "PrismaticJointDef::motorSpeed");
-    RequireNonNegative(def.maxMotorForce, "PrismaticJointDef::maxMotorForce");
-    RequireNonNegative(def.hertz, "PrismaticJointDef::hertz");
-    RequireNonNegative(def.dampingRatio, "PrismaticJointDef::dampingRatio");
-    RequireFinite(def.targetTranslation, "PrismaticJointDef::targetTranslation");
-    RequireOrdered("PrismaticJointDef::lowerTranslation", def.lowerTranslation, "upperTranslation",
-                   def.upperTranslation);
+    Vec2 axis;
+    if (!RequireFinite(def.localAnchorA, "PrismaticJointDef::localAnchorA") ||
+        !RequireFinite(def.localAnchorB, "PrismaticJointDef::localAnchorB") ||
+        !RequireUnitAxis("PrismaticJointDef::localAxisA", def.localAxisA, axis) ||
+        !RequireFinite(def.referenceAngle, "PrismaticJointDef::referenceAngle") ||
+        !RequireFinite(def.lowerTranslation, "PrismaticJointDef::lowerTranslation") ||
+        !RequireFinite(def.upperTranslation, "PrismaticJointDef::upperTranslation") ||
+        !RequireFinite(def.motorSpeed, "PrismaticJointDef::motorSpeed") ||
+        !RequireNonNegative(def.maxMotorForce, "PrismaticJointDef::maxMotorForce") ||
+        !RequireNonNegative(def.hertz, "PrismaticJointDef::hertz") ||
+        !RequireNonNegative(def.dampingRatio, "PrismaticJointDef::dampingRatio") ||
+        !RequireFinite(def.targetTranslation, "PrismaticJointDef::targetTranslation") ||
+        !RequireOrdered("PrismaticJointDef::lowerTranslation", def.lowerTranslation,
+                        "upperTranslation", def.upperTranslation))
+    {
+        return {};
+    }
 
     PrismaticJoint prismatic;
     prismatic.localAnchorA = def.localAnchorA;
@@ -221,17 +244,21 @@ Joint MakeJoint(const PrismaticJointDef& def, std::int32_t bodyA, std::int32_t b
 Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real massA,
                 Real massB)
 {
-    RequireFinite(def.localAnchorA, "WheelJointDef::localAnchorA");
-    RequireFinite(def.localAnchorB, "WheelJointDef::localAnchorB");
-    const Vec2 axis = RequireUnitAxis("WheelJointDef::localAxisA", def.localAxisA);
-    RequireFinite(def.lowerTranslation, "WheelJointDef::lowerTranslation");
-    RequireFinite(def.upperTranslation, "WheelJointDef::upperTranslation");
-    RequireFinite(def.motorSpeed, "WheelJointDef::motorSpeed");
-    RequireNonNegative(def.maxMotorTorque, "WheelJointDef::maxMotorTorque");
-    RequireNonNegative(def.hertz, "WheelJointDef::hertz");
-    RequireNonNegative(def.dampingRatio, "WheelJointDef::dampingRatio");
-    RequireOrdered("WheelJointDef::lowerTranslation", def.lowerTranslation, "upperTranslation",
-                   def.upperTranslation);
+    Vec2 axis;
+    if (!RequireFinite(def.localAnchorA, "WheelJointDef::localAnchorA") ||
+        !RequireFinite(def.localAnchorB, "WheelJointDef::localAnchorB") ||
+        !RequireUnitAxis("WheelJointDef::localAxisA", def.localAxisA, axis) ||
+        !RequireFinite(def.lowerTranslation, "WheelJointDef::lowerTranslation") ||
+        !RequireFinite(def.upperTranslation, "WheelJointDef::upperTranslation") ||
+        !RequireFinite(def.motorSpeed, "WheelJointDef::motorSpeed") ||
+        !RequireNonNegative(def.maxMotorTorque, "WheelJointDef::maxMotorTorque") ||
+        !RequireNonNegative(def.hertz, "WheelJointDef::hertz") ||
+        !RequireNonNegative(def.dampingRatio, "WheelJointDef::dampingRatio") ||
+        !RequireOrdered("WheelJointDef::lowerTranslation", def.lowerTranslation, "upperTranslation",
+                        def.upperTranslation))
+    {
+        return {};
+    }
 
     WheelJoint wheel;
     wheel.localAnchorA = def.localAnchorA;
@@ -259,11 +286,14 @@ Joint MakeJoint(const WheelJointDef& def, std::int32_t bodyA, std::int32_t bodyB
 Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB, Real inertiaA,
                 Real inertiaB)
 {
-    RequireFinite(def.localAnchorA, "WeldJointDef::localAnchorA");
-    RequireFinite(def.localAnchorB, "WeldJointDef::localAnchorB");
-    RequireFinite(def.referenceAngle, "WeldJointDef::referenceAngle");
-    RequireNonNegative(def.hertz, "WeldJointDef::hertz");
-    RequireNonNegative(def.dampingRatio, "WeldJointDef::dampingRatio");
+    if (!RequireFinite(def.localAnchorA, "WeldJointDef::localAnchorA") ||
+        !RequireFinite(def.localAnchorB, "WeldJointDef::localAnchorB") ||
+        !RequireFinite(def.referenceAngle, "WeldJointDef::referenceAngle") ||
+        !RequireNonNegative(def.hertz, "WeldJointDef::hertz") ||
+        !RequireNonNegative(def.dampingRatio, "WeldJointDef::dampingRatio"))
+    {
+        return {};
+    }
 
     WeldJoint weld;
     weld.localAnchorA = def.localAnchorA;
@@ -281,15 +311,19 @@ Joint MakeJoint(const WeldJointDef& def, std::int32_t bodyA, std::int32_t bodyB,
 
 Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    RequireFinite(def.linearOffset, "MotorJointDef::linearOffset");
-    RequireFinite(def.angularOffset, "MotorJointDef::angularOffset");
-    RequireNonNegative(def.maxForce, "MotorJointDef::maxForce");
-    RequireNonNegative(def.maxTorque, "MotorJointDef::maxTorque");
-    RequireNonNegative(def.correctionFactor, "MotorJointDef::correctionFactor");
+    if (!RequireFinite(def.linearOffset, "MotorJointDef::linearOffset") ||
+        !RequireFinite(def.angularOffset, "MotorJointDef::angularOffset") ||
+        !RequireNonNegative(def.maxForce, "MotorJointDef::maxForce") ||
+        !RequireNonNegative(def.maxTorque, "MotorJointDef::maxTorque") ||
+        !RequireNonNegative(def.correctionFactor, "MotorJointDef::correctionFactor"))
+    {
+        return {};
+    }
     if (def.correctionFactor > 1)
     {
-        ThrowRefusal({"MotorJointDef::correctionFactor",
-                      "must be at most 1, got " + NumberText(def.correctionFactor)});
+        ReportRefusal({"MotorJointDef::correctionFactor",
+                       "must be at most 1, got " + NumberText(def.correctionFactor)});
+        return {};
     }
 
     MotorJoint motor;
@@ -306,10 +340,13 @@ Joint MakeJoint(const MotorJointDef& def, std::int32_t bodyA, std::int32_t bodyB
 
 Joint MakeJoint(const FrictionJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    RequireFinite(def.localAnchorA, "FrictionJointDef::localAnchorA");
-    RequireFinite(def.localAnchorB, "FrictionJointDef::localAnchorB");
-    RequireNonNegative(def.maxForce, "FrictionJointDef::maxForce");
-    RequireNonNegative(def.maxTorque, "FrictionJointDef::maxTorque");
+    if (!RequireFinite(def.localAnchorA, "FrictionJointDef::localAnchorA") ||
+        !RequireFinite(def.localAnchorB, "FrictionJointDef::localAnchorB") ||
+        !RequireNonNegative(def.maxForce, "FrictionJointDef::maxForce") ||
+        !RequireNonNegative(def.maxTorque, "FrictionJointDef::maxTorque"))
+    {
+        return {};
+    }
 
     FrictionJoint friction;
     friction.localAnchorA = def.localAnchorA;
@@ -324,14 +361,17 @@ Joint MakeJoint(const FrictionJointDef& def, std::int32_t bodyA, std::int32_t bo
 
 Joint MakeJoint(const PulleyJointDef& def, std::int32_t bodyA, std::int32_t bodyB)
 {
-    RequireFinite(def.groundAnchorA, "PulleyJointDef::groundAnchorA");
-    RequireFinite(def.groundAnchorB, "PulleyJointDef::groundAnchorB");
-    RequireFinite(def.localAnchorA, "PulleyJointDef::localAnchorA");
-    RequireFinite(def.localAnchorB, "PulleyJointDef::localAnchorB");
-    RequireNonNegative(def.lengthA, "PulleyJointDef::lengthA");
-    RequireNonNegative(def.lengthB, "PulleyJointDef::lengthB");
     // 0 would cut B's side off the rope; a negative ratio would make it push when pulled.
-    RequirePositive(def.ratio, "PulleyJointDef::ratio");
+    if (!RequireFinite(def.groundAnchorA, "PulleyJointDef::groundAnchorA") ||
+        !RequireFinite(def.groundAnchorB, "PulleyJointDef::groundAnchorB") ||
+        !RequireFinite(def.localAnchorA, "PulleyJointDef::localAnchorA") ||
+        !RequireFinite(def.localAnchorB, "PulleyJointDef::localAnchorB") ||
+        !RequireNonNegative(def.lengthA, "PulleyJointDef::lengthA") ||
+        !RequireNonNegative(def.lengthB, "PulleyJointDef::lengthB") ||
+        !RequirePositive(def.ratio, "PulleyJointDef::ratio"))
+    {
+        return {};
+    }
 
     PulleyJoint pulley;
     pulley.groundAnchorA = def.groundAnchorA;
@@ -390,7 +430,10 @@ GearSide MakeGearSide(const Joint& joint, const GearPose& body, const GearPose& 
 Joint MakeJoint(const GearJointDef& def, const Joint& joint1, const Joint& joint2,
                 const GearPose& a, const GearPose& b, const GearPose& c, const GearPose& d)
 {
-    RequireFinite(def.ratio, "GearJointDef::ratio");
+    if (!RequireFinite(def.ratio, "GearJointDef::ratio"))
+    {
+        return {};
+    }
     const GearSide sideA = MakeGearSide(joint1, a, c);
     const GearSide sideB = MakeGearSide(joint2, b, d);
 
@@ -422,12 +465,17 @@ Joint MakeJoint(const MouseJointDef& def, std::int32_t bodyA, std::int32_t bodyB
 {
     if (!bodyBDynamic)
     {
-        throw InvalidArgument("MouseJointDef::bodyB: must be a dynamic body (the joint drags it)");
+        ReportError(
+            InvalidArgument("MouseJointDef::bodyB: must be a dynamic body (the joint drags it)"));
+        return {};
     }
-    RequireFinite(def.target, "MouseJointDef::target");
-    RequireNonNegative(def.maxForce, "MouseJointDef::maxForce");
-    RequireNonNegative(def.hertz, "MouseJointDef::hertz");
-    RequireNonNegative(def.dampingRatio, "MouseJointDef::dampingRatio");
+    if (!RequireFinite(def.target, "MouseJointDef::target") ||
+        !RequireNonNegative(def.maxForce, "MouseJointDef::maxForce") ||
+        !RequireNonNegative(def.hertz, "MouseJointDef::hertz") ||
+        !RequireNonNegative(def.dampingRatio, "MouseJointDef::dampingRatio"))
+    {
+        return {};
+    }
 
     MouseJoint mouse;
     mouse.target = def.target;

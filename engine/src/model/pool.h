@@ -6,6 +6,7 @@
 // before is refused instead of reaching the new occupant.
 #pragma once
 
+#include "core/report_error.h"
 #include "meff/error.h"
 #include "meff/ids.h"
 
@@ -80,29 +81,26 @@ class Pool
                m_slots[std::size_t(id.index)].generation == id.generation;
     }
 
-    /// The live slot `id` names. Throws InvalidArgument("[WHERE: ]invalid KIND id (index I,
-    /// generation G): null, or already destroyed") for any other id.
-    T& Resolve(IdType id, const char* kind, const char* where = nullptr)
+    /// The live slot `id` names, or nullptr once it has reported InvalidArgument("[WHERE: ]
+    /// invalid KIND id (index I, generation G): null, or already destroyed") for any other id
+    /// (detail::ReportError: thrown with exceptions).
+    T* Resolve(IdType id, const char* kind, const char* where = nullptr)
     {
-        RequireValid(id, kind, where);
-        return m_slots[std::size_t(id.index)];
+        return RequireValid(id, kind, where) ? &m_slots[std::size_t(id.index)] : nullptr;
     }
-    const T& Resolve(IdType id, const char* kind, const char* where = nullptr) const
+    const T* Resolve(IdType id, const char* kind, const char* where = nullptr) const
     {
-        RequireValid(id, kind, where);
-        return m_slots[std::size_t(id.index)];
+        return RequireValid(id, kind, where) ? &m_slots[std::size_t(id.index)] : nullptr;
     }
 
   private:
-    void RequireValid(IdType id, const char* kind, const char* where) const
+    [[nodiscard]] bool RequireValid(IdType id, const char* kind, const char* where) const
     {
-        if (!IsValid(id))
-        {
-            throw InvalidArgument((where ? std::string(where) + ": " : std::string()) + "invalid " +
-                                  kind + " id (index " + std::to_string(id.index) +
-                                  ", generation " + std::to_string(id.generation) +
-                                  "): null, or already destroyed");
-        }
+        return IsValid(id) ||
+               Refuse(InvalidArgument((where ? std::string(where) + ": " : std::string()) +
+                                      "invalid " + kind + " id (index " + std::to_string(id.index) +
+                                      ", generation " + std::to_string(id.generation) +
+                                      "): null, or already destroyed"));
     }
 
     std::vector<T> m_slots;

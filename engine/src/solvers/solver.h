@@ -63,6 +63,9 @@ struct SolverWorld
     /// The world's threads (World::SetTaskSystem), or null. The Box2D back end steps without
     /// them (Box2DSolver::Step).
     TaskSystem* tasks = nullptr;
+    /// Set when a body became non-finite (FinishBodies): in an engine without exceptions the
+    /// step stops there, as a thrown SimulationError stops it (null: nowhere to set it).
+    bool* failed = nullptr;
 };
 
 /// One solver back end.
@@ -71,8 +74,9 @@ class Solver
   public:
     virtual ~Solver() = default;
     /// Advances every awake body by one step: integrates forces and gravity, solves contacts
-    /// and joints, writes the bodies back (throwing SimulationError, with the bodies left at
-    /// their last good state, when one became non-finite), reports the solved contacts, and
+    /// and joints, writes the bodies back (reporting SimulationError, with the bodies left at
+    /// their last good state, when one became non-finite: thrown, or without exceptions handed to
+    /// the error handler with SolverWorld::failed set), reports the solved contacts, and
     /// with allowSleep puts resting islands to sleep. Sets Body::islandFlag on every body it
     /// moved, which the broad-phase synchronization reads.
     virtual void Step(SolverWorld& world, const StepContext& step) = 0;

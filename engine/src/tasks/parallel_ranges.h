@@ -3,6 +3,7 @@
 // How the engine hands work to the world's TaskSystem (task_system.h), if it has one.
 #pragma once
 
+#include "meff/error.h"
 #include "meff/task_system.h"
 
 #include <exception>
@@ -35,23 +36,32 @@ void ForRanges(TaskSystem* tasks, int count, int minRange, F&& f)
 /// runs alone() before it, perhaps a pool thread, so alone must not hand work to `tasks` itself.
 /// alone must not touch what f writes, nor f what alone writes. alone may throw (it may
 /// allocate); its exception is rethrown here once every range is done (a task must not throw).
+/// Without exceptions (MEFF_EXCEPTIONS=0) nothing is caught.
 template <typename Alone, typename F>
 void ForRangesBeside(TaskSystem* tasks, int count, int minRange, Alone&& alone, F&& f)
 {
+#if MEFF_EXCEPTIONS
     std::exception_ptr failure;
+    const auto runAlone = [&]
+    {
+        try
+        {
+            alone();
+        }
+        catch (...)
+        {
+            failure = std::current_exception();
+        }
+    };
+#else
+    const auto runAlone = [&] { alone(); };
+#endif
     ForRanges(tasks, count + 1, minRange,
               [&](int begin, int end, int worker)
               {
                   if (begin == 0)
                   {
-                      try
-                      {
-                          alone();
-                      }
-                      catch (...)
-                      {
-                          failure = std::current_exception();
-                      }
+                      runAlone();
                       begin = 1;
                   }
                   if (begin < end)
@@ -59,10 +69,12 @@ void ForRangesBeside(TaskSystem* tasks, int count, int minRange, Alone&& alone, 
                       f(begin - 1, end - 1, worker);
                   }
               });
+#if MEFF_EXCEPTIONS
     if (failure)
     {
         std::rethrow_exception(failure);
     }
+#endif
 }
 
 /// Runs f(i) for each i of [0, count) on `tasks` (ForRanges): for loops whose every index writes

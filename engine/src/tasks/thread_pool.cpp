@@ -10,6 +10,7 @@
 // the generation (the solver's jobs follow each other within microseconds) and then sleep on a
 // condition variable. A job allocates nothing: the task is a FunctionRef on the caller's
 // stack, which outlives the job because the caller waits for its last piece.
+#include "core/report_error.h"
 #include "meff/error.h"
 #include "meff/task_system.h"
 
@@ -214,8 +215,9 @@ std::unique_ptr<TaskSystem> MakeThreadPool(int threads)
 {
     if (threads < 1 || threads > 1024)
     {
-        throw InvalidArgument("MakeThreadPool: threads must be from 1 to 1024, got " +
-                              std::to_string(threads));
+        detail::ReportError(InvalidArgument("MakeThreadPool: threads must be from 1 to 1024, got " +
+                                            std::to_string(threads)));
+        return nullptr;
     }
     return std::make_unique<ThreadPool>(threads);
 }

@@ -3,6 +3,7 @@
 // SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 #include "solvers/shared/island.h"
 
+#include "core/report_error.h"
 #include "joints/joint_slot.h"
 #include "tasks/parallel_ranges.h"
 #include "meff/error.h"
@@ -168,6 +169,10 @@ bool CanSeedIsland(const Body& body)
 
 void FinishBodies(SolverWorld& world, const Island& island, TaskSystem* tasks)
 {
+    if (world.failed != nullptr && *world.failed)
+    {
+        return; // an earlier island failed (reported): the step writes nothing more
+    }
     // Checked on the calling thread, in island order: the error names the first bad body
     // whatever the threads, and no body is written before all are known good.
     for (std::size_t i = 0; i < island.bodies.size(); ++i)
@@ -177,11 +182,16 @@ void FinishBodies(SolverWorld& world, const Island& island, TaskSystem* tasks)
         if (!p.c.IsValid() || !meff::IsValid(p.a) || !v.v.IsValid() || !meff::IsValid(v.w))
         {
             const std::int32_t bodyIndex = island.bodies[i];
-            throw SimulationError("step " + std::to_string(world.stepCount) + ": body " +
-                                      std::to_string(bodyIndex) + " (user data " +
-                                      std::to_string(world.bodies[bodyIndex].userData) +
-                                      ") has a non-finite position or velocity",
-                                  world.stepCount, bodyIndex);
+            if (world.failed != nullptr)
+            {
+                *world.failed = true;
+            }
+            ReportError(SimulationError("step " + std::to_string(world.stepCount) + ": body " +
+                                            std::to_string(bodyIndex) + " (user data " +
+                                            std::to_string(world.bodies[bodyIndex].userData) +
+                                            ") has a non-finite position or velocity",
+                                        world.stepCount, bodyIndex));
+            return;
         }
     }
     // Each body is its own: any thread may take any range of them.

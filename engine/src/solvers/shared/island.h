@@ -67,8 +67,10 @@ inline constexpr int kMinBodiesPerTask = 512;
 
 /// Writes the island's solved state (island.positions, island.velocities) into its bodies and
 /// their transforms, bodies spread over `tasks` (null: the calling thread alone). Refuses a
-/// non-finite state first, throwing SimulationError naming the first such body (in island
-/// order) and the step, so the bodies keep their last good state and stay readable.
+/// non-finite state first, reporting SimulationError naming the first such body (in island
+/// order) and the step, so the bodies keep their last good state and stay readable: thrown, or
+/// without exceptions handed to the error handler with world.failed set, after which this and
+/// every later call of the step writes nothing.
 void FinishBodies(SolverWorld& world, const Island& island, TaskSystem* tasks = nullptr);
 
 /// After an island is solved (b2Island::Solve's sleep pass): advances each body's rest time
