@@ -66,9 +66,13 @@ std::string ErrorMessageOf(Call&& call)
 #define MEFF_CHECK_ERROR(expr) CHECK_THROWS_AS(expr, meff::InvalidArgument)
 /// `expr` reports an error whose message `matcher` accepts.
 #define MEFF_CHECK_ERROR_WITH(expr, matcher) CHECK_THROWS_WITH(expr, matcher)
+/// `expr` reports no error.
+#define MEFF_CHECK_NO_ERROR(expr) CHECK_NOTHROW(expr)
 #else
 #define MEFF_CHECK_ERROR(expr)                                                                     \
     CHECK(meff::test::ErrorMessageOf([&] { static_cast<void>(expr); }) != "accepted")
 #define MEFF_CHECK_ERROR_WITH(expr, matcher)                                                       \
     CHECK_THAT(meff::test::ErrorMessageOf([&] { static_cast<void>(expr); }), matcher)
+#define MEFF_CHECK_NO_ERROR(expr)                                                                  \
+    CHECK(meff::test::ErrorMessageOf([&] { static_cast<void>(expr); }) == "accepted")
 #endif

@@ -950,7 +950,7 @@ TEST_CASE("MakeJoint rejects bad definitions", "[joints][make]")
         }
         SECTION("the defaults are accepted")
         {
-            CHECK_NOTHROW(MakeJoint(def, 0, 1, 0, 1, tol));
+            MEFF_CHECK_NO_ERROR(MakeJoint(def, 0, 1, 0, 1, tol));
         }
     }
 }

@@ -88,7 +88,7 @@ TEST_CASE("CreateBody refuses non-finite numbers", "[world][api]")
     MEFF_CHECK_ERROR(world.CreateBody(dynamic({0, 0}, 0, {0, kNaN})));
     // Nothing was created.
     CHECK(world.GetBodies().empty());
-    CHECK_NOTHROW(world.CreateBody(dynamic({0, 0}, 0, {0, 0})));
+    MEFF_CHECK_NO_ERROR(world.CreateBody(dynamic({0, 0}, 0, {0, 0})));
 }
 
 TEST_CASE("MakeBox refuses non-positive and non-finite half-extents", "[world][api]")
@@ -98,7 +98,7 @@ TEST_CASE("MakeBox refuses non-positive and non-finite half-extents", "[world][a
     MEFF_CHECK_ERROR(MakeBox(0, 1));
     MEFF_CHECK_ERROR(MakeBox(kNaN, 1));
     MEFF_CHECK_ERROR(MakeBox(1, kInf));
-    CHECK_NOTHROW(MakeBox(Real(0.5), Real(0.25)));
+    MEFF_CHECK_NO_ERROR(MakeBox(Real(0.5), Real(0.25)));
 }
 
 TEST_CASE("Step refuses dt <= 0 and non-finite dt, leaving the world unchanged", "[world][api]")

@@ -21,7 +21,7 @@ namespace meff
 
 /// A function the engine calls with the message of each error it reports when it is built
 /// without exceptions (MEFF_EXCEPTIONS=OFF): the same text an exception's what() would carry,
-/// "World::CreateBody: BodyDef::position: must be finite, got (nan, 0)". `context` is the
+/// "BodyDef::position: must be finite, got (nan, 0)". `context` is the
 /// pointer given to SetErrorHandler. The call that reported the error then returns without
 /// changing anything: a null id, zero, an empty result. The handler may be called from any
 /// thread that calls into the engine (and from the task system's threads for an error found

@@ -113,6 +113,12 @@ void World::Explode(const ExplosionDef& def)
         const BodyId id{shape.body, body.generation};
         pushes.push_back({id, magnitude * Mul(body.xf.q, direction), Mul(body.xf, closest)});
     }
+    // ApplyLinearImpulse's refusal from a callback, checked once: an explosion there pushes
+    // nothing and is reported once.
+    if (!pushes.empty() && !RequireNotStepping(world, "World::ApplyLinearImpulse"))
+    {
+        return;
+    }
     for (const Push& push : pushes)
     {
         ApplyLinearImpulse(push.body, push.impulse, push.point, true);

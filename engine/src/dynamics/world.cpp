@@ -1759,9 +1759,26 @@ Real World::GetJointSpeed(JointId id) const
     return Dot(d, Cross(wA, axis)) + Dot(axis, vB + Cross(wB, rB) - vA - Cross(wA, rA));
 }
 
+namespace
+{
+
+/// Both bodies live, checked in the order given (the order the definition reads them), so
+/// that a Make...JointDef reports a stale id once.
+[[nodiscard]] bool RequireBodies(const WorldState& world, BodyId first, BodyId second)
+{
+    return Resolve(world.bodies, first, "body") != nullptr &&
+           Resolve(world.bodies, second, "body") != nullptr;
+}
+
+} // namespace
+
 RevoluteJointDef World::MakeRevoluteJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
 {
     if (!RequireFinite(worldAnchor, "MakeRevoluteJointDef: anchor"))
+    {
+        return {};
+    }
+    if (!RequireBodies(State(), a, b))
     {
         return {};
     }
@@ -1779,6 +1796,10 @@ DistanceJointDef World::MakeDistanceJointDef(BodyId a, BodyId b, Vec2 worldAncho
 {
     if (!RequireFinite(worldAnchorA, "MakeDistanceJointDef: anchorA") ||
         !RequireFinite(worldAnchorB, "MakeDistanceJointDef: anchorB"))
+    {
+        return {};
+    }
+    if (!RequireBodies(State(), a, b))
     {
         return {};
     }
@@ -1802,6 +1823,10 @@ PrismaticJointDef World::MakePrismaticJointDef(BodyId a, BodyId b, Vec2 worldAnc
     {
         return {};
     }
+    if (!RequireBodies(State(), a, b))
+    {
+        return {};
+    }
     PrismaticJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1816,6 +1841,10 @@ WheelJointDef World::MakeWheelJointDef(BodyId a, BodyId b, Vec2 worldAnchor, Vec
 {
     if (!RequireFinite(worldAnchor, "MakeWheelJointDef: anchor") ||
         !RequireFinite(worldAxis, "MakeWheelJointDef: axis"))
+    {
+        return {};
+    }
+    if (!RequireBodies(State(), a, b))
     {
         return {};
     }
@@ -1834,6 +1863,10 @@ WeldJointDef World::MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
     {
         return {};
     }
+    if (!RequireBodies(State(), a, b))
+    {
+        return {};
+    }
     WeldJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1845,6 +1878,10 @@ WeldJointDef World::MakeWeldJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
 
 MotorJointDef World::MakeMotorJointDef(BodyId a, BodyId b) const
 {
+    if (!RequireBodies(State(), b, a))
+    {
+        return {};
+    }
     MotorJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -1856,6 +1893,10 @@ MotorJointDef World::MakeMotorJointDef(BodyId a, BodyId b) const
 FrictionJointDef World::MakeFrictionJointDef(BodyId a, BodyId b, Vec2 worldAnchor) const
 {
     if (!RequireFinite(worldAnchor, "MakeFrictionJointDef: anchor"))
+    {
+        return {};
+    }
+    if (!RequireBodies(State(), a, b))
     {
         return {};
     }
@@ -1874,6 +1915,10 @@ PulleyJointDef World::MakePulleyJointDef(BodyId a, BodyId b, Vec2 groundAnchorA,
         !RequireFinite(groundAnchorB, "MakePulleyJointDef: groundAnchorB") ||
         !RequireFinite(anchorA, "MakePulleyJointDef: anchorA") ||
         !RequireFinite(anchorB, "MakePulleyJointDef: anchorB"))
+    {
+        return {};
+    }
+    if (!RequireBodies(State(), a, b))
     {
         return {};
     }
