@@ -46,6 +46,20 @@ TEST_CASE("A refused call reports its error once and changes nothing", "[errors]
     CHECK_THAT(ErrorMessageOf([&] { world.Step(-1); }), Catch::Contains("World::Step: dt"));
     CHECK(world.GetStepCount() == 0);
 
+    // Each rule of a check is applied, not only its first (a segment's length after its finite
+    // points, the soft step's settings after its substeps).
+    CHECK_THAT(ErrorMessageOf(
+                   [&] {
+                       world.CreateShape(body, ShapeDef{}, Segment{{0, 0}, {0, 0}});
+                   }),
+               Catch::Contains("points must be further apart"));
+    CHECK(world.GetShapes(body).size() == 1);
+    SolverSettings settings = world.GetSolverSettings();
+    settings.softStep.relaxIterations = -1;
+    CHECK_THAT(ErrorMessageOf([&] { world.SetSolverSettings(settings); }),
+               Catch::Contains("relaxIterations"));
+    CHECK(world.GetSolverSettings().softStep.relaxIterations != -1);
+
     world.DestroyBody(body);
     CHECK_THAT(ErrorMessageOf([&] { world.DestroyBody(body); }),
                Catch::Contains("invalid body id"));
