@@ -2000,8 +2000,11 @@ Real World::GetLastStepInverseDt() const
 }
 void World::SetLastStepInverseDt(Real invDt)
 {
-    RequireNotStepping(State(), "World::SetLastStepInverseDt");
-    RequireNonNegative(invDt, "World::SetLastStepInverseDt: invDt");
+    if (!RequireNotStepping(State(), "World::SetLastStepInverseDt") ||
+        !RequireNonNegative(invDt, "World::SetLastStepInverseDt: invDt"))
+    {
+        return;
+    }
     State().invDt0 = invDt;
 }
 bool World::GetAllowSleeping() const
@@ -2117,7 +2120,12 @@ int World::GetTouchingContactCount() const
 
 BodyDef World::GetBodyDef(BodyId id) const
 {
-    const Body& body = Resolve(State().bodies, id, "body");
+    const auto* const found = Resolve(State().bodies, id, "body");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Body& body = *found;
     BodyDef def;
     def.type = body.type;
     def.position = body.xf.p;
@@ -2281,7 +2289,12 @@ AnyJointDef JointDefOf(const WorldState&, const Joint& joint, const GearJoint& g
 
 AnyJointDef World::GetJointDef(JointId id) const
 {
-    const Joint& joint = Resolve(State().joints, id, "joint").joint;
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
+    const Joint& joint = found->joint;
     return std::visit([&](const auto& data) { return JointDefOf(State(), joint, data); },
                       joint.data);
 }
@@ -2339,8 +2352,13 @@ auto ImpulsesOf(JointT& joint)
 
 std::vector<Real> World::GetJointImpulses(JointId id) const
 {
+    const auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return {};
+    }
     std::vector<Real> impulses;
-    for (const Real* impulse : ImpulsesOf(Resolve(State().joints, id, "joint").joint))
+    for (const Real* impulse : ImpulsesOf(found->joint))
     {
         impulses.push_back(*impulse);
     }
@@ -2349,18 +2367,33 @@ std::vector<Real> World::GetJointImpulses(JointId id) const
 
 void World::SetJointImpulses(JointId id, std::span<const Real> impulses)
 {
-    RequireNotStepping(State(), "World::SetJointImpulses");
-    Joint& joint = Resolve(State().joints, id, "joint").joint;
+    if (!RequireNotStepping(State(), "World::SetJointImpulses"))
+    {
+        return;
+    }
+    auto* const found = Resolve(State().joints, id, "joint");
+    if (found == nullptr)
+    {
+        return;
+    }
+    Joint& joint = found->joint;
     const std::vector<Real*> rows = ImpulsesOf(joint);
-    Require(impulses.size() == std::size_t(JointImpulseCount(joint.type)),
-            [&]
-            {
-                return "World::SetJointImpulses: this joint has " + std::to_string(rows.size()) +
-                       " impulses, got " + std::to_string(impulses.size());
-            });
+    if (!Require(impulses.size() == std::size_t(JointImpulseCount(joint.type)),
+                 [&]
+                 {
+                     return "World::SetJointImpulses: this joint has " +
+                            std::to_string(rows.size()) + " impulses, got " +
+                            std::to_string(impulses.size());
+                 }))
+    {
+        return;
+    }
     for (const Real impulse : impulses)
     {
-        RequireFinite(impulse, "World::SetJointImpulses: impulses");
+        if (!RequireFinite(impulse, "World::SetJointImpulses: impulses"))
+        {
+            return; // nothing was changed yet
+        }
     }
     for (std::size_t i = 0; i < rows.size(); ++i)
     {

@@ -212,7 +212,8 @@ std::span<const ShapeId> World::GetChainSegments(ChainId id) const
 
 bool World::IsChainLoop(ChainId id) const
 {
-    return ResolveChain(State(), id).loop;
+    const auto* const chain = ResolveChain(State(), id);
+    return chain != nullptr && chain->loop;
 }
 
 ChainId World::GetChain(ShapeId id) const
