@@ -41,11 +41,14 @@ inline ShapeDef Material(Real density, Real friction, Real restitution = 0)
     return def;
 }
 
-/// A world with the given gravity and iteration counts, everything else default.
+/// A world with the given gravity and iteration counts, everything else default but sleeping:
+/// the exact answers assume bodies that keep moving (a body slower than 0.01 m/s for 0.5 s
+/// would otherwise stop where it is).
 inline World MakeWorld(Vec2 gravity, int velocityIterations = 8, int positionIterations = 3)
 {
     WorldDef def;
     def.gravity = gravity;
+    def.allowSleep = false;
     def.solver.velocityIterations = velocityIterations;
     def.solver.positionIterations = positionIterations;
     return World{def};

@@ -196,7 +196,7 @@ namespace
 struct TwinWorlds
 {
     b2World box2d{b2Vec2(0, -10)};
-    World meff{WorldDef{.gravity = {0, -10}}};
+    World meff{WorldDef{.gravity = {0, -10}, .allowSleep = false}}; // as box2d's, below
     std::vector<b2Body*> b2Bodies;
     std::vector<BodyId> bodies;
 

@@ -89,6 +89,7 @@ std::pair<World, BodyId> MakeGroundedWorld(bool coloured, Real halfWidth = 50)
 {
     WorldDef def;
     def.solver.kind = coloured ? SolverKind::Colour : SolverKind::Box2D;
+    def.allowSleep = false; // bodies at rest are read step after step (their contact support)
     World world(def);
     const BodyId ground = world.CreateBody({});
     world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(halfWidth, 1, {0, -1}, 0));

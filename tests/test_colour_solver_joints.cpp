@@ -25,6 +25,7 @@ World MakeColourWorld(bool coloured, Vec2 gravity = {0, -10})
     WorldDef def;
     def.gravity = gravity;
     def.solver.kind = coloured ? SolverKind::Colour : SolverKind::Box2D;
+    def.allowSleep = false; // convergence is read at rest, where an island would fall asleep
     return World{def};
 }
 

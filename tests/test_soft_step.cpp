@@ -24,6 +24,7 @@ World MakeSoftWorld(Vec2 gravity = {0, -10})
     WorldDef def;
     def.gravity = gravity;
     def.solver.kind = SolverKind::SoftStep;
+    def.allowSleep = false; // resting bodies are read step after step (their contact reports)
     return World{def};
 }
 

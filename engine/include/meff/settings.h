@@ -165,9 +165,10 @@ struct WorldDef
     Tolerances tolerances{}; ///< Box2D's constants (see TolerancesForLengthUnits)
     /// Let resting islands fall asleep (Box2D 2.4.1's rules, see Tolerances::timeToSleep): a
     /// sleeping body is not integrated, solved, collided or moved in the broad phase until
-    /// something wakes it. Off by default (Box2D's default is on); World::SetAllowSleeping
-    /// changes it later.
-    bool allowSleep = false;
+    /// something wakes it. On by default, as in Box2D 2.4.1 and v3; `false` keeps every body
+    /// awake (what a step-by-step comparison with a Box2D world that never sleeps needs).
+    /// World::SetAllowSleeping changes it later. Scene files keep their own default (off).
+    bool allowSleep = true;
     /// Continuous collision (Box2D's continuous physics, on by default there too): after each
     /// step, fast dynamic bodies are moved back to their first time of impact with static and
     /// kinematic shapes (bullets: with dynamic shapes too) and re-solved over the rest of the
