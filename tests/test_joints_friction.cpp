@@ -147,13 +147,15 @@ TEST_CASE("Friction joints reject bad arguments", "[joints][friction][make]")
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     FrictionJointDef def;
     def.maxForce = -1;
-    CHECK_THROWS_WITH(MakeJoint(def, 0, 1), "FrictionJointDef::maxForce: must be finite and >= 0, got -1");
+    CHECK_THROWS_WITH(MakeJoint(def, 0, 1),
+                      "FrictionJointDef::maxForce: must be finite and >= 0, got -1");
     def.maxForce = 1;
     def.maxTorque = nan;
     CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("FrictionJointDef::maxTorque") &&
                                                 Catch::Contains("must be finite"));
     def.maxTorque = -Real(0.5);
-    CHECK_THROWS_WITH(MakeJoint(def, 0, 1), "FrictionJointDef::maxTorque: must be finite and >= 0, got -0.5");
+    CHECK_THROWS_WITH(MakeJoint(def, 0, 1),
+                      "FrictionJointDef::maxTorque: must be finite and >= 0, got -0.5");
     def.maxTorque = 0;
     def.localAnchorB = {nan, 0};
     CHECK_THROWS_AS(MakeJoint(def, 0, 1), InvalidArgument);

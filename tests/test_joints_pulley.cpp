@@ -143,13 +143,15 @@ TEST_CASE("Pulley joints reject bad arguments", "[joints][pulley][make]")
     def.ratio = 0;
     CHECK_THROWS_WITH(MakeJoint(def, 0, 1), "PulleyJointDef::ratio: must be finite and > 0, got 0");
     def.ratio = -2;
-    CHECK_THROWS_WITH(MakeJoint(def, 0, 1), "PulleyJointDef::ratio: must be finite and > 0, got -2");
-    def.ratio = nan;
     CHECK_THROWS_WITH(MakeJoint(def, 0, 1),
-                      Catch::Contains("PulleyJointDef::ratio") && Catch::Contains("must be finite"));
+                      "PulleyJointDef::ratio: must be finite and > 0, got -2");
+    def.ratio = nan;
+    CHECK_THROWS_WITH(MakeJoint(def, 0, 1), Catch::Contains("PulleyJointDef::ratio") &&
+                                                Catch::Contains("must be finite"));
     def.ratio = 1;
     def.lengthA = -1;
-    CHECK_THROWS_WITH(MakeJoint(def, 0, 1), "PulleyJointDef::lengthA: must be finite and >= 0, got -1");
+    CHECK_THROWS_WITH(MakeJoint(def, 0, 1),
+                      "PulleyJointDef::lengthA: must be finite and >= 0, got -1");
     def.lengthA = 0;
     def.groundAnchorB = {0, nan};
     CHECK_THROWS_AS(MakeJoint(def, 0, 1), InvalidArgument);
