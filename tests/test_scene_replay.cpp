@@ -62,9 +62,9 @@ TEST_CASE("Every bundled sample saved as built reads back as the same scene and 
           "bit",
           "[replay]")
 {
-    const std::vector<std::string> paths =
-        SampleScenes({"samples/scenes", "samples/extreme", "samples/testbed", "samples/v3"});
-    REQUIRE(paths.size() >= 80); // samples/scenes, extreme, testbed and v3
+    const std::vector<std::string> paths = SampleScenes(
+        {"samples/scenes", "samples/extreme", "samples/testbed", "samples/solver2d", "samples/v3"});
+    REQUIRE(paths.size() >= 110); // samples/scenes, extreme, testbed, solver2d and v3
     int replayed = 0;
     for (const std::string& path : paths)
     {
@@ -92,7 +92,7 @@ TEST_CASE("Every bundled sample saved as built reads back as the same scene and 
               -1);
         ++replayed;
     }
-    CHECK(replayed >= 80);
+    CHECK(replayed >= 110);
 }
 
 namespace
