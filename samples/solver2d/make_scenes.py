@@ -502,8 +502,9 @@ def joint_grid():
     scene("joint_grid", "Joint Grid", "sample_joints.cpp",
           "the sample's debug size (1 x 20; 100 x 100 with NDEBUG): a row of 20 balls of radius "
           "0.4 m hinged 1 m apart, the middle seven fixed, the others hanging on each side under "
-          "twice gravity; the balls do not collide with each other (category 2, mask ~2). The sample also hinges the fixed balls to each other, which does nothing; those six joints are left out.", 600,
-          bodies, joints)
+          "twice gravity; the balls do not collide with each other (category 2, mask ~2). The "
+          "sample also hinges the fixed balls to each other, which does nothing; those six "
+          "joints are left out.", 600, bodies, joints)
 
 
 def stretched_chain():
