@@ -31,7 +31,6 @@ Plausibility thresholds ("plausibility", docs/validation.md): the defaults, exce
 Box2D's figure, rounded up to two significant digits, and the figure is quoted beside it.
 """
 import importlib.util
-import json
 import math
 import os
 
@@ -612,8 +611,4 @@ for build in (single_box, high_mass_ratio_1, lambda: high_mass_ratio(False),
     build()
 
 if __name__ == "__main__":
-    for name, s in SCENES.items():
-        with open(os.path.join(HERE, name + ".json"), "w") as f:
-            json.dump(s, f, indent=1)
-            f.write("\n")
-    print(f"{len(SCENES)} scenes written to {HERE}")
+    tb.write_scenes(SCENES, HERE)

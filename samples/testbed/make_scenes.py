@@ -959,9 +959,14 @@ for build in (pulley_joint, theo_jansen, bullet_test, box_stack, pyramid, tumble
               apply_force, breakable, chain_problem):
     build()
 
-if __name__ == "__main__":
-    for name, s in SCENES.items():
-        with open(os.path.join(HERE, name + ".json"), "w") as f:
+def write_scenes(scenes, folder):
+    """Writes each scene to folder/NAME.json (the key is the file name)."""
+    for name, s in scenes.items():
+        with open(os.path.join(folder, name + ".json"), "w") as f:
             json.dump(s, f, indent=1)
             f.write("\n")
-    print(f"{len(SCENES)} scenes written to {HERE}")
+    print(f"{len(scenes)} scenes written to {folder}")
+
+
+if __name__ == "__main__":
+    write_scenes(SCENES, HERE)
