@@ -583,7 +583,7 @@ def ragdoll():
           "0.4, feet 0.1) joined by revolute joints with angle limits and weak braking motors, "
           "its parts not colliding with each other, dropped from 4 m onto a 40 x 2 m ground "
           "box.", 600, [ground_box(hw=20)] + bodies, joints, plausibility=REST,
-          render_height=6, render_center=(0, 2.5))
+          render_height=6.5, render_center=(0, 3))
 
 
 def far_ragdoll_pile():
