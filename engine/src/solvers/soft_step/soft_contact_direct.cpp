@@ -318,7 +318,7 @@ void SoftContactDirect::Solve(std::span<SoftContact> contacts, const SoftStepCon
                               std::vector<std::int32_t>& fallback)
 {
     SoftBodies& bodies = *context.bodies;
-    const Real slop = context.step->tolerances.linearSlop;
+    const Real slop = context.rowSlop;
     for (const Group& g : m_groups)
     {
         const int n = g.rowCount;

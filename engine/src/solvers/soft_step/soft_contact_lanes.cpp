@@ -163,7 +163,7 @@ void MeasureErrors(SoftContactGroup& g, const SoftStepContext& context)
     const SoftDelta* deltas = context.bodies->deltas.data();
     const DeltaW dA = GatherDeltas(deltas, g.indexA);
     const DeltaW dB = GatherDeltas(deltas, g.indexB);
-    const RealW slop = Splat(context.step->tolerances.linearSlop);
+    const RealW slop = Splat(context.rowSlop);
     for (int j = 0; j < 2; ++j)
     {
         g.error[j] = SeparationOf(g.baseSeparation[j], g.normal, dA.dp, dA.dq, dB.dp, dB.dq,

@@ -31,7 +31,8 @@ Vec2 Tangent(Vec2 normal)
     return Cross(normal, Real(1));
 }
 
-/// A point's separation + linearSlop now (m): the normal row's C.
+/// A point's separation + slop now (m): the normal row's C with SoftStepContext::rowSlop, the
+/// position correction's with linearSlop.
 Real NormalError(const SoftContact& c, const SoftContactPoint& p, const SoftDelta& dA,
                  const SoftDelta& dB, Real slop)
 {
@@ -211,7 +212,7 @@ void SoftContactSolver::WarmStartContact(SoftContact& c, const SoftStepContext& 
 void SoftContactSolver::SolveNormalRows(SoftContact& c, RowBodies& b,
                                         const SoftStepContext& context, bool useBias)
 {
-    const Real slop = context.step->tolerances.linearSlop;
+    const Real slop = context.rowSlop;
     const SoftDelta& dA = context.bodies->deltas[c.indexA];
     const SoftDelta& dB = context.bodies->deltas[c.indexB];
     // Rigid contacts leave the overlap to CorrectPositions; soft ones push it out here.

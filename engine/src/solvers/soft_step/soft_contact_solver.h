@@ -36,9 +36,10 @@ class SoftContactDirect;
 /// a world manifold and a few effective masses, so fewer would not pay for the hand-out.
 inline constexpr int kMinSoftContactsPerTask = 64;
 
-/// A point's separation + linearSlop now (m), the normal row's C, from the separation at the
-/// step's start and the bodies' motion since (dp, dq): s = base + (dpB − dpA + dqB·rB − dqA·rA)·n.
-/// Written once for a Real and for SIMD lanes (soft_contact_lanes.cpp).
+/// A point's separation + slop now (m) — the normal row's C with the context's rowSlop, the
+/// position correction's with linearSlop — from the separation at the step's start and the bodies'
+/// motion since (dp, dq): s = base + (dpB − dpA + dqB·rB − dqA·rA)·n. Written once for a Real and
+/// for SIMD lanes (soft_contact_lanes.cpp).
 template <typename R, typename V, typename Q>
 [[gnu::always_inline]] inline R SeparationOf(R base, V n, V dpA, Q dqA, V dpB, Q dqB, V rA, V rB,
                                              R slop)

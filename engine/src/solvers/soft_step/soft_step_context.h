@@ -29,7 +29,13 @@ struct SoftStepContext
     Softness jointCorrection;
     Real maxPushOut = 0; ///< m/s
     SoftContactModel contactModel = SoftContactModel::Rigid;
-    Real contactCorrection = 0;   ///< rigid contacts: fraction of the overlap removed per sub-step
+    Real contactCorrection = 0; ///< rigid contacts: fraction of the overlap removed per sub-step
+    /// How deep into their skins (m) the normal rows let two shapes close by velocity: the
+    /// rows' C is a point's separation plus this. Rigid contacts: 0, so an approach stops where
+    /// the shapes touch, as Box2D's velocity rows stop it; the slop is only the position
+    /// correction's dead band, not room to sink into (docs/soft-step.md, "Contacts that do
+    /// not sag"). Soft contacts: linearSlop (Box2D v3's).
+    Real rowSlop = 0;
     bool blockSolver = true;      ///< two-point manifolds' normal rows as one block
     bool frictionInSolve = false; ///< no relax sweeps: friction goes with the biased sweep
     bool halfKick = false;        ///< this sweep belongs to one of the step's two half sub-steps

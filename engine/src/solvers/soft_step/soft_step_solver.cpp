@@ -63,6 +63,8 @@ SoftStepContext MakeSoftStepContext(const StepContext& step)
     context.maxPushOut = settings.maxPushOutSpeed;
     context.contactModel = settings.contacts;
     context.contactCorrection = settings.contactCorrection;
+    context.rowSlop =
+        settings.contacts == SoftContactModel::Rigid ? Real(0) : step.tolerances.linearSlop;
     context.blockSolver = step.solver.blockSolver;
     context.frictionInSolve = settings.relaxIterations == 0;
     return context;
