@@ -343,7 +343,8 @@ std::vector<ReportImage> DrawDivergenceFrames(const Scene& scene,
     return images;
 }
 
-void WriteHtmlReport(const std::string& directory, const std::vector<ReportRow>& rows)
+void WriteHtmlReport(const std::string& directory, const std::vector<ReportRow>& rows,
+                     const std::string& reference)
 {
     int counts[4] = {};
     for (const ReportRow& row : rows)
@@ -364,12 +365,14 @@ void WriteHtmlReport(const std::string& directory, const std::vector<ReportRow>&
                        "pre{background:#f7f7f7;padding:6px;white-space:pre-wrap;font-size:12px}"
                        "figure{display:inline-block;margin:4px}figcaption{font-size:12px}"
                        "section{border-top:1px solid #ccc;margin-top:1em}</style></head><body>\n";
-    html += "<h1>meff validate</h1><p>meff " + std::string(MEFF_VERSION) +
-            " against Box2D 2.4.1: " + std::to_string(rows.size()) + " levels, " +
+    html += "<h1>meff validate</h1><p>meff " + std::string(MEFF_VERSION) + " against " +
+            XmlEscape(reference) + ": " + std::to_string(rows.size()) + " levels, " +
             std::to_string(counts[0]) + " passed, " + std::to_string(counts[1]) + " failed, " +
             std::to_string(counts[2]) + " skipped, " + std::to_string(counts[3]) +
-            " could not be loaded. Errors are the largest over the run (m, rad, m/s, N·s); "
-            "blue outlines in the pictures are Box2D's bodies over meff's.</p>\n";
+            " could not be loaded. Errors are the largest over the run (m, rad, m/s, N·s)" +
+            (reference == kBox2DReference
+                 ? "; blue outlines in the pictures are Box2D's bodies over meff's.</p>\n"
+                 : ".</p>\n");
     html += "<table id=\"levels\"><thead><tr><th>outcome</th><th>level</th><th>scene</th>"
             "<th>frames</th><th>first divergent frame</th><th>position</th><th>angle</th>"
             "<th>velocity</th><th>contact impulse</th><th>joint impulse</th></tr></thead>"

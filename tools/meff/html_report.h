@@ -64,7 +64,12 @@ std::vector<ReportImage> DrawDivergenceFrames(const Scene& scene,
                                               const std::filesystem::path& reportDirectory,
                                               const std::string& folder);
 
+/// What the levels were compared with, unless a baseline: the page says so.
+inline const std::string kBox2DReference = "Box2D 2.4.1";
+
 /// Writes DIRECTORY/index.html whole (or not at all); throws std::runtime_error when it cannot.
-void WriteHtmlReport(const std::string& directory, const std::vector<ReportRow>& rows);
+/// `reference` says what the levels were compared with ("its baselines in DIR", say).
+void WriteHtmlReport(const std::string& directory, const std::vector<ReportRow>& rows,
+                     const std::string& reference = kBox2DReference);
 
 } // namespace meff::cli

@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 the meff authors
 // `meff validate`: runs scenes in meff and in Box2D 2.4.1 side by side and compares them frame
 // by frame (see validation/include/meff/validation.h for what is compared and how).
+#include "baseline_files.h"
 #include "commands.h"
 #include "html_report.h"
 #include "junit.h"
@@ -59,6 +60,12 @@ struct ValidateOptions
     /// compared with Box2D frame by frame, so it is held to the plausibility checks instead.
     std::optional<SolverKind> solver;
     bool plausibility = false; ///< --plausibility: the checks also beside the comparison
+    /// --baseline DIR: compare each scene with its run recorded there, not with Box2D
+    std::string baselineDir;
+    bool record = false;                 ///< --record: record the baselines instead
+    std::vector<std::string> tolerances; ///< --tolerance NAME=VALUE (baselines)
+    bool bitExact = false;               ///< --bit-exact: every baseline tolerance 0
+    bool acceptSceneChange = false;      ///< --accept-scene-change
 };
 
 std::string Number(double value)
@@ -87,16 +94,16 @@ std::string ResultText(const ValidationResult& result)
     if (result.meffVelocityIterations != result.box2dVelocityIterations)
     {
         line += ", velocity iterations meff " + std::to_string(result.meffVelocityIterations) +
-                " / Box2D " + std::to_string(result.box2dVelocityIterations);
+                " / " + result.reference + " " + std::to_string(result.box2dVelocityIterations);
     }
     line += "; max " + FormatMaximum("position", "m", result.position) + ", " +
             FormatMaximum("angle", "rad", result.angle) + ", " +
             FormatMaximum("velocity", "m/s", result.velocity) + ", " +
             FormatMaximum("contact impulse", "N·s", result.contactImpulse) + ", " +
             FormatMaximum("joint impulse", "N·s", result.jointImpulse);
-    line += "; contact points only in meff " + std::to_string(result.onlyInMeff) +
-            ", only in Box2D " + std::to_string(result.onlyInBox2D) + "; awake flags differing " +
-            std::to_string(result.awakeMismatches);
+    line += "; contact points only in meff " + std::to_string(result.onlyInMeff) + ", only in " +
+            result.reference + " " + std::to_string(result.onlyInBox2D) +
+            "; awake flags differing " + std::to_string(result.awakeMismatches);
     // With a setting Box2D cannot mirror (and no chaotic horizon), frames after the first are
     // reported, not judged: the line says what was compared, never "PASS ... diverged".
     const bool judgedFrameByFrame = result.unmirrored.empty() || result.chaotic;
@@ -166,11 +173,12 @@ std::string ResultText(const ValidationResult& result)
     return text;
 }
 
-/// "position 0.00012 > 0.0001 at box3: meff (1, 2) m, Box2D (1, 2.0001) m"
-std::string DetailText(const validation::DivergenceDetail& detail)
+/// "position 0.00012 > 0.0001 at box3: meff (1, 2) m, Box2D (1, 2.0001) m" (or "baseline")
+std::string DetailText(const validation::DivergenceDetail& detail, const std::string& reference)
 {
     return detail.quantity + " " + Number(detail.error) + " > " + Number(detail.tolerance) +
-           " at " + detail.where + ": meff " + detail.meff + ", Box2D " + detail.box2d;
+           " at " + detail.where + ": meff " + detail.meff + ", " + reference + " " +
+           detail.box2d;
 }
 
 /// The scene as a JUnit test case: a failure carries the divergence frame, each quantity that
@@ -207,12 +215,12 @@ JUnitCase JUnitCaseOf(const ValidationResult& result, double seconds)
             {
                 what += (what.empty() ? "" : ", ") + quantity;
             }
-            testCase.message = "diverged from Box2D at frame " +
+            testCase.message = "diverged from " + result.reference + " at frame " +
                                std::to_string(*result.divergenceFrame) + ": " + what;
             for (const validation::DivergenceDetail& detail : result.divergenceDetails)
             {
                 testCase.text += "frame " + std::to_string(*result.divergenceFrame) + ": " +
-                                 DetailText(detail) + "\n";
+                                 DetailText(detail, result.reference) + "\n";
             }
         }
         else
@@ -257,6 +265,7 @@ nlohmann::json SummaryJson(const ValidationResult& result)
     nlohmann::json summary;
     summary["meff_version"] = MEFF_VERSION;
     summary["status"] = result.passed ? "passed" : "failed";
+    summary["reference"] = result.reference;
     summary["scene"] = result.scene;
     summary["source"] = result.sourcePath;
     summary["frames"] = result.frames;
@@ -426,7 +435,8 @@ class Reporter
         {
             row.plotSvg = ErrorPlotSvg(result);
         }
-        if (!result.passed && result.divergenceFrame)
+        // The pictures overlay Box2D 2.4.1's bodies: a baseline has no world to draw.
+        if (!result.passed && result.divergenceFrame && result.reference == "Box2D")
         {
             try
             {
@@ -603,15 +613,18 @@ struct Level
     double seconds = 0;
     std::string reportError;   ///< the report could not be written: why
     bool refusedByRun = false; ///< refused by validation::Validate: problems not printed yet
-    ReportRow row;             ///< its part of index.html (--report)
+    std::string refusal = "cannot be loaded or built"; ///< why it was refused, in short
+    std::string recorded; ///< --record: the line saying where its baseline went
+    ReportRow row;        ///< its part of index.html (--report)
 };
 
 /// Loads and builds each level once. A level that does not load or build is refused (its
 /// messages printed to stderr), and one to be compared with Box2D that needs what Box2D 2.4.1
 /// lacks is skipped; the others run. `solver` (--solver) decides which are compared: all with
-/// box2d or unset, none with another back end (plausibility checks instead).
+/// box2d or unset, none with another back end (plausibility checks instead); with a baseline
+/// (`baseline`), every level is compared with it, whatever it uses.
 std::vector<Level> LoadLevels(const std::vector<std::string>& paths,
-                              const std::optional<SolverKind>& solver)
+                              const std::optional<SolverKind>& solver, bool baseline)
 {
     std::vector<Level> levels;
     for (const std::string& path : paths)
@@ -624,8 +637,8 @@ std::vector<Level> LoadLevels(const std::vector<std::string>& paths,
             level.status = LevelStatus::Refused;
             continue;
         }
-        level.compared = solver.value_or(SolverKind::Box2D) == SolverKind::Box2D;
-        if (level.compared)
+        level.compared = baseline || solver.value_or(SolverKind::Box2D) == SolverKind::Box2D;
+        if (level.compared && !baseline)
         {
             level.problems = validation::Unmirrorable(*level.scene);
         }
@@ -664,7 +677,7 @@ std::string NotRunText(const Level& level)
 {
     if (level.status == LevelStatus::Refused)
     {
-        return "ERROR " + level.path + ": cannot be loaded or built (" +
+        return "ERROR " + level.path + ": " + level.refusal + " (" +
                std::to_string(level.problems.size()) +
                (level.problems.size() == 1 ? " problem" : " problems") + ", on stderr)\n";
     }
@@ -677,12 +690,20 @@ std::string NotRunText(const Level& level)
     return text;
 }
 
-JUnitCase NotRunCase(const Level& level, const std::string& name)
+/// The level's test case, passing until told otherwise.
+JUnitCase PlainCase(const Level& level, const std::string& name)
 {
     JUnitCase testCase;
     testCase.name = name;
     testCase.className = "meff.validate";
     testCase.file = level.path;
+    testCase.seconds = level.seconds;
+    return testCase;
+}
+
+JUnitCase NotRunCase(const Level& level, const std::string& name)
+{
+    JUnitCase testCase = PlainCase(level, name);
     testCase.output = NotRunText(level);
     testCase.outcome = level.status == LevelStatus::Skipped ? JUnitCase::Outcome::Skipped
                                                             : JUnitCase::Outcome::Error;
@@ -727,6 +748,11 @@ ReportRow RowOf(Level& level, const JUnitCase& testCase)
         }
         return row;
     }
+    if (!level.recorded.empty())
+    {
+        row.status = "passed";
+        return row;
+    }
     const bool plausible = !level.plausibility || level.plausibility->passed;
     if (level.plausibility)
     {
@@ -745,7 +771,8 @@ ReportRow RowOf(Level& level, const JUnitCase& testCase)
     row.divergenceFrame = result.divergenceFrame;
     for (const validation::DivergenceDetail& detail : result.divergenceDetails)
     {
-        row.divergence += (row.divergence.empty() ? "" : "; ") + DetailText(detail);
+        row.divergence +=
+            (row.divergence.empty() ? "" : "; ") + DetailText(detail, result.reference);
     }
     if (!row.divergence.empty())
     {
@@ -777,6 +804,37 @@ bool CreateParentFolder(const std::string& path)
     return true;
 }
 
+/// --baseline: records the level's run (--record) or compares it with the recorded one, in the
+/// back end --solver names or the scene's own. A baseline that cannot be written, read or used
+/// refuses the level with its one line; the other levels still run.
+void RunWithBaseline(const ValidateOptions& options, const validation::RunOptions& run,
+                     Level& level)
+{
+    Scene scene = *level.scene;
+    scene.world.solver.kind = options.solver.value_or(scene.world.solver.kind);
+    const std::string file = BaselineFile(options.baselineDir, level.path);
+    try
+    {
+        if (options.record)
+        {
+            level.recorded = RecordBaselineFile(scene, run, file);
+            return;
+        }
+        level.result =
+            CompareWithBaselineFile(scene, run, file,
+                                    BaselineTolerances(options.tolerances, options.bitExact),
+                                    options.acceptSceneChange);
+    }
+    catch (const std::runtime_error& error) // validation::BaselineError, OutputFile's
+    {
+        level.status = LevelStatus::Refused;
+        level.problems = {error.what()};
+        level.refusedByRun = true;
+        level.refusal = options.record ? "its baseline could not be recorded"
+                                       : "its baseline cannot be used";
+    }
+}
+
 void WriteJUnit(const ValidateOptions& options, const std::vector<JUnitCase>& cases, double seconds)
 {
     std::string suite = "meff validate";
@@ -801,7 +859,7 @@ int Validate(const ValidateOptions& options)
     }
     // Every level is loaded and built before anything runs; one that cannot be is reported
     // as its own case, and the others still run.
-    std::vector<Level> levels = LoadLevels(paths, options.solver);
+    std::vector<Level> levels = LoadLevels(paths, options.solver, !options.baselineDir.empty());
     const std::vector<std::string> caseNames = CaseNames(levels);
 
     validation::RunOptions run;
@@ -863,14 +921,19 @@ int Validate(const ValidateOptions& options)
         {
             try
             {
-                if (level.compared)
+                if (!options.baselineDir.empty())
+                {
+                    RunWithBaseline(options, run, level);
+                }
+                else if (level.compared)
                 {
                     Scene compared = *level.scene;
                     compared.world.solver.kind = SolverKind::Box2D;
                     level.result =
                         validation::Validate(options.solver ? compared : *level.scene, run);
                 }
-                if (!level.compared || options.plausibility)
+                if ((!level.compared || options.plausibility) && level.recorded.empty() &&
+                    level.status == LevelStatus::Runnable)
                 {
                     level.plausibility =
                         validation::CheckPlausibility(*level.scene, options.solver, options.frames);
@@ -889,7 +952,16 @@ int Validate(const ValidateOptions& options)
         {
             try
             {
-                if (level.status == LevelStatus::Runnable && level.compared)
+                if (!level.recorded.empty())
+                {
+                    reporter->WriteSummary({{"meff_version", MEFF_VERSION},
+                                            {"status", "recorded"},
+                                            {"scene", level.scene->name},
+                                            {"source", level.path},
+                                            {"passed", true}},
+                                           level.directory);
+                }
+                else if (level.status == LevelStatus::Runnable && level.compared)
                 {
                     reporter->Write(*level.scene, level.result, level.directory,
                                     level.plausibility ? &*level.plausibility : nullptr, level.row);
@@ -923,7 +995,13 @@ int Validate(const ValidateOptions& options)
     {
         Level& level = levels[i];
         progress.Clear();
-        if (level.status == LevelStatus::Runnable && level.compared)
+        if (!level.recorded.empty())
+        {
+            std::fputs(level.recorded.c_str(), stdout);
+            cases.push_back(PlainCase(level, caseNames[i]));
+            cases.back().output = level.recorded;
+        }
+        else if (level.status == LevelStatus::Runnable && level.compared)
         {
             std::fputs(ResultText(level.result).c_str(), stdout);
             allPassed = allPassed && level.result.passed;
@@ -932,12 +1010,7 @@ int Validate(const ValidateOptions& options)
         }
         else if (level.status == LevelStatus::Runnable)
         {
-            JUnitCase testCase;
-            testCase.name = caseNames[i];
-            testCase.className = "meff.validate";
-            testCase.file = level.path;
-            testCase.seconds = level.seconds;
-            cases.push_back(std::move(testCase));
+            cases.push_back(PlainCase(level, caseNames[i]));
         }
         if (level.status == LevelStatus::Runnable && level.plausibility)
         {
@@ -989,7 +1062,10 @@ int Validate(const ValidateOptions& options)
     {
         try
         {
-            WriteHtmlReport(options.reportDir, rows);
+            WriteHtmlReport(options.reportDir, rows,
+                            options.baselineDir.empty()
+                                ? kBox2DReference
+                                : "the baselines in " + options.baselineDir);
         }
         catch (const std::runtime_error& error)
         {
@@ -1010,6 +1086,45 @@ int Validate(const ValidateOptions& options)
 }
 
 } // namespace
+
+/// --baseline and what goes with it (docs/validation.md, "Baselines").
+void AddBaselineOptions(CLI::App& app, ValidateOptions& options)
+{
+    CLI::Option* baseline =
+        app.add_option("--baseline", options.baselineDir,
+                       "Compare each scene with its own run recorded in DIR instead of Box2D "
+                       "(any back end, the scene's or --solver's): every frame's bodies, contact "
+                       "impulses and joint reactions, with the same reports; a missing, stale or "
+                       "damaged baseline is an ERROR case")
+            ->type_name("DIR");
+    CLI::Option* record =
+        app.add_flag("--record", options.record,
+                     "With --baseline: record each scene's run into "
+                     "DIR/<scene path>.baseline.gz instead of comparing")
+            ->needs(baseline);
+    const CLI::Validator setting([](std::string& text) { return CheckToleranceSetting(text); },
+                                 "");
+    CLI::Option* tolerance =
+        app.add_option("--tolerance", options.tolerances,
+                       "With --baseline: a limit, NAME=VALUE: position (m), angle (rad), "
+                       "velocity (m/s, rad/s), impulse (N·s), impulse_relative; repeatable. "
+                       "Defaults as against Box2D: 1e-4, 1e-4, 1e-3, 1e-3, 1e-3")
+            ->type_name("NAME=VALUE")
+            ->check(setting)
+            ->needs(baseline)
+            ->excludes(record);
+    app.add_flag("--bit-exact", options.bitExact,
+                 "With --baseline: every limit 0, the run must repeat its baseline bit for bit")
+        ->needs(baseline)
+        ->excludes(record)
+        ->excludes(tolerance);
+    app.add_flag("--accept-scene-change", options.acceptSceneChange,
+                 "With --baseline: compare even when the scene file or its world settings "
+                 "changed since the recording (back end, frames, body and joint counts must "
+                 "still match)")
+        ->needs(baseline)
+        ->excludes(record);
+}
 
 Command AddValidateCommand(CLI::App& parent)
 {
@@ -1061,6 +1176,7 @@ Command AddValidateCommand(CLI::App& parent)
                     "docs/validation.md); default: each scene's own");
     app->add_flag("--plausibility", options->plausibility,
                   "Also run the plausibility checks where the scenes are compared with Box2D");
+    AddBaselineOptions(*app, *options);
     // Hidden: makes meff differ from Box2D on purpose, to show that validation can fail.
     app->add_option("--meff-velocity-iterations", options->meffVelocityIterations,
                     "meff's velocity iterations (Box2D keeps the scene's)")

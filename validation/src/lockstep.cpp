@@ -4,13 +4,13 @@
 #include "meff/box2d_mirror.h"
 #include "meff/box2d_v3_features.h"
 #include "meff/validation.h"
+#include "meff_sampler.h"
+#include "run_tally.h"
 
 #include <cmath>
 #include <cstdio>
-#include <span>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 #include <utility>
 
 namespace meff::validation
@@ -18,85 +18,6 @@ namespace meff::validation
 
 namespace
 {
-
-/// meff's state after a step, in the comparison's terms.
-class MeffSampler
-{
-  public:
-    explicit MeffSampler(const BuiltScene& built) : m_built(built)
-    {
-        for (std::size_t i = 0; i < built.shapes.size(); ++i)
-        {
-            for (std::size_t k = 0; k < built.shapes[i].size(); ++k)
-            {
-                m_shapeOf.emplace(built.shapes[i][k].index, ShapeKey{i, k, 0});
-                // A chain's segments are its children, in order (Box2D's child index).
-                if (!built.chains[i][k].IsNull())
-                {
-                    const std::span<const ShapeId> segments =
-                        built.world.GetChainSegments(built.chains[i][k]);
-                    for (std::size_t child = 1; child < segments.size(); ++child)
-                    {
-                        m_shapeOf.emplace(segments[child].index, ShapeKey{i, k, child});
-                    }
-                }
-            }
-        }
-    }
-
-    FrameSample Sample(Real invDt) const
-    {
-        const World& world = m_built.world;
-        FrameSample sample;
-        sample.bodies.reserve(m_built.bodies.size());
-        for (const BodyId id : m_built.bodies)
-        {
-            const Vec2 p = world.GetPosition(id);
-            const Vec2 v = world.GetLinearVelocity(id);
-            sample.bodies.push_back({p.x, p.y, world.GetAngle(id), v.x, v.y,
-                                     world.GetAngularVelocity(id), world.IsAwake(id)});
-        }
-        for (const ContactPointReport& report : world.GetContactReports())
-        {
-            const ShapeKey& a = m_shapeOf.at(report.shapeA.index);
-            const ShapeKey& b = m_shapeOf.at(report.shapeB.index);
-            ContactSample contact;
-            contact.key = {a.body, a.shape, b.body, b.shape, report.featureKey, a.child, b.child};
-            contact.normalImpulse = report.normalImpulse;
-            contact.tangentImpulse = report.tangentImpulse;
-            sample.contacts.push_back(contact);
-        }
-        sample.joints.reserve(m_built.joints.size());
-        for (const JointId id : m_built.joints)
-        {
-            const JointReaction reaction = world.GetReaction(id, invDt);
-            sample.joints.push_back({reaction.force.x, reaction.force.y, reaction.torque});
-        }
-        return sample;
-    }
-
-  private:
-    /// Scene body index, shape index and chain child index of a shape.
-    struct ShapeKey
-    {
-        std::size_t body = 0;
-        std::size_t shape = 0;
-        std::size_t child = 0;
-    };
-
-    const BuiltScene& m_built;
-    std::unordered_map<std::int32_t, ShapeKey> m_shapeOf;
-};
-
-void Track(RunMaximum& maximum, double value, int frame, const std::string& where)
-{
-    if (value > maximum.value || (std::isnan(value) && !std::isnan(maximum.value)))
-    {
-        maximum.value = value;
-        maximum.frame = frame;
-        maximum.where = where;
-    }
-}
 
 std::string Metres(double value)
 {
@@ -361,30 +282,8 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
     const MeffSampler meff(built);
     const double dt = scene.world.dt;
     const Real invDt = Real(1) / Real(dt);
-    const auto compare = [&](int frame, const FrameSample& meffFrame, const FrameSample& box2dFrame)
-    {
-        FrameErrors errors = CompareFrames(meffFrame, box2dFrame, dt, result.tolerances, frame);
-        Track(result.position, errors.position, frame, DescribeBody(scene, errors.positionBody));
-        Track(result.angle, errors.angle, frame, DescribeBody(scene, errors.angleBody));
-        Track(result.velocity, errors.velocity, frame, DescribeBody(scene, errors.velocityBody));
-        Track(result.contactImpulse, errors.contactImpulse, frame,
-              errors.contact ? DescribeContact(scene, *errors.contact) : "-");
-        Track(result.jointImpulse, errors.jointImpulse, frame, DescribeJoint(scene, errors.joint));
-        result.onlyInMeff += errors.onlyInMeff;
-        result.onlyInBox2D += errors.onlyInBox2D;
-        result.awakeMismatches += errors.awakeMismatches;
-        if (errors.Exceeds() && !result.divergenceFrame)
-        {
-            result.divergenceFrame = frame;
-            result.divergenceQuantities = errors.exceeded;
-            result.divergenceDetails =
-                DescribeDivergence(scene, errors, meffFrame, box2dFrame, dt, result.tolerances);
-        }
-        result.perFrame.push_back(std::move(errors));
-    };
-
     // Frame 0: both worlds as built, before any step (no contacts or reactions yet).
-    compare(0, meff.Sample(invDt), mirror.Sample());
+    TallyFrame(result, scene, 0, meff.Sample(invDt), mirror.Sample(), dt);
     FrameSample lastMeff;
     FrameSample lastBox2D;
     for (int frame = 1; frame <= result.frames; ++frame)
@@ -402,7 +301,7 @@ ValidationResult Validate(const Scene& scene, const RunOptions& options)
         mirror.Step();
         lastMeff = meff.Sample(invDt);
         lastBox2D = mirror.Sample();
-        compare(frame, lastMeff, lastBox2D);
+        TallyFrame(result, scene, frame, lastMeff, lastBox2D, dt);
     }
 
     bool agreed = !result.divergenceFrame;

@@ -193,8 +193,11 @@ struct CheckFailure
 
 struct ValidationResult
 {
-    std::string scene;       ///< scene name
-    std::string sourcePath;  ///< the file
+    std::string scene;      ///< scene name
+    std::string sourcePath; ///< the file
+    /// What meff was compared with, as the reports name it: "Box2D" (2.4.1, Validate) or
+    /// "baseline" (a recorded run of meff, CompareWithBaseline in meff/baseline.h).
+    std::string reference = "Box2D";
     int frames = 0;          ///< steps compared
     Tolerances tolerances;   ///< used
     bool blockSolver = true; ///< as run in both engines
