@@ -14,10 +14,11 @@ $SUDO apt-get update -qq
 # test that draws an SVG frame and compares it with the PNG.
 # clang-14 and libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes; only recommended
 # by clang-14, so named here): the scene loader's fuzz target, fuzz/, which .ci/run runs.
+# zlib1g-dev: the gzip files of `meff validate --baseline` (meff::validation only).
 # chromium: the browser check of `meff validate --report`'s page (tests/cli/check_report.py).
 $SUDO apt-get install -y -qq --no-install-recommends \
     g++ cmake make pkg-config \
-    catch2 libbox2d-dev libosmesa6-dev libpng-dev nlohmann-json3-dev libcli11-dev \
+    catch2 libbox2d-dev libosmesa6-dev libpng-dev nlohmann-json3-dev libcli11-dev zlib1g-dev \
     libfreetype-dev fonts-dejavu-core \
     libglfw3-dev libimgui-dev libgl1-mesa-dri xvfb xauth ffmpeg librsvg2-bin \
     libbenchmark-dev python3 python3-matplotlib \

@@ -135,8 +135,7 @@ validation::ValidationResult CompareWithBaselineFile(const Scene& scene,
                                                      const validation::Tolerances& tolerances,
                                                      bool acceptSceneChange)
 {
-    const validation::Baseline baseline =
-        validation::DecodeBaseline(ReadWholeFile(file), file);
+    const validation::Baseline baseline = validation::DecodeBaseline(ReadWholeFile(file), file);
     const validation::BaselineHeader current = validation::HeaderFor(scene, options, MEFF_VERSION);
     validation::CheckBaseline(baseline.header, current, file, acceptSceneChange);
     validation::ValidationResult result =

@@ -177,8 +177,7 @@ std::string ResultText(const ValidationResult& result)
 std::string DetailText(const validation::DivergenceDetail& detail, const std::string& reference)
 {
     return detail.quantity + " " + Number(detail.error) + " > " + Number(detail.tolerance) +
-           " at " + detail.where + ": meff " + detail.meff + ", " + reference + " " +
-           detail.box2d;
+           " at " + detail.where + ": meff " + detail.meff + ", " + reference + " " + detail.box2d;
 }
 
 /// The scene as a JUnit test case: a failure carries the divergence frame, each quantity that
@@ -820,18 +819,17 @@ void RunWithBaseline(const ValidateOptions& options, const validation::RunOption
             level.recorded = RecordBaselineFile(scene, run, file);
             return;
         }
-        level.result =
-            CompareWithBaselineFile(scene, run, file,
-                                    BaselineTolerances(options.tolerances, options.bitExact),
-                                    options.acceptSceneChange);
+        level.result = CompareWithBaselineFile(
+            scene, run, file, BaselineTolerances(options.tolerances, options.bitExact),
+            options.acceptSceneChange);
     }
     catch (const std::runtime_error& error) // validation::BaselineError, OutputFile's
     {
         level.status = LevelStatus::Refused;
         level.problems = {error.what()};
         level.refusedByRun = true;
-        level.refusal = options.record ? "its baseline could not be recorded"
-                                       : "its baseline cannot be used";
+        level.refusal =
+            options.record ? "its baseline could not be recorded" : "its baseline cannot be used";
     }
 }
 
@@ -1097,13 +1095,11 @@ void AddBaselineOptions(CLI::App& app, ValidateOptions& options)
                        "impulses and joint reactions, with the same reports; a missing, stale or "
                        "damaged baseline is an ERROR case")
             ->type_name("DIR");
-    CLI::Option* record =
-        app.add_flag("--record", options.record,
-                     "With --baseline: record each scene's run into "
-                     "DIR/<scene path>.baseline.gz instead of comparing")
-            ->needs(baseline);
-    const CLI::Validator setting([](std::string& text) { return CheckToleranceSetting(text); },
-                                 "");
+    CLI::Option* record = app.add_flag("--record", options.record,
+                                       "With --baseline: record each scene's run into "
+                                       "DIR/<scene path>.baseline.gz instead of comparing")
+                              ->needs(baseline);
+    const CLI::Validator setting([](std::string& text) { return CheckToleranceSetting(text); }, "");
     CLI::Option* tolerance =
         app.add_option("--tolerance", options.tolerances,
                        "With --baseline: a limit, NAME=VALUE: position (m), angle (rad), "
@@ -1138,8 +1134,10 @@ Command AddValidateCommand(CLI::App& parent)
         "plausibility checks, a PASS or FAIL line per scene with each figure and its limit. "
         "A level that cannot be loaded or built is an ERROR case and one that uses what Box2D "
         "2.4.1 lacks (Box2D v3's shapes, joint springs, characters; rolling resistance) a SKIP "
-        "case when it is to be compared; the other levels still run. Exit status 0 when every "
-        "level passes or is skipped, 1 when any fails, 2 when any could not be loaded or built.");
+        "case when it is to be compared; the other levels still run. With --baseline DIR, each "
+        "scene is compared with its own run recorded there (--record), in any back end. Exit "
+        "status 0 when every level passes or is skipped, 1 when any fails, 2 when any could not "
+        "be loaded or built (or its baseline used).");
     app->add_option("scenes", options->scenePaths, "Scene files (JSON)")
         ->required()
         ->type_name("SCENE.json...");
@@ -1173,7 +1171,8 @@ Command AddValidateCommand(CLI::App& parent)
                     "Run every scene with this back end: box2d (compared with Box2D frame by "
                     "frame), colour or soft_step (held to the plausibility checks instead: "
                     "no NaN, energy, rebound, joint gaps, penetration, speed, rest; "
-                    "docs/validation.md); default: each scene's own");
+                    "docs/validation.md); with --baseline, any is compared with its baseline; "
+                    "default: each scene's own");
     app->add_flag("--plausibility", options->plausibility,
                   "Also run the plausibility checks where the scenes are compared with Box2D");
     AddBaselineOptions(*app, *options);

@@ -212,13 +212,13 @@ ValidationResult CompareWithBaseline(const Scene& scene, const Baseline& baselin
                                std::to_string(result.box2dVelocityIterations) +
                                " (a deliberate difference: this run is expected to fail)");
     }
-    result.failure = RunFrames(run, options,
-                               [&](int frame, const FrameSample& sample)
-                               {
-                                   TallyFrame(result, scene, frame, sample,
-                                              baseline.frames.at(std::size_t(frame)),
-                                              scene.world.dt);
-                               });
+    result.failure =
+        RunFrames(run, options,
+                  [&](int frame, const FrameSample& sample)
+                  {
+                      TallyFrame(result, scene, frame, sample,
+                                 baseline.frames.at(std::size_t(frame)), scene.world.dt);
+                  });
     result.comparisonPassed = !result.divergenceFrame;
     result.passed = result.comparisonPassed && result.failure.empty();
     return result;

@@ -120,8 +120,8 @@ BaselineHeader ParseHeader(std::string_view line, const Reader& reader)
         const nlohmann::json json = nlohmann::json::parse(line);
         if (json.at("format_version").get<int>() != kBaselineFormatVersion)
         {
-            reader.Fail("format version " + json.at("format_version").dump() + ", this meff reads " +
-                        std::to_string(kBaselineFormatVersion));
+            reader.Fail("format version " + json.at("format_version").dump() +
+                        ", this meff reads " + std::to_string(kBaselineFormatVersion));
         }
         BaselineHeader header;
         header.meffVersion = json.at("meff_version").get<std::string>();
@@ -149,8 +149,8 @@ void WriteFrame(Writer& out, const FrameSample& frame)
     out.U32(std::uint32_t(frame.bodies.size()));
     for (const BodySample& body : frame.bodies)
     {
-        for (const double value : {body.x, body.y, body.angle, body.vx, body.vy,
-                                   body.angularVelocity})
+        for (const double value :
+             {body.x, body.y, body.angle, body.vx, body.vy, body.angularVelocity})
         {
             out.F64(value);
         }
@@ -189,8 +189,8 @@ FrameSample ReadFrame(Reader& in, const BaselineHeader& header)
     frame.bodies.resize(std::size_t(header.bodies));
     for (BodySample& body : frame.bodies)
     {
-        for (double* value : {&body.x, &body.y, &body.angle, &body.vx, &body.vy,
-                              &body.angularVelocity})
+        for (double* value :
+             {&body.x, &body.y, &body.angle, &body.vx, &body.vy, &body.angularVelocity})
         {
             *value = in.F64();
         }
@@ -230,8 +230,8 @@ FrameSample ReadFrame(Reader& in, const BaselineHeader& header)
 std::string Compress(const std::string& bytes)
 {
     z_stream stream{};
-    if (deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8,
-                     Z_DEFAULT_STRATEGY) != Z_OK)
+    if (deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) !=
+        Z_OK)
     {
         throw BaselineError("zlib: cannot start compressing");
     }

@@ -4,6 +4,7 @@
 #include "meff/box2d_mirror.h"
 #include "meff/box2d_v3_features.h"
 #include "meff/validation.h"
+
 #include "meff_sampler.h"
 #include "run_tally.h"
 
