@@ -136,15 +136,25 @@ def case_perturbed():
 
 
 def case_damaged():
-    """A truncated, a corrupted and a foreign baseline file each give one line on stderr naming
-    the file and what is wrong, an ERROR case, exit status 2; the other level still runs."""
+    """A truncated, a corrupted and a foreign baseline file, one whose header promises frames it
+    lacks and one of another format version each give one line on stderr naming the file and
+    what is wrong, an ERROR case, exit status 2; the other level still runs."""
     paths = [level("stack10"), level("chain20")]
     record(paths, "soft_step")
     with open(baseline_file(paths[0]), "rb") as stream:
         good = stream.read()
-    damages = {"truncated": good[: len(good) // 2],
-               "corrupt": good[:100] + bytes([good[100] ^ 0xFF]) + good[101:],
-               "not a meff baseline": b"{\"hello\": 1}\n"}
+    # The gzip trailer's CRC-32 changed: the data no longer matches its check.
+    crc = len(good) - 8
+    header = {"format_version": 1, "meff_version": "0", "back_end": "soft_step",
+              "scene": "stack10", "scene_hash": "fnv1a64:0", "settings": {}, "frames": 300,
+              "bodies": 11, "joints": 0}
+    damages = {"truncated (the compressed data ends early)": good[: len(good) // 2],
+               "corrupt (zlib: incorrect data check)":
+                   good[:crc] + bytes([good[crc] ^ 0xFF]) + good[crc + 1:],
+               "not a meff baseline (not gzip data)": b"{\"hello\": 1}\n",
+               "truncated (its frames end early)":
+                   gzip.compress(b"meff-baseline 1\n" + json.dumps(header).encode() + b"\n"),
+               "format 2, this meff reads 1": gzip.compress(b"meff-baseline 2\n")}
     for words, data in damages.items():
         with open(baseline_file(paths[0]), "wb") as stream:
             stream.write(data)

@@ -136,6 +136,10 @@ BaselineHeader ParseHeader(std::string_view line, const Reader& reader)
         {
             reader.Fail("a negative count in its header");
         }
+        if (!json.at("settings").is_object())
+        {
+            reader.Fail("its header's settings are not an object");
+        }
         return header;
     }
     catch (const nlohmann::json::exception& error)
