@@ -216,7 +216,7 @@ def case_reports():
     failure = cases[1].find("failure")
     if cases[0].find("failure") is not None or failure is None or \
             "diverged from baseline at frame 1" not in failure.get("message") or \
-            cases[2].find("error") is None:
+            cases[2].find("error") is None or cases[2].find("error").get("type") != "baseline":
         fail("JUnit outcomes: expected passed, failure at frame 1, error")
     with open(os.path.join(WORK, "report", "index.html")) as stream:
         page = stream.read()

@@ -589,6 +589,9 @@ bool CanWriteInto(const std::string& directory)
     return true;
 }
 
+/// Why a level was refused, unless its baseline was (RunWithBaseline).
+const std::string kCannotLoad = "cannot be loaded or built";
+
 /// What became of one level given on the command line.
 enum class LevelStatus
 {
@@ -612,9 +615,9 @@ struct Level
     double seconds = 0;
     std::string reportError;   ///< the report could not be written: why
     bool refusedByRun = false; ///< refused by validation::Validate: problems not printed yet
-    std::string refusal = "cannot be loaded or built"; ///< why it was refused, in short
-    std::string recorded; ///< --record: the line saying where its baseline went
-    ReportRow row;        ///< its part of index.html (--report)
+    std::string refusal = kCannotLoad; ///< why it was refused, in short
+    std::string recorded;              ///< --record: the line saying where its baseline went
+    ReportRow row;                     ///< its part of index.html (--report)
 };
 
 /// Loads and builds each level once. A level that does not load or build is refused (its
@@ -706,7 +709,9 @@ JUnitCase NotRunCase(const Level& level, const std::string& name)
     testCase.output = NotRunText(level);
     testCase.outcome = level.status == LevelStatus::Skipped ? JUnitCase::Outcome::Skipped
                                                             : JUnitCase::Outcome::Error;
-    testCase.type = level.status == LevelStatus::Skipped ? "unmirrored" : "scene";
+    testCase.type = level.status == LevelStatus::Skipped ? "unmirrored"
+                    : level.refusal == kCannotLoad       ? "scene"
+                                                         : "baseline";
     testCase.message =
         level.problems.empty() ? std::string("cannot be loaded") : level.problems.front();
     for (const std::string& problem : level.problems)
