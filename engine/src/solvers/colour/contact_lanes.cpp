@@ -16,39 +16,57 @@ namespace meff::detail
 namespace
 {
 
-/// Applies impulse P at lever arms rA, rB (−P to A, +P to B).
-[[gnu::always_inline]] inline void ApplyImpulse(const ContactVelocityGroup& g, BodyStateW& a,
-                                                BodyStateW& b, Vec2W rA, Vec2W rB, Vec2W P)
+/// The masses of a group's bodies (ContactLanes::m_bodies).
+[[gnu::always_inline]] inline LaneMasses GatherMasses(const BodyMassW& A, const BodyMassW& B)
 {
-    ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, P);
+    return {A.invMass, A.invI, B.invMass, B.invI};
 }
 
 /// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn, vt driven to
-/// the conveyor's speed).
-[[gnu::always_inline]] inline void SolveFriction(ContactVelocityGroup& g, BodyStateW& a,
+/// the conveyor's speed; a group whose lanes all have tangentSpeed +0 skips subtracting it,
+/// which would change no bit).
+[[gnu::always_inline]] inline void SolveFriction(ContactVelocityGroup& g, const LaneMasses& m,
+                                                 const RealW* tangentSpeed, BodyStateW& a,
                                                  BodyStateW& b)
 {
     const Vec2W tangent{g.normal.y, -g.normal.x};
     for (int j = 0; j < 2; ++j)
     {
-        const RealW vt = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), tangent) - g.tangentSpeed;
+        RealW vt = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), tangent);
+        if (tangentSpeed != nullptr)
+        {
+            vt = vt - *tangentSpeed;
+        }
         const RealW maxFriction = g.friction * g.normalImpulse[j];
         const RealW newImpulse =
             MaxW(-maxFriction, MinW(g.tangentImpulse[j] + g.tangentMass[j] * (-vt), maxFriction));
         const RealW lambda = newImpulse - g.tangentImpulse[j];
         g.tangentImpulse[j] = newImpulse;
-        ApplyImpulse(g, a, b, g.rA[j], g.rB[j], lambda * tangent);
+        ApplyImpulseW(m, a, b, g.rA[j], g.rB[j], lambda * tangent);
     }
 }
 
-void SolveRolling(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
+/// The spin rows' view of a group (SolveRollingLanes reads the rows by their names).
+struct RollingRows
 {
-    SolveRollingLanes(g, a, b, [](int, Real) {});
+    const RealW& rollingResistance;
+    const RealW& rollingMass;
+    RealW& rollingImpulse;
+    const RealW (&normalImpulse)[2];
+    RealW invIA, invIB;
+};
+
+void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMasses& m,
+                  BodyStateW& a, BodyStateW& b)
+{
+    RollingRows rows{e.rollingResistance, e.rollingMass, e.rollingImpulse,
+                     g.normalImpulse,     m.invIA,       m.invIB};
+    SolveRollingLanes(rows, a, b, [](int, Real) {});
 }
 
 /// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0.
-[[gnu::always_inline]] inline void SolveNormalRows(ContactVelocityGroup& g, BodyStateW& a,
-                                                   BodyStateW& b)
+[[gnu::always_inline]] inline void SolveNormalRows(ContactVelocityGroup& g, const LaneMasses& m,
+                                                   BodyStateW& a, BodyStateW& b)
 {
     for (int j = 0; j < 2; ++j)
     {
@@ -57,107 +75,133 @@ void SolveRolling(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
         const RealW newImpulse = MaxW(g.normalImpulse[j] + lambda, Splat(0));
         const RealW applied = newImpulse - g.normalImpulse[j];
         g.normalImpulse[j] = newImpulse;
-        ApplyImpulse(g, a, b, g.rA[j], g.rB[j], applied * g.normal);
+        ApplyImpulseW(m, a, b, g.rA[j], g.rB[j], applied * g.normal);
     }
 }
+
+/// The block solver's view of a group: K's k12, K⁻¹ and the rows' own effective masses
+/// (SolveBlockLanes reads them by their names).
+struct BlockRows
+{
+    RealW k12, inv11, inv12, inv22;
+    RealW normalMass[2];
+};
 
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
 /// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
 /// impulses.
-void SolveNormalBlock(ContactVelocityGroup& g, BodyStateW& a, BodyStateW& b)
+void SolveNormalBlock(ContactVelocityGroup& g, MaskW block, const LaneMasses& m, BodyStateW& a,
+                      BodyStateW& b)
 {
     const RealW a1 = g.normalImpulse[0], a2 = g.normalImpulse[1];
     const RealW vn1 = Dot(RelativeVelocity(a, b, g.rA[0], g.rB[0]), g.normal);
     const RealW vn2 = Dot(RelativeVelocity(a, b, g.rA[1], g.rB[1]), g.normal);
     const RealW b1 = (vn1 - g.velocityBias[0]) - (g.k11 * a1 + g.k12 * a2);
     const RealW b2 = (vn2 - g.velocityBias[1]) - (g.k12 * a1 + g.k22 * a2);
-    const auto [block1, block2] = SolveBlockLanes(g, a1, a2, b1, b2);
+    // K⁻¹ as the preparation's condition test left K: K is symmetric, and so is its inverse, bit
+    // for bit (both off-diagonal entries are −k12/det).
+    const RealW invDet = InverseDeterminant(g.k11, g.k12, g.k12, g.k22);
+    const BlockRows rows{
+        g.k12, invDet * g.k22, -invDet * g.k12, invDet * g.k11, {g.normalMass[0], g.normalMass[1]}};
+    const auto [block1, block2] = SolveBlockLanes(rows, a1, a2, b1, b2);
     // Only the block lanes take the block's answer.
-    const RealW new1 = Select(g.block, block1, a1);
-    const RealW new2 = Select(g.block, block2, a2);
+    const RealW new1 = Select(block, block1, a1);
+    const RealW new2 = Select(block, block2, a2);
 
     const Vec2W P1 = (new1 - a1) * g.normal;
     const Vec2W P2 = (new2 - a2) * g.normal;
-    a.linear = a.linear - g.invMassA * (P1 + P2);
-    a.angular = a.angular - g.invIA * (Cross(g.rA[0], P1) + Cross(g.rA[1], P2));
-    b.linear = b.linear + g.invMassB * (P1 + P2);
-    b.angular = b.angular + g.invIB * (Cross(g.rB[0], P1) + Cross(g.rB[1], P2));
+    a.linear = a.linear - m.invMassA * (P1 + P2);
+    a.angular = a.angular - m.invIA * (Cross(g.rA[0], P1) + Cross(g.rA[1], P2));
+    b.linear = b.linear + m.invMassB * (P1 + P2);
+    b.angular = b.angular + m.invIB * (Cross(g.rB[0], P1) + Cross(g.rB[1], P2));
     g.normalImpulse[0] = new1;
     g.normalImpulse[1] = new2;
 }
 
-void SolveVelocityGroup(ContactVelocityGroup& g, Velocity* velocities, DiscardSlots discard)
+void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
+                        ContactGroupExtras* extras, const BodyMass* bodies, Velocity* velocities,
+                        DiscardSlots discard)
 {
-    BodyStateW a = Gather(velocities, g.indexA);
-    BodyStateW b = Gather(velocities, g.indexB);
-    SolveFriction(g, a, b);
-    if (g.anyRolling)
+    const LaneMasses m =
+        GatherMasses(GatherBodyMass(bodies, h.indexA), GatherBodyMass(bodies, h.indexB));
+    BodyStateW a = Gather(velocities, h.indexA);
+    BodyStateW b = Gather(velocities, h.indexB);
+    const bool tangentSpeed = (h.extras & ContactGroupHeader::kTangentSpeed) != 0;
+    SolveFriction(g, m, tangentSpeed ? &extras->tangentSpeed : nullptr, a, b);
+    if ((h.extras & ContactGroupHeader::kRolling) != 0)
     {
-        SolveRolling(g, a, b);
+        SolveRolling(g, *extras, m, a, b);
     }
-    if (!g.anyBlock)
+    const bool anyBlock = h.block != 0;
+    const bool anyScalar = (h.valid & ~h.block) != 0;
+    if (!anyBlock)
     {
-        SolveNormalRows(g, a, b);
+        SolveNormalRows(g, m, a, b);
     }
-    else if (!g.anyScalar)
+    else if (!anyScalar)
     {
-        SolveNormalBlock(g, a, b);
+        SolveNormalBlock(g, LanesOf(h.block), m, a, b);
     }
     else
     {
         // Mixed group: each lane takes the velocities and impulses of its own kind of solve.
+        const MaskW block = LanesOf(h.block);
         BodyStateW aRows = a, bRows = b;
         ContactVelocityGroup rows = g;
-        SolveNormalRows(rows, aRows, bRows);
-        SolveNormalBlock(g, a, b);
-        a.linear = Select(g.block, a.linear, aRows.linear);
-        a.angular = Select(g.block, a.angular, aRows.angular);
-        b.linear = Select(g.block, b.linear, bRows.linear);
-        b.angular = Select(g.block, b.angular, bRows.angular);
+        SolveNormalRows(rows, m, aRows, bRows);
+        SolveNormalBlock(g, block, m, a, b);
+        a.linear = Select(block, a.linear, aRows.linear);
+        a.angular = Select(block, a.angular, aRows.angular);
+        b.linear = Select(block, b.linear, bRows.linear);
+        b.angular = Select(block, b.angular, bRows.angular);
         for (int j = 0; j < 2; ++j)
         {
-            g.normalImpulse[j] = Select(g.block, g.normalImpulse[j], rows.normalImpulse[j]);
+            g.normalImpulse[j] = Select(block, g.normalImpulse[j], rows.normalImpulse[j]);
         }
     }
-    ScatterFromWorker(velocities, g.storeA, discard, a);
-    ScatterFromWorker(velocities, g.storeB, discard, b);
+    ScatterStores(velocities, h.indexA, h.storesA, discard.own, a);
+    ScatterStores(velocities, h.indexB, h.storesB, discard.own, b);
 }
 
 /// One sweep over a group's points (as SolvePositionConstraint); returns each lane's smallest
 /// separation.
-RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, const Tolerances& tol,
+RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup& g,
+                         const BodyMass* bodies, Position* positions, const Tolerances& tol,
                          Real baumgarte, DiscardSlots discard)
 {
-    BodyStateW a = Gather(positions, g.indexA);
-    BodyStateW b = Gather(positions, g.indexB);
+    const BodyMassW A = GatherBodyMass(bodies, h.indexA);
+    const BodyMassW B = GatherBodyMass(bodies, h.indexB);
+    BodyStateW a = Gather(positions, h.indexA);
+    BodyStateW b = Gather(positions, h.indexB);
+    const MaskW circles = LanesOf(h.circles), faceB = LanesOf(h.faceB);
     RealW minSeparation = Splat(0);
     for (int j = 0; j < 2; ++j)
     {
-        if (!AnyLane(g.hasPoint[j]))
+        if (h.hasPoint[j] == 0)
         {
             break;
         }
-        const TransformW xfA = TransformFromCenter(a, g.localCenterA);
-        const TransformW xfB = TransformFromCenter(b, g.localCenterB);
+        const MaskW hasPoint = LanesOf(h.hasPoint[j]);
+        const TransformW xfA = TransformFromCenter(a, A.localCenter);
+        const TransformW xfB = TransformFromCenter(b, B.localCenter);
         // FaceA and circles: A holds the reference face (or centre); FaceB: B does.
-        const TransformW reference = Select(g.faceB, xfB, xfA);
-        const TransformW incident = Select(g.faceB, xfA, xfB);
+        const TransformW reference = Select(faceB, xfB, xfA);
+        const TransformW incident = Select(faceB, xfA, xfB);
         const Vec2W planePoint = Mul(reference, g.localPoint);
         const Vec2W clipPoint = Mul(incident, g.localPoints[j]);
         const Vec2W d = clipPoint - planePoint;
 
         // Circles: the normal joins the two centres (left as is when they coincide, as
         // Vec2::Normalize); faces: the reference face's normal.
-        const Vec2W centreNormal = AnyLane(g.circles) ? NormalizeW(d) : d;
-        Vec2W normal = Select(g.circles, centreNormal, Mul(reference.q, g.localNormal));
+        const Vec2W centreNormal = h.circles != 0 ? NormalizeW(d) : d;
+        Vec2W normal = Select(circles, centreNormal, Mul(reference.q, g.localNormal));
         const RealW separation = Dot(d, normal) - g.radiusA - g.radiusB;
-        const Vec2W point =
-            Select(g.circles, Splat(Real(0.5)) * (planePoint + clipPoint), clipPoint);
-        normal = Select(g.faceB, Vec2W{-normal.x, -normal.y}, normal);
+        const Vec2W point = Select(circles, Splat(Real(0.5)) * (planePoint + clipPoint), clipPoint);
+        normal = Select(faceB, Vec2W{-normal.x, -normal.y}, normal);
 
         const Vec2W rA = point - a.linear;
         const Vec2W rB = point - b.linear;
-        minSeparation = Select(g.hasPoint[j], MinW(minSeparation, separation), minSeparation);
+        minSeparation = Select(hasPoint, MinW(minSeparation, separation), minSeparation);
 
         // Baumgarte-scaled correction leaving linearSlop of overlap, at most
         // maxLinearCorrection; scalar effective mass k = Σ1/m + (r×n)²/I along the normal.
@@ -165,13 +209,13 @@ RealW SolvePositionGroup(const ContactPositionGroup& g, Position* positions, con
             MinW(MaxW(baumgarte * (separation + tol.linearSlop), Splat(-tol.maxLinearCorrection)),
                  Splat(0));
         const RealW rnA = Cross(rA, normal), rnB = Cross(rB, normal);
-        const RealW K = g.invMassA + g.invMassB + g.invIA * rnA * rnA + g.invIB * rnB * rnB;
-        const MaskW solvable = g.hasPoint[j] & (K > 0);
+        const RealW K = A.invMass + B.invMass + A.invI * rnA * rnA + B.invI * rnB * rnB;
+        const MaskW solvable = hasPoint & (K > 0);
         const RealW impulse = Select(solvable, -C / Select(solvable, K, Splat(1)), Splat(0));
-        ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, rA, rB, impulse * normal);
+        ApplyImpulseW(GatherMasses(A, B), a, b, rA, rB, impulse * normal);
     }
-    ScatterFromWorker(positions, g.storeA, discard, a);
-    ScatterFromWorker(positions, g.storeB, discard, b);
+    ScatterStores(positions, h.indexA, h.storesA, discard.own, a);
+    ScatterStores(positions, h.indexB, h.storesB, discard.own, b);
     return minSeparation;
 }
 
@@ -182,24 +226,33 @@ void ContactLanes::SolveVelocities(SolverData& data)
     for (int c = 0; c < GroupColourCount(); ++c)
     {
         ForEachGroupOfColour(c, data,
-                             [&](std::int32_t i, DiscardSlots discard) {
-                                 SolveVelocityGroup(m_velocityGroups[i], data.velocities, discard);
+                             [&](std::int32_t i, DiscardSlots discard)
+                             {
+                                 SolveVelocityGroup(m_headers[i], m_velocityGroups[i], &m_extras[i],
+                                                    m_bodies.data(), data.velocities, discard);
                              });
     }
 }
 
 void ContactLanes::CollectResults(std::span<SolvedContact> solved) const
 {
-    for (const ContactVelocityGroup& group : m_velocityGroups)
+    for (int c = 0; c < GroupColourCount(); ++c)
     {
-        for (int l = 0; l < kLanes && group.source[l] >= 0; ++l)
+        const std::int32_t end = m_colouring.colourStarts[c + 1];
+        std::int32_t first = m_colouring.colourStarts[c];
+        for (std::int32_t i = m_groupStarts[c]; i < m_groupStarts[c + 1]; ++i, first += kLanes)
         {
-            SolvedContact& s = solved[group.source[l]];
-            s.rollingImpulse = group.rollingImpulse[l];
-            for (int j = 0; j < s.pointCount; ++j)
+            const ContactVelocityGroup& group = m_velocityGroups[i];
+            const bool rolling = (m_headers[i].extras & ContactGroupHeader::kRolling) != 0;
+            for (int l = 0; l < kLanes && first + l < end; ++l)
             {
-                s.normalImpulse[j] = group.normalImpulse[j][l];
-                s.tangentImpulse[j] = group.tangentImpulse[j][l];
+                SolvedContact& s = solved[m_colouring.order[first + l]];
+                s.rollingImpulse = rolling ? m_extras[i].rollingImpulse[l] : Real(0);
+                for (int j = 0; j < s.pointCount; ++j)
+                {
+                    s.normalImpulse[j] = group.normalImpulse[j][l];
+                    s.tangentImpulse[j] = group.tangentImpulse[j][l];
+                }
             }
         }
     }
@@ -213,9 +266,9 @@ Real ContactLanes::SolvePositions(SolverData& data)
         ForEachGroupOfColour(c, data,
                              [&](std::int32_t i, DiscardSlots discard)
                              {
-                                 m_groupMinSeparation[i] =
-                                     SolvePositionGroup(m_positionGroups[i], data.positions, tol,
-                                                        tol.baumgarte, discard);
+                                 m_groupMinSeparation[i] = SolvePositionGroup(
+                                     m_headers[i], m_positionGroups[i], m_bodies.data(),
+                                     data.positions, tol, tol.baumgarte, discard);
                              });
     }
     // In group order whatever the threads: the same minimum, NaN and signed zeros included.

@@ -20,6 +20,7 @@
 
 #include "solvers/lanes/colour_groups.h"
 #include "solvers/lanes/contact_colouring.h"
+#include "solvers/lanes/lane_bodies.h"
 #include "solvers/lanes/wide_real.h"
 #include "solvers/shared/contact_constraint.h"
 
@@ -30,43 +31,56 @@
 namespace meff::detail
 {
 
+/// What both sweeps read of kLanes contacts besides their rows: the bodies and which lanes hold
+/// what, as bits (bit l: lane l). A lane's masses and local centres are its bodies'
+/// (ContactLanes::m_bodies, gathered by index). Empty lanes read lane 0's bodies, which only this
+/// group of its colour writes.
+struct ContactGroupHeader
+{
+    std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices
+    /// Lanes that write their body (SolverMoves); the others (static or kinematic bodies, empty
+    /// lanes) write the worker's discard slot.
+    std::uint8_t storesA = 0, storesB = 0;
+    std::uint8_t valid = 0;        ///< lanes holding a contact
+    std::uint8_t hasPoint[2] = {}; ///< lanes with that manifold point
+    std::uint8_t block = 0;        ///< lanes whose normal rows are solved as the 2×2 block
+    std::uint8_t circles = 0;      ///< manifold type Circles
+    std::uint8_t faceB = 0;        ///< manifold type FaceB (FaceA where neither bit is set)
+    std::uint8_t extras = 0; ///< what the group's ContactGroupExtras hold (kTangentSpeed, kRolling)
+
+    static constexpr std::uint8_t kTangentSpeed = 1; ///< a lane's tangentSpeed is not +0
+    static constexpr std::uint8_t kRolling = 2;      ///< a lane has rolling resistance
+};
+
 /// kLanes contacts' velocity rows, one per lane. A lane with one point has a second point with
-/// zero masses, which the updates leave unchanged; an empty lane has zero masses throughout.
-/// What every sweep reads comes first and what most sweeps skip (the spin row, the lanes'
-/// sources) last, so that a sweep over groups without rolling resistance streams a cache line
-/// fewer per group.
+/// zero row masses and lever arms, which the updates leave unchanged; an empty lane has zero rows
+/// throughout and writes only the discard slot.
+/// K⁻¹ of the block solver is not kept: a sweep recomputes it from K with the preparation's
+/// operations (as Mat22::GetInverse), which gives it bit for bit.
 struct ContactVelocityGroup
 {
-    std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices (0 in empty lanes)
-    std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (Scatter)
-    bool anyBlock = false, anyScalar = false;
-    bool anyRolling = false; ///< a lane has rolling resistance
-    RealW invMassA, invMassB, invIA, invIB, friction;
-    RealW tangentSpeed; ///< the friction rows' target (Contact::tangentSpeed, m/s)
+    RealW friction;
     Vec2W normal;
     Vec2W rA[2], rB[2];
     RealW normalMass[2], tangentMass[2], velocityBias[2]; ///< 1/k of each row (kg); m/s
     RealW normalImpulse[2], tangentImpulse[2];            ///< accumulated (N·s)
     RealW k11, k12, k22;                                  ///< block matrix K
-    /// K⁻¹ = [inv11 inv12; inv12 inv22]: K is symmetric, and so is its inverse, bit for bit
-    /// (both off-diagonal entries are −k12/det).
-    RealW inv11, inv12, inv22;
-    MaskW block; ///< lanes whose normal rows are solved as the 2×2 block
-    RealW rollingResistance, rollingMass, rollingImpulse; ///< the spin row (0: none)
-    std::int32_t source[kLanes]; ///< constraint index, −1 for an empty lane
 };
 
-/// kLanes contacts' position constraints, one per lane.
+/// What few groups need (ContactGroupHeader::extras), kept beside the rows by group index so
+/// that the other groups' sweeps neither read nor stream it.
+struct ContactGroupExtras
+{
+    RealW tangentSpeed; ///< the friction rows' target (Contact::tangentSpeed, m/s)
+    RealW rollingResistance, rollingMass, rollingImpulse; ///< the spin row (0: none)
+};
+
+/// kLanes contacts' position constraints, one per lane (the manifold in its local frames).
 struct ContactPositionGroup
 {
-    std::int32_t indexA[kLanes], indexB[kLanes];
-    std::int32_t storeA[kLanes], storeB[kLanes];
-    RealW invMassA, invMassB, invIA, invIB;
-    Vec2W localCenterA, localCenterB, localNormal, localPoint;
+    Vec2W localNormal, localPoint;
     Vec2W localPoints[2];
     RealW radiusA, radiusB;
-    MaskW circles, faceB; ///< manifold type (FaceA otherwise)
-    MaskW hasPoint[2];
 };
 
 class ContactLanes
@@ -100,6 +114,8 @@ class ContactLanes
     /// Prepares group i (of colour `colour`), returns whether a contact of it has hit events.
     bool PrepareGroup(std::int32_t i, int colour, const IslandContacts& island,
                       std::span<SolvedContact> solved, const SolverData& data);
+    /// Fills m_bodies from the island's bodies.
+    void GatherBodies(const IslandContacts& island, const SolverData& data);
     /// Runs solve(group, discard) on each of colour c's groups, spread over the world's threads.
     template <typename Solve>
     void ForEachGroupOfColour(int c, const SolverData& data, Solve&& solve)
@@ -108,9 +124,13 @@ class ContactLanes
     }
 
     ConstraintColouring m_colouring;
+    std::vector<BodyMass> m_bodies; ///< the island's bodies' constants, by solver index
+    std::vector<ContactGroupHeader> m_headers;
     std::vector<ContactVelocityGroup> m_velocityGroups;
     std::vector<ContactPositionGroup> m_positionGroups;
-    /// Colour c's groups are [m_groupStarts[c], m_groupStarts[c + 1]) of both group arrays.
+    /// By group index, written only for the groups whose header names extras.
+    std::vector<ContactGroupExtras> m_extras;
+    /// Colour c's groups are [m_groupStarts[c], m_groupStarts[c + 1]) of the group arrays.
     std::vector<std::int32_t> m_groupStarts;
     /// Each position group's smallest separation per lane in the last position sweep.
     std::vector<RealW> m_groupMinSeparation;

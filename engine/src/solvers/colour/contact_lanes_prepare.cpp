@@ -16,9 +16,11 @@
 #include "model/body.h"
 #include "model/contact.h"
 #include "solvers/lanes/lane_bodies.h"
+#include "solvers/shared/island.h"
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 
 namespace meff::detail
 {
@@ -31,43 +33,49 @@ struct LaneInputs
 {
     RealW restitution, threshold;                  ///< e; restitution threshold (m/s)
     BodyStateW startVelocityA{}, startVelocityB{}; ///< with restitutionFromStepStart
-    MaskW valid{};                                 ///< lanes holding a contact
+    ContactGroupExtras extras{};                   ///< the group's, where its header names them
+    std::int32_t source[kLanes];                   ///< constraint index, −1 for an empty lane
     bool hitEvents = false;                        ///< a lane's contact has hit events
 };
 
-/// Lane l's contact: the bodies, masses and manifold, into both groups.
-void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& in, int l,
-                std::int32_t source, const Contact& contact, const IslandContacts& island,
-                Real impulseScale, bool fromStepStart, std::int32_t discardIndex)
+/// Whether x is +0 bit for bit (subtracting it changes nothing).
+bool IsPositiveZero(Real x)
+{
+    return x == 0 && !std::signbit(x);
+}
+
+/// Lane l's contact: the bodies and manifold, into the group's header and rows.
+void GatherLane(ContactGroupHeader& h, ContactVelocityGroup& vg, ContactPositionGroup& pg,
+                LaneInputs& in, int l, std::int32_t source, const Contact& contact,
+                const IslandContacts& island, Real impulseScale, bool fromStepStart)
 {
     const Body& bodyA = island.bodies[contact.bodyA];
     const Body& bodyB = island.bodies[contact.bodyB];
     const Manifold& manifold = contact.manifold;
+    const auto bit = static_cast<std::uint8_t>(1U << l);
 
-    vg.source[l] = source;
-    vg.indexA[l] = pg.indexA[l] = bodyA.islandIndex;
-    vg.indexB[l] = pg.indexB[l] = bodyB.islandIndex;
-    const bool movesA = SolverMoves(bodyA.invMass, bodyA.invI);
-    const bool movesB = SolverMoves(bodyB.invMass, bodyB.invI);
-    vg.storeA[l] = pg.storeA[l] = movesA ? bodyA.islandIndex : discardIndex;
-    vg.storeB[l] = pg.storeB[l] = movesB ? bodyB.islandIndex : discardIndex;
-    vg.invMassA[l] = pg.invMassA[l] = bodyA.invMass;
-    vg.invMassB[l] = pg.invMassB[l] = bodyB.invMass;
-    vg.invIA[l] = pg.invIA[l] = bodyA.invI;
-    vg.invIB[l] = pg.invIB[l] = bodyB.invI;
+    in.source[l] = source;
+    h.indexA[l] = bodyA.islandIndex;
+    h.indexB[l] = bodyB.islandIndex;
+    h.storesA |= SolverMoves(bodyA.invMass, bodyA.invI) ? bit : 0;
+    h.storesB |= SolverMoves(bodyB.invMass, bodyB.invI) ? bit : 0;
+    h.valid |= bit;
     vg.friction[l] = contact.friction;
-    vg.tangentSpeed[l] = contact.tangentSpeed;
+    if (!IsPositiveZero(contact.tangentSpeed))
+    {
+        in.extras.tangentSpeed[l] = contact.tangentSpeed;
+        h.extras |= ContactGroupHeader::kTangentSpeed;
+    }
     if (contact.rollingResistance > 0)
     {
         const Real k = bodyA.invI + bodyB.invI;
-        vg.rollingResistance[l] = contact.rollingResistance;
-        vg.rollingMass[l] = k > 0 ? Real(1) / k : Real(0);
-        vg.rollingImpulse[l] = impulseScale * contact.rollingImpulse;
-        vg.anyRolling = true;
+        in.extras.rollingResistance[l] = contact.rollingResistance;
+        in.extras.rollingMass[l] = k > 0 ? Real(1) / k : Real(0);
+        in.extras.rollingImpulse[l] = impulseScale * contact.rollingImpulse;
+        h.extras |= ContactGroupHeader::kRolling;
     }
     in.restitution[l] = contact.restitution;
     in.threshold[l] = contact.restitutionThreshold;
-    in.valid[l] = -1;
     in.hitEvents = in.hitEvents || (contact.flags & Contact::HitEvents) != 0;
     if (fromStepStart)
     {
@@ -80,24 +88,20 @@ void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& 
         in.startVelocityB.angular[l] = bodyB.angularVelocity;
     }
 
-    pg.localCenterA.x[l] = bodyA.sweep.localCenter.x;
-    pg.localCenterA.y[l] = bodyA.sweep.localCenter.y;
-    pg.localCenterB.x[l] = bodyB.sweep.localCenter.x;
-    pg.localCenterB.y[l] = bodyB.sweep.localCenter.y;
     pg.localNormal.x[l] = manifold.localNormal.x;
     pg.localNormal.y[l] = manifold.localNormal.y;
     pg.localPoint.x[l] = manifold.localPoint.x;
     pg.localPoint.y[l] = manifold.localPoint.y;
     pg.radiusA[l] = contact.radiusA;
     pg.radiusB[l] = contact.radiusB;
-    pg.circles[l] = manifold.type == Manifold::Type::Circles ? -1 : 0;
-    pg.faceB[l] = manifold.type == Manifold::Type::FaceB ? -1 : 0;
+    h.circles |= manifold.type == Manifold::Type::Circles ? bit : 0;
+    h.faceB |= manifold.type == Manifold::Type::FaceB ? bit : 0;
     for (int j = 0; j < manifold.pointCount; ++j)
     {
         const ManifoldPoint& mp = manifold.points[j];
         pg.localPoints[j].x[l] = mp.localPoint.x;
         pg.localPoints[j].y[l] = mp.localPoint.y;
-        pg.hasPoint[j][l] = -1;
+        h.hasPoint[j] |= bit;
         // Impulses are scaled by dt/dt0 so that a changed step size keeps the same force.
         vg.normalImpulse[j][l] = impulseScale * mp.normalImpulse;
         vg.tangentImpulse[j][l] = impulseScale * mp.tangentImpulse;
@@ -112,11 +116,11 @@ void GatherLane(ContactVelocityGroup& vg, ContactPositionGroup& pg, LaneInputs& 
 }
 
 /// The scalar effective mass's inverse along n (seed: 1/m_eff = Σ 1/m + (r×n)²/I).
-[[gnu::always_inline]] inline RealW InverseEffectiveMass(const ContactVelocityGroup& g, Vec2W rA,
-                                                         Vec2W rB, Vec2W n)
+[[gnu::always_inline]] inline RealW InverseEffectiveMass(const LaneMasses& m, Vec2W rA, Vec2W rB,
+                                                         Vec2W n)
 {
     const RealW rnA = Cross(rA, n), rnB = Cross(rB, n);
-    return g.invMassA + g.invMassB + g.invIA * rnA * rnA + g.invIB * rnB * rnB;
+    return m.invMassA + m.invMassB + m.invIA * rnA * rnA + m.invIB * rnB * rnB;
 }
 
 /// The manifold's points and normal in world space at the step's start, per lane, as
@@ -128,27 +132,29 @@ struct WorldPointsW
     Vec2W points[2]; ///< midway between the two surfaces (m)
 };
 
-WorldPointsW WorldPoints(const ContactPositionGroup& g, const BodyStateW& positionA,
+WorldPointsW WorldPoints(const ContactGroupHeader& h, const ContactPositionGroup& g,
+                         Vec2W localCenterA, Vec2W localCenterB, const BodyStateW& positionA,
                          const BodyStateW& positionB)
 {
-    const TransformW xfA = TransformFromCenter(positionA, g.localCenterA);
-    const TransformW xfB = TransformFromCenter(positionB, g.localCenterB);
-    const TransformW reference = Select(g.faceB, xfB, xfA);
-    const TransformW incident = Select(g.faceB, xfA, xfB);
-    const RealW radiusReference = Select(g.faceB, g.radiusB, g.radiusA);
-    const RealW radiusIncident = Select(g.faceB, g.radiusA, g.radiusB);
+    const MaskW circles = LanesOf(h.circles), faceB = LanesOf(h.faceB);
+    const TransformW xfA = TransformFromCenter(positionA, localCenterA);
+    const TransformW xfB = TransformFromCenter(positionB, localCenterB);
+    const TransformW reference = Select(faceB, xfB, xfA);
+    const TransformW incident = Select(faceB, xfA, xfB);
+    const RealW radiusReference = Select(faceB, g.radiusB, g.radiusA);
+    const RealW radiusIncident = Select(faceB, g.radiusA, g.radiusB);
     const Vec2W planePoint = Mul(reference, g.localPoint);
     const Vec2W clipPoints[2] = {Mul(incident, g.localPoints[0]), Mul(incident, g.localPoints[1])};
 
     Vec2W normal = Mul(reference.q, g.localNormal);
-    if (AnyLane(g.circles))
+    if (h.circles != 0)
     {
         // Circles: the normal joins the centres (+x when they coincide), normalized as
         // Vec2::Normalize does.
         const Vec2W d = clipPoints[0] - planePoint;
         const MaskW apart = d.x * d.x + d.y * d.y > Splat(kEpsilon * kEpsilon);
         const Vec2W circleNormal = Select(apart, NormalizeW(d), Vec2W{Splat(1), Splat(0)});
-        normal = Select(g.circles, circleNormal, normal);
+        normal = Select(circles, circleNormal, normal);
     }
 
     WorldPointsW out{};
@@ -159,11 +165,11 @@ WorldPointsW WorldPoints(const ContactPositionGroup& g, const BodyStateW& positi
         // reference circle's rim.
         const Vec2W onFace = clip + (radiusReference - Dot(clip - planePoint, normal)) * normal;
         const Vec2W onRim = planePoint + radiusReference * normal;
-        const Vec2W surfaceReference = Select(g.circles, onRim, onFace);
+        const Vec2W surfaceReference = Select(circles, onRim, onFace);
         const Vec2W surfaceIncident = clip - radiusIncident * normal;
         out.points[j] = Splat(Real(0.5)) * (surfaceReference + surfaceIncident);
     }
-    out.normal = Select(g.faceB, Vec2W{-normal.x, -normal.y}, normal);
+    out.normal = Select(faceB, Vec2W{-normal.x, -normal.y}, normal);
     return out;
 }
 
@@ -176,34 +182,39 @@ struct PreparedLanes
 
 /// The velocity rows of one group from its gathered contacts (ContactSolver::Prepare's
 /// position-dependent part, kLanes contacts at once).
-PreparedLanes PrepareRows(ContactVelocityGroup& vg, const ContactPositionGroup& pg,
-                          const LaneInputs& in, const SolverData& data)
+PreparedLanes PrepareRows(ContactGroupHeader& h, ContactVelocityGroup& vg,
+                          const ContactPositionGroup& pg, const LaneInputs& in,
+                          const BodyMass* bodies, const SolverData& data)
 {
-    const BodyStateW positionA = Gather(data.positions, vg.indexA);
-    const BodyStateW positionB = Gather(data.positions, vg.indexB);
-    const WorldPointsW world = WorldPoints(pg, positionA, positionB);
+    const BodyMassW A = GatherBodyMass(bodies, h.indexA);
+    const BodyMassW B = GatherBodyMass(bodies, h.indexB);
+    const LaneMasses masses{A.invMass, A.invI, B.invMass, B.invI};
+    const BodyStateW positionA = Gather(data.positions, h.indexA);
+    const BodyStateW positionB = Gather(data.positions, h.indexB);
+    const WorldPointsW world =
+        WorldPoints(h, pg, A.localCenter, B.localCenter, positionA, positionB);
     vg.normal = world.normal;
     const Vec2W tangent{world.normal.y, -world.normal.x};
     // The approach velocity for restitution: this step's (gravity already added, as Box2D) or
     // the bodies' velocities at the start of the step (restitutionFromStepStart).
     const bool fromStepStart = data.step.solver.restitutionFromStepStart;
     const BodyStateW velocityA =
-        fromStepStart ? in.startVelocityA : Gather(data.velocities, vg.indexA);
+        fromStepStart ? in.startVelocityA : Gather(data.velocities, h.indexA);
     const BodyStateW velocityB =
-        fromStepStart ? in.startVelocityB : Gather(data.velocities, vg.indexB);
+        fromStepStart ? in.startVelocityB : Gather(data.velocities, h.indexB);
 
     PreparedLanes out{};
     for (int j = 0; j < 2; ++j)
     {
-        const MaskW has = pg.hasPoint[j];
+        const MaskW has = LanesOf(h.hasPoint[j]);
         const Vec2W rA = world.points[j] - positionA.linear;
         const Vec2W rB = world.points[j] - positionB.linear;
         vg.rA[j] = Select(has, rA, Vec2W{});
         vg.rB[j] = Select(has, rB, Vec2W{});
         vg.normalMass[j] =
-            Select(has, RowMass(InverseEffectiveMass(vg, rA, rB, world.normal)), Splat(0));
+            Select(has, RowMass(InverseEffectiveMass(masses, rA, rB, world.normal)), Splat(0));
         vg.tangentMass[j] =
-            Select(has, RowMass(InverseEffectiveMass(vg, rA, rB, tangent)), Splat(0));
+            Select(has, RowMass(InverseEffectiveMass(masses, rA, rB, tangent)), Splat(0));
 
         // Restitution (seed: P = (1+e)(u2−u1)·m_red) as the target velocity −e·vn.
         const RealW vn = Dot(world.normal, RelativeVelocity(velocityA, velocityB, rA, rB));
@@ -211,43 +222,39 @@ PreparedLanes PrepareRows(ContactVelocityGroup& vg, const ContactPositionGroup& 
         vg.velocityBias[j] = Select(has & (vn < -in.threshold), -in.restitution * vn, Splat(0));
     }
 
-    // Two points, block solver on: K and K⁻¹, unless the rows are nearly parallel, in which
+    // Two points, block solver on: K (K⁻¹ is left to the sweeps, which recompute it as
+    // ContactSolver's preparation computes it), unless the rows are nearly parallel, in which
     // case only the first point is solved (Box2D; the second keeps its stored impulse).
-    const RealW mA = vg.invMassA, mB = vg.invMassB, iA = vg.invIA, iB = vg.invIB;
+    const RealW mA = masses.invMassA, mB = masses.invMassB, iA = masses.invIA, iB = masses.invIB;
     const RealW rn1A = Cross(vg.rA[0], vg.normal), rn1B = Cross(vg.rB[0], vg.normal);
     const RealW rn2A = Cross(vg.rA[1], vg.normal), rn2B = Cross(vg.rB[1], vg.normal);
     vg.k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
     vg.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
     vg.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-    const MaskW twoPoints = pg.hasPoint[1];
+    const MaskW twoPoints = LanesOf(h.hasPoint[1]);
     const MaskW wellConditioned =
         vg.k11 * vg.k11 < Splat(kMaxConditionNumber) * (vg.k11 * vg.k22 - vg.k12 * vg.k12);
     const bool blockSolver = data.step.solver.blockSolver;
-    vg.block = blockSolver ? (twoPoints & wellConditioned) : MaskW{};
+    const MaskW block = blockSolver ? (twoPoints & wellConditioned) : MaskW{};
+    h.block = static_cast<std::uint8_t>(BitsOf(block));
     const MaskW dropSecond = blockSolver ? (twoPoints & ~wellConditioned) : MaskW{};
     vg.normalMass[1] = Select(dropSecond, Splat(0), vg.normalMass[1]);
     vg.tangentMass[1] = Select(dropSecond, Splat(0), vg.tangentMass[1]);
     vg.normalImpulse[1] = Select(dropSecond, Splat(0), vg.normalImpulse[1]);
     vg.tangentImpulse[1] = Select(dropSecond, Splat(0), vg.tangentImpulse[1]);
-    const RealW invDet = InverseDeterminant(vg.k11, vg.k12, vg.k12, vg.k22);
-    vg.inv11 = invDet * vg.k22;
-    vg.inv12 = -invDet * vg.k12;
-    vg.inv22 = invDet * vg.k11;
-    vg.anyBlock = AnyLane(vg.block);
-    vg.anyScalar = AnyLane(in.valid & ~vg.block);
     out.solvesTwo = twoPoints & ~dropSecond;
     return out;
 }
 
 /// What the rest of the step reads of a coloured contact besides its impulses (which
 /// CollectResults adds): its contact index, the points solved and their approach velocities.
-void WriteBack(const ContactVelocityGroup& vg, const PreparedLanes& prepared,
-               const IslandContacts& island, std::span<SolvedContact> solved)
+void WriteBack(const LaneInputs& in, const PreparedLanes& prepared, const IslandContacts& island,
+               std::span<SolvedContact> solved)
 {
-    for (int l = 0; l < kLanes && vg.source[l] >= 0; ++l)
+    for (int l = 0; l < kLanes && in.source[l] >= 0; ++l)
     {
-        SolvedContact& s = solved[vg.source[l]];
-        s.contactIndex = island.contactIndices[vg.source[l]];
+        SolvedContact& s = solved[in.source[l]];
+        s.contactIndex = island.contactIndices[in.source[l]];
         s.pointCount = prepared.solvesTwo[l] != 0 ? 2 : 1;
         for (int j = 0; j < s.pointCount; ++j)
         {
@@ -257,23 +264,28 @@ void WriteBack(const ContactVelocityGroup& vg, const PreparedLanes& prepared,
 }
 
 /// Applies a group's warm-start impulses (its accumulated impulses, scaled in Prepare).
-void WarmStartGroup(const ContactVelocityGroup& g, Velocity* velocities, DiscardSlots discard)
+void WarmStartGroup(const ContactGroupHeader& h, const ContactVelocityGroup& g,
+                    const ContactGroupExtras& extras, const BodyMass* bodies, Velocity* velocities,
+                    DiscardSlots discard)
 {
-    BodyStateW a = Gather(velocities, g.indexA);
-    BodyStateW b = Gather(velocities, g.indexB);
+    const BodyMassW A = GatherBodyMass(bodies, h.indexA);
+    const BodyMassW B = GatherBodyMass(bodies, h.indexB);
+    const LaneMasses m{A.invMass, A.invI, B.invMass, B.invI};
+    BodyStateW a = Gather(velocities, h.indexA);
+    BodyStateW b = Gather(velocities, h.indexB);
     const Vec2W tangent{g.normal.y, -g.normal.x};
     for (int j = 0; j < 2; ++j)
     {
         const Vec2W P = g.normalImpulse[j] * g.normal + g.tangentImpulse[j] * tangent;
-        ApplyImpulseW({g.invMassA, g.invIA, g.invMassB, g.invIB}, a, b, g.rA[j], g.rB[j], P);
+        ApplyImpulseW(m, a, b, g.rA[j], g.rB[j], P);
     }
-    if (g.anyRolling)
+    if ((h.extras & ContactGroupHeader::kRolling) != 0)
     {
-        a.angular = a.angular - g.invIA * g.rollingImpulse;
-        b.angular = b.angular + g.invIB * g.rollingImpulse;
+        a.angular = a.angular - m.invIA * extras.rollingImpulse;
+        b.angular = b.angular + m.invIB * extras.rollingImpulse;
     }
-    ScatterFromWorker(velocities, g.storeA, discard, a);
-    ScatterFromWorker(velocities, g.storeB, discard, b);
+    ScatterStores(velocities, h.indexA, h.storesA, discard.own, a);
+    ScatterStores(velocities, h.indexB, h.storesB, discard.own, b);
 }
 
 } // namespace
@@ -284,34 +296,50 @@ bool ContactLanes::PrepareGroup(std::int32_t i, int colour, const IslandContacts
     const std::int32_t end = m_colouring.colourStarts[colour + 1];
     const std::int32_t first =
         m_colouring.colourStarts[colour] + (i - m_groupStarts[colour]) * kLanes;
+    ContactGroupHeader& h = m_headers[i];
     ContactVelocityGroup& vg = m_velocityGroups[i];
     ContactPositionGroup& pg = m_positionGroups[i];
+    h = ContactGroupHeader{};
     vg = ContactVelocityGroup{};
     pg = ContactPositionGroup{};
-    for (int l = 0; l < kLanes; ++l)
-    {
-        vg.source[l] = -1;
-        vg.storeA[l] = vg.storeB[l] = pg.storeA[l] = pg.storeB[l] = data.discardIndex;
-    }
     const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
     LaneInputs in{};
     int filled = 0;
     for (; filled < kLanes && first + filled < end; ++filled)
     {
         const std::int32_t k = m_colouring.order[first + filled];
-        GatherLane(vg, pg, in, filled, k, island.contacts[island.contactIndices[k]], island,
-                   impulseScale, data.step.solver.restitutionFromStepStart, data.discardIndex);
+        GatherLane(h, vg, pg, in, filled, k, island.contacts[island.contactIndices[k]], island,
+                   impulseScale, data.step.solver.restitutionFromStepStart);
     }
-    // Empty lanes write the discard slot and have zero masses throughout; they read lane 0's
-    // bodies, which only this group of its colour writes (body 0 may be another group's,
-    // being written by another thread at that moment).
+    // Empty lanes read lane 0's bodies, which only this group of its colour writes (body 0 may
+    // be another group's, being written by another thread at that moment), and write the
+    // discard slot.
     for (int l = filled; l < kLanes; ++l)
     {
-        vg.indexA[l] = pg.indexA[l] = vg.indexA[0];
-        vg.indexB[l] = pg.indexB[l] = vg.indexB[0];
+        in.source[l] = -1;
+        h.indexA[l] = h.indexA[0];
+        h.indexB[l] = h.indexB[0];
     }
-    WriteBack(vg, PrepareRows(vg, pg, in, data), island, solved);
+    WriteBack(in, PrepareRows(h, vg, pg, in, m_bodies.data(), data), island, solved);
+    if (h.extras != 0)
+    {
+        m_extras[i] = in.extras;
+    }
     return in.hitEvents;
+}
+
+void ContactLanes::GatherBodies(const IslandContacts& island, const SolverData& data)
+{
+    m_bodies.resize(island.bodyIndices.size());
+    ForRanges(data.tasks, static_cast<int>(island.bodyIndices.size()), kMinBodiesPerTask,
+              [&](int begin, int end, int)
+              {
+                  for (int i = begin; i < end; ++i)
+                  {
+                      const Body& body = island.bodies[island.bodyIndices[i]];
+                      m_bodies[i] = {body.invMass, body.invI, body.sweep.localCenter};
+                  }
+              });
 }
 
 void ContactLanes::Colour(const IslandContacts& island, std::size_t bodyCount)
@@ -331,6 +359,7 @@ bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact
     if (island.contactIndices.empty())
     {
         m_groupStarts.assign(1, 0);
+        m_headers.clear();
         m_velocityGroups.clear();
         m_positionGroups.clear();
         m_groupMinSeparation.clear();
@@ -338,8 +367,11 @@ bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact
     }
     // Each colour's contacts kLanes to a group, colour after colour.
     const std::int32_t groups = GroupStartsOf(m_colouring, m_groupStarts);
+    m_headers.resize(static_cast<std::size_t>(groups));
     m_velocityGroups.resize(static_cast<std::size_t>(groups));
     m_positionGroups.resize(static_cast<std::size_t>(groups));
+    m_extras.resize(static_cast<std::size_t>(groups));
+    GatherBodies(island, data);
     m_groupMinSeparation.resize(static_cast<std::size_t>(groups));
 
     // Groups only read the bodies here, so every group may be prepared at once.
@@ -373,7 +405,10 @@ void ContactLanes::WarmStart(SolverData& data)
     {
         ForEachGroupOfColour(c, data,
                              [&](std::int32_t i, DiscardSlots discard)
-                             { WarmStartGroup(m_velocityGroups[i], data.velocities, discard); });
+                             {
+                                 WarmStartGroup(m_headers[i], m_velocityGroups[i], m_extras[i],
+                                                m_bodies.data(), data.velocities, discard);
+                             });
     }
 }
 

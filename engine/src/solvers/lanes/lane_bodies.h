@@ -163,6 +163,107 @@ template <typename State>
                      [&](const std::int32_t(&to)[kLanes]) { Scatter(states, to, in); });
 }
 
+/// A body's constants as the lanes read them, one Real4 per solver index: gathered by a group's
+/// body indices (GatherBodyMass) instead of kept in every row that names the body.
+struct alignas(4 * sizeof(Real)) BodyMass
+{
+    Real invMass = 0; ///< 1/kg, 0 for a static or kinematic body
+    Real invI = 0;    ///< 1/(kg·m²)
+    Vec2 localCenter; ///< centre of mass in the body's frame (m)
+};
+static_assert(sizeof(BodyMass) == sizeof(Real4));
+
+/// kLanes bodies' constants, one lane per body.
+struct BodyMassW
+{
+    RealW invMass, invI;
+    Vec2W localCenter;
+};
+
+/// Reads four bodies' constants: four vector loads and a whole 4×4 transpose.
+[[gnu::always_inline]] inline void GatherBodyMass4(const BodyMass* bodies,
+                                                   const std::int32_t* index, Real4 (&out)[4])
+{
+    Real4 r0, r1, r2, r3;
+    std::memcpy(&r0, &bodies[index[0]], sizeof(Real4));
+    std::memcpy(&r1, &bodies[index[1]], sizeof(Real4));
+    std::memcpy(&r2, &bodies[index[2]], sizeof(Real4));
+    std::memcpy(&r3, &bodies[index[3]], sizeof(Real4));
+    const Real4 lo01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+    const Real4 lo23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    const Real4 hi01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+    const Real4 hi23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    out[0] = __builtin_shufflevector(lo01, lo23, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(lo01, lo23, 2, 3, 6, 7);
+    out[2] = __builtin_shufflevector(hi01, hi23, 0, 1, 4, 5);
+    out[3] = __builtin_shufflevector(hi01, hi23, 2, 3, 6, 7);
+}
+
+/// The lanes' bodies' constants (GatherBodyMass4, four at a time).
+[[gnu::always_inline]] inline BodyMassW GatherBodyMass(const BodyMass* bodies,
+                                                       const std::int32_t (&index)[kLanes])
+{
+#if MEFF_SIMD_LANES == 8
+    Real4 low[4], high[4];
+    GatherBodyMass4(bodies, index, low);
+    GatherBodyMass4(bodies, index + 4, high);
+    return {Join(low[0], high[0]),
+            Join(low[1], high[1]),
+            {Join(low[2], high[2]), Join(low[3], high[3])}};
+#else
+    Real4 all[4];
+    GatherBodyMass4(bodies, index, all);
+    return {all[0], all[1], {all[2], all[3]}};
+#endif
+}
+
+/// The lanes whose bit is set in `bits` (bit l: lane l), as a mask.
+[[gnu::always_inline]] inline MaskW LanesOf(unsigned bits)
+{
+#if MEFF_SIMD_LANES == 8
+    const MaskW laneBit{1, 2, 4, 8, 16, 32, 64, 128};
+#else
+    const MaskW laneBit{1, 2, 4, 8};
+#endif
+    return ((MaskW{} + static_cast<int>(bits)) & laneBit) != 0;
+}
+
+/// The bits of a mask's lanes (LanesOf's inverse).
+inline unsigned BitsOf(MaskW m)
+{
+    unsigned bits = 0;
+    for (int l = 0; l < kLanes; ++l)
+    {
+        bits |= m[l] != 0 ? 1U << l : 0U;
+    }
+    return bits;
+}
+
+/// kLanes solver body indices, one per lane.
+using IndexW = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
+
+/// Scatter for a worker of the world's TaskSystem, lane l writing body index[l] where bit l of
+/// `stores` is set and the worker's discard slot `discard` (DiscardSlots::own) elsewhere (static
+/// or kinematic bodies, empty lanes).
+template <typename State>
+[[gnu::always_inline]] inline void ScatterStores(State* states, const std::int32_t (&index)[kLanes],
+                                                 unsigned stores, std::int32_t discard,
+                                                 const BodyStateW& in)
+{
+#if MEFF_SIMD_LANES == 8
+    const IndexW laneBit{1, 2, 4, 8, 16, 32, 64, 128};
+#else
+    const IndexW laneBit{1, 2, 4, 8};
+#endif
+    IndexW bodies;
+    std::memcpy(&bodies, index, sizeof(IndexW));
+    const IndexW writes = ((IndexW{} + static_cast<std::int32_t>(stores)) & laneBit) != 0;
+    const IndexW to = (bodies & writes) | ((IndexW{} + discard) & ~writes);
+    std::int32_t toArray[kLanes];
+    std::memcpy(toArray, &to, sizeof(IndexW));
+    Scatter(states, toArray, in);
+}
+
 /// Fills lane l's bodies: the solver indices to read, where to write (the body, or the discard
 /// slot where the lane must not move it), and the inverse masses (1/kg) and inertias
 /// (1/(kg·m²)).

@@ -28,6 +28,9 @@ struct IslandContacts
     std::span<const std::int32_t> contactIndices;
     std::span<const Contact> contacts;
     std::span<const Body> bodies;
+    /// The island's bodies (world body indices) in solver order, for the stages that keep
+    /// per-body data by solver index (the colour back end's lanes); may be empty otherwise.
+    std::span<const std::int32_t> bodyIndices = {};
 };
 
 struct ContactVelocityPoint

@@ -77,7 +77,8 @@ void IntegratePosition(Position& position, Velocity& velocity, const StepContext
 void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
                  ContactStage& contacts, JointStage& joints)
 {
-    const IslandContacts islandContacts{island.contacts, world.contacts, world.bodies};
+    const IslandContacts islandContacts{island.contacts, world.contacts, world.bodies,
+                                        island.bodies};
     IntegrateVelocities(world, island, step,
                         [&] { contacts.Arrange(islandContacts, island.bodies.size()); });
     SolverData data{step, island.positions.data(), island.velocities.data(),
