@@ -64,14 +64,21 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     SolveRollingLanes(rows, a, b, [](int, Real) {});
 }
 
+/// vn − bias, or vn where the group has no restitution (bias +0 in every lane).
+[[gnu::always_inline]] inline RealW LessBias(RealW vn, const RealW* velocityBias, int j)
+{
+    return velocityBias != nullptr ? vn - velocityBias[j] : vn;
+}
+
 /// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0.
 [[gnu::always_inline]] inline void SolveNormalRows(ContactVelocityGroup& g, const LaneMasses& m,
-                                                   BodyStateW& a, BodyStateW& b)
+                                                   const RealW* velocityBias, BodyStateW& a,
+                                                   BodyStateW& b)
 {
     for (int j = 0; j < 2; ++j)
     {
         const RealW vn = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), g.normal);
-        const RealW lambda = -g.normalMass[j] * (vn - g.velocityBias[j]);
+        const RealW lambda = -g.normalMass[j] * LessBias(vn, velocityBias, j);
         const RealW newImpulse = MaxW(g.normalImpulse[j] + lambda, Splat(0));
         const RealW applied = newImpulse - g.normalImpulse[j];
         g.normalImpulse[j] = newImpulse;
@@ -90,14 +97,14 @@ struct BlockRows
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
 /// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
 /// impulses.
-void SolveNormalBlock(ContactVelocityGroup& g, MaskW block, const LaneMasses& m, BodyStateW& a,
-                      BodyStateW& b)
+void SolveNormalBlock(ContactVelocityGroup& g, MaskW block, const LaneMasses& m,
+                      const RealW* velocityBias, BodyStateW& a, BodyStateW& b)
 {
     const RealW a1 = g.normalImpulse[0], a2 = g.normalImpulse[1];
     const RealW vn1 = Dot(RelativeVelocity(a, b, g.rA[0], g.rB[0]), g.normal);
     const RealW vn2 = Dot(RelativeVelocity(a, b, g.rA[1], g.rB[1]), g.normal);
-    const RealW b1 = (vn1 - g.velocityBias[0]) - (g.k11 * a1 + g.k12 * a2);
-    const RealW b2 = (vn2 - g.velocityBias[1]) - (g.k12 * a1 + g.k22 * a2);
+    const RealW b1 = LessBias(vn1, velocityBias, 0) - (g.k11 * a1 + g.k12 * a2);
+    const RealW b2 = LessBias(vn2, velocityBias, 1) - (g.k12 * a1 + g.k22 * a2);
     // K⁻¹ as the preparation's condition test left K: K is symmetric, and so is its inverse, bit
     // for bit (both off-diagonal entries are −k12/det).
     const RealW invDet = InverseDeterminant(g.k11, g.k12, g.k12, g.k22);
@@ -132,15 +139,17 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
     {
         SolveRolling(g, *extras, m, a, b);
     }
+    const RealW* velocityBias =
+        (h.extras & ContactGroupHeader::kRestitution) != 0 ? extras->velocityBias : nullptr;
     const bool anyBlock = h.block != 0;
     const bool anyScalar = (h.valid & ~h.block) != 0;
     if (!anyBlock)
     {
-        SolveNormalRows(g, m, a, b);
+        SolveNormalRows(g, m, velocityBias, a, b);
     }
     else if (!anyScalar)
     {
-        SolveNormalBlock(g, LanesOf(h.block), m, a, b);
+        SolveNormalBlock(g, LanesOf(h.block), m, velocityBias, a, b);
     }
     else
     {
@@ -148,8 +157,8 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
         const MaskW block = LanesOf(h.block);
         BodyStateW aRows = a, bRows = b;
         ContactVelocityGroup rows = g;
-        SolveNormalRows(rows, m, aRows, bRows);
-        SolveNormalBlock(g, block, m, a, b);
+        SolveNormalRows(rows, m, velocityBias, aRows, bRows);
+        SolveNormalBlock(g, block, m, velocityBias, a, b);
         a.linear = Select(block, a.linear, aRows.linear);
         a.angular = Select(block, a.angular, aRows.angular);
         b.linear = Select(block, b.linear, bRows.linear);

@@ -50,6 +50,7 @@ struct ContactGroupHeader
 
     static constexpr std::uint8_t kTangentSpeed = 1; ///< a lane's tangentSpeed is not +0
     static constexpr std::uint8_t kRolling = 2;      ///< a lane has rolling resistance
+    static constexpr std::uint8_t kRestitution = 4;  ///< a lane's velocityBias is not +0
 };
 
 /// kLanes contacts' velocity rows, one per lane. A lane with one point has a second point with
@@ -62,17 +63,19 @@ struct ContactVelocityGroup
     RealW friction;
     Vec2W normal;
     Vec2W rA[2], rB[2];
-    RealW normalMass[2], tangentMass[2], velocityBias[2]; ///< 1/k of each row (kg); m/s
-    RealW normalImpulse[2], tangentImpulse[2];            ///< accumulated (N·s)
-    RealW k11, k12, k22;                                  ///< block matrix K
+    RealW normalMass[2], tangentMass[2];       ///< 1/k of each row (kg)
+    RealW normalImpulse[2], tangentImpulse[2]; ///< accumulated (N·s)
+    RealW k11, k12, k22;                       ///< block matrix K
 };
 
 /// What few groups need (ContactGroupHeader::extras), kept beside the rows by group index so
-/// that the other groups' sweeps neither read nor stream it.
+/// that the other groups' sweeps neither read nor stream it. Where a group has none of a kind,
+/// its sweeps skip subtracting the +0 they would hold, which would change no bit.
 struct ContactGroupExtras
 {
     RealW tangentSpeed; ///< the friction rows' target (Contact::tangentSpeed, m/s)
     RealW rollingResistance, rollingMass, rollingImpulse; ///< the spin row (0: none)
+    RealW velocityBias[2]; ///< each normal row's restitution target −e·vn (m/s)
 };
 
 /// kLanes contacts' position constraints, one per lane (the manifold in its local frames).

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 
 namespace meff::detail
 {
@@ -183,8 +184,8 @@ struct PreparedLanes
 /// The velocity rows of one group from its gathered contacts (ContactSolver::Prepare's
 /// position-dependent part, kLanes contacts at once).
 PreparedLanes PrepareRows(ContactGroupHeader& h, ContactVelocityGroup& vg,
-                          const ContactPositionGroup& pg, const LaneInputs& in,
-                          const BodyMass* bodies, const SolverData& data)
+                          const ContactPositionGroup& pg, LaneInputs& in, const BodyMass* bodies,
+                          const SolverData& data)
 {
     const BodyMassW A = GatherBodyMass(bodies, h.indexA);
     const BodyMassW B = GatherBodyMass(bodies, h.indexB);
@@ -219,7 +220,15 @@ PreparedLanes PrepareRows(ContactGroupHeader& h, ContactVelocityGroup& vg,
         // Restitution (seed: P = (1+e)(u2−u1)·m_red) as the target velocity −e·vn.
         const RealW vn = Dot(world.normal, RelativeVelocity(velocityA, velocityB, rA, rB));
         out.normalVelocity[j] = vn;
-        vg.velocityBias[j] = Select(has & (vn < -in.threshold), -in.restitution * vn, Splat(0));
+        const RealW bias = Select(has & (vn < -in.threshold), -in.restitution * vn, Splat(0));
+        in.extras.velocityBias[j] = bias;
+        // +0 in every lane is all bits clear.
+        MaskW biasBits;
+        std::memcpy(&biasBits, &bias, sizeof(MaskW));
+        if (AnyLane(biasBits != 0))
+        {
+            h.extras |= ContactGroupHeader::kRestitution;
+        }
     }
 
     // Two points, block solver on: K (K⁻¹ is left to the sweeps, which recompute it as
