@@ -38,23 +38,36 @@ struct BodyState4
     Real4 x, y, a;
 };
 
-/// Reads four bodies: four vector loads and a 4×4 transpose (rows are bodies, columns become x,
-/// y and angle).
+/// Reads four items of four Reals each (a body's state, its constants, its motion) by index: four
+/// vector loads and a 4×4 transpose, out[c] holding the four items' component c.
+template <typename Item>
+[[gnu::always_inline]] inline void Transpose4(const Item* items, const std::int32_t* index,
+                                              Real4 (&out)[4])
+{
+    static_assert(sizeof(Item) == sizeof(Real4));
+    Real4 r0, r1, r2, r3;
+    std::memcpy(&r0, &items[index[0]], sizeof(Real4));
+    std::memcpy(&r1, &items[index[1]], sizeof(Real4));
+    std::memcpy(&r2, &items[index[2]], sizeof(Real4));
+    std::memcpy(&r3, &items[index[3]], sizeof(Real4));
+    const Real4 lo01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+    const Real4 lo23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    const Real4 hi01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+    const Real4 hi23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    out[0] = __builtin_shufflevector(lo01, lo23, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(lo01, lo23, 2, 3, 6, 7);
+    out[2] = __builtin_shufflevector(hi01, hi23, 0, 1, 4, 5);
+    out[3] = __builtin_shufflevector(hi01, hi23, 2, 3, 6, 7);
+}
+
+/// Reads four bodies: Transpose4's x, y and angle (rows are bodies, columns become x, y and
+/// angle; the padding's column is dropped).
 template <typename State>
 [[gnu::always_inline]] inline BodyState4 Gather4(const State* states, const std::int32_t* index)
 {
-    Real4 r0, r1, r2, r3;
-    std::memcpy(&r0, &states[index[0]], sizeof(Real4));
-    std::memcpy(&r1, &states[index[1]], sizeof(Real4));
-    std::memcpy(&r2, &states[index[2]], sizeof(Real4));
-    std::memcpy(&r3, &states[index[3]], sizeof(Real4));
-    const Real4 xy01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
-    const Real4 xy23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
-    const Real4 a01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
-    const Real4 a23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
-    return {__builtin_shufflevector(xy01, xy23, 0, 1, 4, 5),
-            __builtin_shufflevector(xy01, xy23, 2, 3, 6, 7),
-            __builtin_shufflevector(a01, a23, 0, 1, 4, 5)};
+    Real4 columns[4];
+    Transpose4(states, index, columns);
+    return {columns[0], columns[1], columns[2]};
 }
 
 /// Writes four bodies: the transpose of Gather4 and four vector stores.
@@ -92,6 +105,26 @@ template <typename State>
     return __builtin_shufflevector(v, v, 4, 5, 6, 7);
 }
 #endif
+
+/// Reads the lanes' items of four Reals each (Transpose4, four at a time): out[c] holds component
+/// c of each lane's item.
+template <typename Item>
+[[gnu::always_inline]] inline void GatherComponents(const Item* items,
+                                                    const std::int32_t (&index)[kLanes],
+                                                    RealW (&out)[4])
+{
+#if MEFF_SIMD_LANES == 8
+    Real4 low[4], high[4];
+    Transpose4(items, index, low);
+    Transpose4(items, index + 4, high);
+    for (int c = 0; c < 4; ++c)
+    {
+        out[c] = Join(low[c], high[c]);
+    }
+#else
+    Transpose4(items, index, out);
+#endif
+}
 
 /// Reads the lanes' bodies from the island's positions or velocities, four at a time (Gather4).
 template <typename State>
@@ -180,41 +213,13 @@ struct BodyMassW
     Vec2W localCenter;
 };
 
-/// Reads four bodies' constants: four vector loads and a whole 4×4 transpose.
-[[gnu::always_inline]] inline void GatherBodyMass4(const BodyMass* bodies,
-                                                   const std::int32_t* index, Real4 (&out)[4])
-{
-    Real4 r0, r1, r2, r3;
-    std::memcpy(&r0, &bodies[index[0]], sizeof(Real4));
-    std::memcpy(&r1, &bodies[index[1]], sizeof(Real4));
-    std::memcpy(&r2, &bodies[index[2]], sizeof(Real4));
-    std::memcpy(&r3, &bodies[index[3]], sizeof(Real4));
-    const Real4 lo01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
-    const Real4 lo23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
-    const Real4 hi01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
-    const Real4 hi23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
-    out[0] = __builtin_shufflevector(lo01, lo23, 0, 1, 4, 5);
-    out[1] = __builtin_shufflevector(lo01, lo23, 2, 3, 6, 7);
-    out[2] = __builtin_shufflevector(hi01, hi23, 0, 1, 4, 5);
-    out[3] = __builtin_shufflevector(hi01, hi23, 2, 3, 6, 7);
-}
-
-/// The lanes' bodies' constants (GatherBodyMass4, four at a time).
+/// The lanes' bodies' constants (GatherComponents).
 [[gnu::always_inline]] inline BodyMassW GatherBodyMass(const BodyMass* bodies,
                                                        const std::int32_t (&index)[kLanes])
 {
-#if MEFF_SIMD_LANES == 8
-    Real4 low[4], high[4];
-    GatherBodyMass4(bodies, index, low);
-    GatherBodyMass4(bodies, index + 4, high);
-    return {Join(low[0], high[0]),
-            Join(low[1], high[1]),
-            {Join(low[2], high[2]), Join(low[3], high[3])}};
-#else
-    Real4 all[4];
-    GatherBodyMass4(bodies, index, all);
-    return {all[0], all[1], {all[2], all[3]}};
-#endif
+    RealW columns[4];
+    GatherComponents(bodies, index, columns);
+    return {columns[0], columns[1], {columns[2], columns[3]}};
 }
 
 /// The lanes whose bit is set in `bits` (bit l: lane l), as a mask.

@@ -24,26 +24,7 @@ struct DeltaW
     RotW dq;
 };
 
-/// Four bodies' deltas (dp.x, dp.y, dq.s, dq.c): four vector loads and a 4×4 transpose.
-[[gnu::always_inline]] inline void GatherDeltas4(const SoftDelta* deltas, const std::int32_t* index,
-                                                 Real4 (&out)[4])
-{
-    Real4 r[4];
-    for (int i = 0; i < 4; ++i)
-    {
-        std::memcpy(&r[i], &deltas[index[i]], sizeof(Real4));
-    }
-    const Real4 xy01 = __builtin_shufflevector(r[0], r[1], 0, 4, 1, 5);
-    const Real4 xy23 = __builtin_shufflevector(r[2], r[3], 0, 4, 1, 5);
-    const Real4 sc01 = __builtin_shufflevector(r[0], r[1], 2, 6, 3, 7);
-    const Real4 sc23 = __builtin_shufflevector(r[2], r[3], 2, 6, 3, 7);
-    out[0] = __builtin_shufflevector(xy01, xy23, 0, 1, 4, 5);
-    out[1] = __builtin_shufflevector(xy01, xy23, 2, 3, 6, 7);
-    out[2] = __builtin_shufflevector(sc01, sc23, 0, 1, 4, 5);
-    out[3] = __builtin_shufflevector(sc01, sc23, 2, 3, 6, 7);
-}
-
-/// The transpose of GatherDeltas4 and four vector stores.
+/// The transpose of Transpose4 (lane_bodies.h) and four vector stores.
 [[gnu::always_inline]] inline void ScatterDeltas4(SoftDelta* deltas, const std::int32_t* store,
                                                   const Real4 (&in)[4])
 {
@@ -61,20 +42,13 @@ struct DeltaW
     }
 }
 
+/// Each lane's deltas (dp.x, dp.y, dq.s, dq.c: GatherComponents).
 [[gnu::always_inline]] inline DeltaW GatherDeltas(const SoftDelta* deltas,
                                                   const std::int32_t (&index)[kLanes])
 {
-#if MEFF_SIMD_LANES == 8
-    Real4 low[4], high[4];
-    GatherDeltas4(deltas, index, low);
-    GatherDeltas4(deltas, index + 4, high);
-    return {{Join(low[0], high[0]), Join(low[1], high[1])},
-            {Join(low[2], high[2]), Join(low[3], high[3])}};
-#else
-    Real4 all[4];
-    GatherDeltas4(deltas, index, all);
-    return {{all[0], all[1]}, {all[2], all[3]}};
-#endif
+    RealW columns[4];
+    GatherComponents(deltas, index, columns);
+    return {{columns[0], columns[1]}, {columns[2], columns[3]}};
 }
 
 [[gnu::always_inline]] inline void ScatterDeltas(SoftDelta* deltas,
