@@ -129,22 +129,39 @@ void SoftContactDirect::Prepare(std::span<const SoftContact> contacts, std::int3
             m_parent[Find(m_parent, c.indexA)] = Find(m_parent, c.indexB);
         }
     }
+    m_bodiesOf.assign(bodies, 0);
+    for (std::size_t i = 0; i < bodies; ++i)
+    {
+        m_bodiesOf[Find(m_parent, static_cast<std::int32_t>(i))] += 1;
+    }
     m_rowsOf.assign(bodies, 0);
     m_contactsOf.assign(bodies, 0);
     m_groupOf.assign(bodies, -1);
     const auto rootOf = [&](const SoftContact& c)
     { return Find(m_parent, SolverMoves(c.mA, c.iA) ? c.indexA : c.indexB); };
+    // Each group's lightest and heaviest moving body (inverse masses).
+    m_minInv.assign(bodies, 1e300);
+    m_maxInv.assign(bodies, 0.0);
     for (const SoftContact& c : contacts)
     {
         const std::int32_t root = rootOf(c);
         m_rowsOf[root] += c.pointCount;
+        for (const auto& [m, i] : {std::pair{c.mA, c.iA}, std::pair{c.mB, c.iB}})
+        {
+            if (SolverMoves(m, i))
+            {
+                m_minInv[root] = std::min(m_minInv[root], double(m));
+                m_maxInv[root] = std::max(m_maxInv[root], double(m));
+            }
+        }
         m_contactsOf[root] += 1;
     }
     // Groups in the order of their first contact; contacts and rows in island order.
     for (std::size_t k = 0; k < contacts.size(); ++k)
     {
         const std::int32_t root = rootOf(contacts[k]);
-        if (m_contactsOf[root] < 2 || m_rowsOf[root] > kMaxDirectRows)
+        if (m_contactsOf[root] < 2 || m_rowsOf[root] > kMaxDirectRows ||
+            (m_bodiesOf[root] > 1 && m_maxInv[root] < kMinDirectMassRatio * m_minInv[root]))
         {
             continue;
         }

@@ -454,11 +454,13 @@ void SoftJointTree::Factor()
     }
 }
 
-void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBias)
+bool SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBias)
 {
     SoftBodies& bodies = *context.bodies;
     const Softness& soft = context.joint;
-    if (useBias)
+    // A·λ is taken back only by a row that takes back impulse (not the position pass's).
+    const bool takeBack = useBias && soft.impulseScale != 0;
+    if (takeBack)
     {
         // A·λ: the anchor velocities that the joints' impulses so far gave on their own.
         m_moved.resize(bodies.velocities.size());
@@ -478,7 +480,7 @@ void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBia
         j.rA = at.rA;
         j.rB = at.rB;
         j.d = at.d;
-        if (useBias)
+        if (takeBack)
         {
             RowBodies moved =
                 LoadRowBodies(m_moved.data(), f.indexA, f.indexB, f.mA, f.iA, f.mB, f.iB);
@@ -486,6 +488,7 @@ void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBia
             StoreRowBodies(m_moved.data(), f.indexA, f.indexB, moved);
         }
     }
+    bool any = false;
     for (std::size_t i = 0; i < m_nodes.size(); ++i)
     {
         m_x[i] = {};
@@ -501,14 +504,19 @@ void SoftJointTree::SetRightHandSide(const SoftStepContext& context, bool useBia
         Vec2 target = AnchorVelocity(j.rA, j.rB, b); // the rigid row: A·Δλ = −Cdot
         if (useBias)
         {
+            target = soft.massScale * target + BiasOf(soft, j.d);
+        }
+        if (takeBack)
+        {
             const RowBodies moved =
                 LoadRowBodies(m_moved.data(), f.indexA, f.indexB, f.mA, f.iA, f.mB, f.iB);
-            target = soft.massScale * target + BiasOf(soft, j.d) +
-                     soft.impulseScale * AnchorVelocity(j.rA, j.rB, moved);
+            target += soft.impulseScale * AnchorVelocity(j.rA, j.rB, moved);
         }
         // The joint rows of the system read −J·Δv = −rhs, and rhs = −target.
         m_x[i] = {double(target.x), double(target.y), 0};
+        any = any || target.x != 0 || target.y != 0;
     }
+    return any;
 }
 
 void SoftJointTree::SolveFactored()
@@ -559,7 +567,12 @@ void SoftJointTree::Solve(const SoftStepContext& context, bool useBias, bool acc
     {
         return;
     }
-    SetRightHandSide(context, useBias);
+    // Nothing to take up (the position pass of joints within their push-out speed, bodies the
+    // other joints did not move): the update is zero, and its factor and solve are saved.
+    if (!SetRightHandSide(context, useBias))
+    {
+        return;
+    }
     if (!m_factored)
     {
         Factor();

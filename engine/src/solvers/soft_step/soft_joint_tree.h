@@ -104,8 +104,8 @@ class SoftJointTree
     };
     Edge ParentEdge(const Node& node) const;
     void Factor();
-    /// The right-hand side −rhs of every joint node into m_x (bodies 0).
-    void SetRightHandSide(const SoftStepContext& context, bool useBias);
+    /// The right-hand side −rhs of every joint node into m_x (bodies 0); false when it is zero.
+    bool SetRightHandSide(const SoftStepContext& context, bool useBias);
     void SolveFactored();
 
     std::vector<TreeJoint> m_joints;
