@@ -49,6 +49,13 @@ void UpdateSoftJoint(Joint& joint, const SoftJointFrame& frame, const SoftStepCo
 
 } // namespace
 
+bool SoftJointSweeps(const Joint& joint, const SoftJointFrame& frame)
+{
+    const auto* revolute = std::get_if<RevoluteJoint>(&joint.data);
+    return revolute == nullptr || !frame.pointInTree || revolute->enableSpring ||
+           revolute->enableMotor || revolute->enableLimit;
+}
+
 void WarmStartSoftJoint(Joint& joint, const SoftJointFrame& frame, const SoftStepContext& context)
 {
     UpdateSoftJoint(joint, frame, context,

@@ -177,6 +177,9 @@ void PrepareSoftJoint(Joint& joint, SoftJointFrame& frame, const JointBody& a, c
 /// Joints without rigid rows (motor, mouse, friction) do nothing.
 void CorrectSoftJoint(const Joint& joint, const SoftJointFrame& frame,
                       const SoftStepContext& context);
+/// Whether SolveSoftJoint and CorrectSoftJoint have rows of the joint to update: false for a
+/// revolute joint whose point rows its tree solves and that has no spring, motor or limit.
+bool SoftJointSweeps(const Joint& joint, const SoftJointFrame& frame);
 /// Applies the joint's accumulated sub-step impulses.
 void WarmStartSoftJoint(Joint& joint, const SoftJointFrame& frame, const SoftStepContext& context);
 /// One update of every row of the joint.

@@ -178,7 +178,7 @@ void SoftStepSolver::CorrectJoints(const StepContext& step)
     m_context.joint = m_context.jointCorrection;
     m_context.correcting = true;
     m_revolutes.Correct(m_context);
-    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    for (const std::size_t k : m_sweeping)
     {
         CorrectSoftJoint(*m_joints[k], m_frames[k], m_context);
     }
@@ -265,6 +265,15 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
     }
     SplitLaneJoints(laneCandidates >= kMinSoftLaneRows);
     m_tree.Build(m_joints, m_frames, bodyCount);
+    // A tree's plain revolute joints have nothing left to solve one by one.
+    m_sweeping.clear();
+    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    {
+        if (SoftJointSweeps(*m_joints[k], m_frames[k]))
+        {
+            m_sweeping.push_back(k);
+        }
+    }
 }
 
 void SoftStepSolver::SplitLaneJoints(bool useLanes)
@@ -329,7 +338,7 @@ void SoftStepSolver::WarmStartJoints()
 void SoftStepSolver::SolveJoints(bool useBias)
 {
     m_revolutes.Solve(m_context, useBias);
-    for (std::size_t k = 0; k < m_joints.size(); ++k)
+    for (const std::size_t k : m_sweeping)
     {
         SolveSoftJoint(*m_joints[k], m_frames[k], m_context, useBias);
     }

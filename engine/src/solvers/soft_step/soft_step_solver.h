@@ -88,6 +88,8 @@ class SoftStepSolver final : public Solver
     /// The joints solved one by one, in island order, and their frames.
     std::vector<Joint*> m_joints;
     std::vector<SoftJointFrame> m_frames;
+    /// The positions in m_joints of the joints with rows for the sweeps (SoftJointSweeps).
+    std::vector<std::size_t> m_sweeping;
     /// While the joints are prepared: each one's SoftRevoluteLanes::LaneJoint (or null).
     std::vector<RevoluteJoint*> m_candidates;
     /// The plain revolute joints, solved by colour in SIMD lanes (soft_revolute_lanes.h);
