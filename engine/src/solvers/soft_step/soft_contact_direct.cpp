@@ -115,6 +115,10 @@ void SoftContactDirect::Prepare(std::span<const SoftContact> contacts, std::int3
     m_groupContacts.clear();
     m_matrices.clear();
     direct.assign(contacts.size(), 0);
+    if (contacts.size() < 2)
+    {
+        return; // no group of two contacts
+    }
     const auto bodies = static_cast<std::size_t>(bodyCount);
     m_parent.resize(bodies);
     for (std::size_t i = 0; i < bodies; ++i)
@@ -129,11 +133,7 @@ void SoftContactDirect::Prepare(std::span<const SoftContact> contacts, std::int3
             m_parent[Find(m_parent, c.indexA)] = Find(m_parent, c.indexB);
         }
     }
-    m_bodiesOf.assign(bodies, 0);
-    for (std::size_t i = 0; i < bodies; ++i)
-    {
-        m_bodiesOf[Find(m_parent, static_cast<std::int32_t>(i))] += 1;
-    }
+    m_joined.assign(bodies, 0);
     m_rowsOf.assign(bodies, 0);
     m_contactsOf.assign(bodies, 0);
     m_groupOf.assign(bodies, -1);
@@ -146,6 +146,8 @@ void SoftContactDirect::Prepare(std::span<const SoftContact> contacts, std::int3
     {
         const std::int32_t root = rootOf(c);
         m_rowsOf[root] += c.pointCount;
+        // Two moving bodies or more: a contact between two of them.
+        m_joined[root] |= SolverMoves(c.mA, c.iA) && SolverMoves(c.mB, c.iB) ? 1 : 0;
         for (const auto& [m, i] : {std::pair{c.mA, c.iA}, std::pair{c.mB, c.iB}})
         {
             if (SolverMoves(m, i))
@@ -161,7 +163,7 @@ void SoftContactDirect::Prepare(std::span<const SoftContact> contacts, std::int3
     {
         const std::int32_t root = rootOf(contacts[k]);
         if (m_contactsOf[root] < 2 || m_rowsOf[root] > kMaxDirectRows ||
-            (m_bodiesOf[root] > 1 && m_maxInv[root] < kMinDirectMassRatio * m_minInv[root]))
+            (m_joined[root] != 0 && m_maxInv[root] < kMinDirectMassRatio * m_minInv[root]))
         {
             continue;
         }

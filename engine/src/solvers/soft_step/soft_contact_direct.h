@@ -86,7 +86,8 @@ class SoftContactDirect
     std::vector<std::int32_t> m_groupContacts;
     std::vector<double> m_matrices;
     // Scratch.
-    std::vector<std::int32_t> m_parent, m_bodiesOf, m_rowsOf, m_contactsOf, m_groupOf;
+    std::vector<std::int32_t> m_parent, m_rowsOf, m_contactsOf, m_groupOf;
+    std::vector<std::uint8_t> m_joined;     ///< per group root: it has two moving bodies or more
     std::vector<double> m_minInv, m_maxInv; ///< per group root: its moving bodies' 1/m range
     std::vector<double> m_q, m_x, m_w, m_factor, m_rhs;
     std::vector<std::uint8_t> m_free;
