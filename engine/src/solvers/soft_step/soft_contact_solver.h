@@ -114,6 +114,8 @@ class SoftContactSolver
 
     /// Whether every contact is solved row by row (the island is too small for the lanes).
     bool RowByRow() const { return m_lanes.Overflow().size() == m_contacts.size(); }
+    /// Whether the island has no contact rows.
+    bool Empty() const { return m_contacts.empty(); }
     std::span<const SolvedContact> SolvedContacts() const { return m_solved; }
     bool AnyHitEvents() const { return m_anyHitEvents; }
 

@@ -8,6 +8,7 @@
 #include "solvers/shared/sequential_joints.h"
 #include "tasks/parallel_ranges.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace meff::detail
@@ -148,7 +149,11 @@ void SoftStepSolver::SubStep(bool first, const StepContext& step)
     {
         // A small island relaxes until its sweeps agree: an impulse a sweep could not take back
         // (a contact's warm start handed on by a joint) would otherwise stay as motion.
-        for (int r = step.solver.softStep.relaxIterations; r < kMaxSoftRelaxSweeps; ++r)
+        // Joints that only a tree solves, exactly, and no contacts: one relax sweep settles them.
+        const bool exact = m_contacts.Empty() && m_sweeping.empty();
+        const int sweeps =
+            exact ? std::max(step.solver.softStep.relaxIterations, 1) : kMaxSoftRelaxSweeps;
+        for (int r = step.solver.softStep.relaxIterations; r < sweeps; ++r)
         {
             m_before = m_bodies.velocities;
             SolveJoints(false);
