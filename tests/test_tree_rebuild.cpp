@@ -4,6 +4,7 @@
 // engine/src/collision/tree_rebuild.cpp): the colour and soft-step back ends' tree update.
 #include "collision/broad_phase.h"
 #include "test_random.h"
+#include "meff/task_system.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
 #include <utility>
 #include <vector>
@@ -362,5 +364,86 @@ TEST_CASE("Tree rebuild: boxes that overflow to infinity leave a valid tree and 
         REQUIRE(tree.Validate());
         CHECK(tree.CountEnlarged() == 0);
         CheckQueryAgainstBruteForce(tree, live, RandomBox(rng, 25, 5));
+    }
+}
+
+TEST_CASE("Tree rebuild: the same tree, node ids included, on any number of threads",
+          "[broad_phase][tree_rebuild][threads]")
+{
+    // Trees given the same creates, moves and destroys, rebuilt on 1 (no task system), 2, 3 and
+    // 4 threads: every query reports the same leaves in the same order (the tree's shape), and
+    // the next proxies get the same ids (the free list the build leaves, so its node ids). Big
+    // enough for the threaded build: thousands of units, most of them moved each round.
+    const std::vector<int> threadCounts{1, 2, 3, 4};
+    std::vector<std::unique_ptr<meff::TaskSystem>> pools;
+    std::vector<DynamicTree> trees;
+    for (const int threads : threadCounts)
+    {
+        pools.push_back(threads == 1 ? nullptr : meff::MakeThreadPool(threads));
+        trees.push_back(RebuildingTree());
+    }
+    Random rng(21);
+    std::vector<AABB> boxes;
+    std::vector<std::int32_t> ids;
+    for (int i = 0; i < 4000; ++i)
+    {
+        boxes.push_back(RandomBox(rng, 100, 1));
+        std::int32_t id = 0;
+        for (DynamicTree& tree : trees)
+        {
+            id = tree.CreateProxy(boxes.back(), i);
+        }
+        ids.push_back(id);
+    }
+    for (int round = 0; round < 6; ++round)
+    {
+        for (std::size_t i = 0; i < ids.size(); ++i)
+        {
+            if (rng.Index(4) == 0)
+            {
+                continue; // a quarter stays: kept subtrees
+            }
+            const Vec2 d(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
+            boxes[i] = Translated(boxes[i], d);
+            for (DynamicTree& tree : trees)
+            {
+                tree.MoveProxy(ids[i], boxes[i], d);
+            }
+        }
+        for (std::size_t t = 0; t < trees.size(); ++t)
+        {
+            trees[t].Rebuild(pools[t].get());
+            REQUIRE(trees[t].Validate());
+        }
+        for (int q = 0; q < 40; ++q)
+        {
+            const AABB query = RandomBox(rng, 110, 15);
+            std::vector<std::vector<std::int32_t>> found(trees.size());
+            for (std::size_t t = 0; t < trees.size(); ++t)
+            {
+                trees[t].Query(query,
+                               [&found, t](std::int32_t id)
+                               {
+                                   found[t].push_back(id);
+                                   return true;
+                               });
+            }
+            for (std::size_t t = 1; t < trees.size(); ++t)
+            {
+                CHECK(found[t] == found[0]);
+            }
+        }
+        // A proxy made and destroyed takes the free list's first node: the same in every tree.
+        std::vector<std::int32_t> next;
+        for (DynamicTree& tree : trees)
+        {
+            CHECK(tree.GetHeight() == trees[0].GetHeight());
+            next.push_back(tree.CreateProxy(RandomBox(rng, 100, 1), -1));
+            tree.DestroyProxy(next.back());
+        }
+        for (const std::int32_t id : next)
+        {
+            CHECK(id == next[0]);
+        }
     }
 }

@@ -18,6 +18,11 @@
 #include <cstdint>
 #include <vector>
 
+namespace meff
+{
+class TaskSystem;
+}
+
 namespace meff::detail
 {
 
@@ -55,6 +60,12 @@ class DynamicTree
     /// Gives the leaf a new fat box when `aabb` leaves it (or it is far too large), re-inserting
     /// the leaf or growing its ancestors (TreeUpdate); returns true when it did.
     bool MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
+    /// MoveProxy's test, which reads only the leaf (so leaves may be tested on several threads
+    /// at once while nothing changes the tree): true, with the new fat box in `fat`, when the
+    /// leaf needs one (SetFatBox).
+    bool NeedsNewBox(std::int32_t proxyId, const AABB& aabb, Vec2 displacement, AABB& fat) const;
+    /// MoveProxy's update, given NeedsNewBox's fat box.
+    void SetFatBox(std::int32_t proxyId, const AABB& fat);
     /// The rule for the boxes made from now on; boxes already made are kept until their shape
     /// leaves them (or they are far too large for the new rule).
     void SetFatBoxRule(FatBoxRule rule) { m_rule = rule; }
@@ -68,12 +79,14 @@ class DynamicTree
     }
     /// TreeUpdate::EnlargeAndRebuild: builds again the part of the tree whose boxes grew since
     /// the last call (every internal node above a moved leaf), keeping the untouched subtrees
-    /// whole; does nothing when no box grew. Node ids of leaves (proxy ids) are kept.
-    void Rebuild()
+    /// whole; does nothing when no box grew. Node ids of leaves (proxy ids) are kept. With
+    /// `tasks`, the subtrees below the top splits are built on its threads; the tree, node ids
+    /// included, is the same for any thread count.
+    void Rebuild(TaskSystem* tasks = nullptr)
     {
         if (m_grown)
         {
-            RebuildGrown();
+            RebuildGrown(tasks);
         }
     }
 
@@ -155,15 +168,41 @@ class DynamicTree
     std::int32_t Balance(std::int32_t index);
     /// Grows the leaf's ancestors to hold its box, marking them enlarged.
     void EnlargeAncestors(std::int32_t leaf);
-    void RebuildGrown();
+    void RebuildGrown(TaskSystem* tasks);
     /// A Rebuild unit: a leaf or a kept subtree, with its box's centre.
     struct BuildUnit
     {
         std::int32_t node;
         Vec2 centre;
     };
-    /// Builds a subtree over m_units[begin, end); returns its root.
-    std::int32_t BuildRange(int begin, int end, int depth);
+    /// A range of units whose subtree one thread builds (BuildRange's arguments).
+    struct BuildTask
+    {
+        int begin, end, depth, offset;
+    };
+    /// A split made before the threads build the subtrees below it: its node is linked after.
+    struct BuildSplit
+    {
+        int begin, split, end, offset;
+    };
+    /// Orders m_units[begin, end) (at least two) into the two sides of its split; returns the
+    /// index of the second side's first unit.
+    int SplitRange(int begin, int end, int depth);
+    /// Builds a subtree over m_units[begin, end) whose internal nodes are m_buildIds[offset,
+    /// offset + end − begin − 1), in the order of the serial build's allocations (children's
+    /// nodes first, child1's before child2's, the root last); returns its root.
+    std::int32_t BuildRange(int begin, int end, int depth, int offset);
+    /// The root BuildRange(begin, end, ·, offset) returns, known before it runs.
+    std::int32_t RootOf(int begin, int end, int offset) const
+    {
+        return end - begin == 1 ? m_units[static_cast<std::size_t>(begin)].node
+                                : m_buildIds[static_cast<std::size_t>(offset + end - begin - 2)];
+    }
+    /// Makes node `index` the parent of child1 and child2 (box, height, layers, links).
+    void LinkNode(std::int32_t index, std::int32_t child1, std::int32_t child2);
+    /// Splits the top `levels` levels of m_units[begin, end) on this thread, listing the splits
+    /// in m_buildSplits (parents first) and the ranges below them in m_buildTasks.
+    void SplitTop(int begin, int end, int depth, int offset, int levels);
 
     std::vector<Node> m_nodes;
     std::int32_t m_root = kNullProxy;
@@ -174,6 +213,9 @@ class DynamicTree
     bool m_grown = false;           ///< some box grew in place since the last Rebuild
     std::vector<BuildUnit> m_units; ///< Rebuild's scratch, kept for its capacity
     std::vector<std::int32_t> m_unitStack;
+    std::vector<std::int32_t> m_buildIds; ///< the freed nodes, in the serial build's order
+    std::vector<BuildSplit> m_buildSplits;
+    std::vector<BuildTask> m_buildTasks;
 };
 
 /// The explicit stack of one walk of a tree (Query, RayCast, BoxCast), local to the walk so that
@@ -222,11 +264,22 @@ class BroadPhase
     std::int32_t CreateProxy(const AABB& aabb, std::int32_t userData, ProxyLayers layers = {});
     void DestroyProxy(std::int32_t proxyId);
     void MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement);
+    /// MoveProxy in two halves (DynamicTree::NeedsNewBox, SetFatBox): the test, which may run
+    /// on several threads at once while nothing changes the tree, then the move.
+    bool NeedsNewBox(std::int32_t proxyId, const AABB& aabb, Vec2 displacement, AABB& fat) const
+    {
+        return m_tree.NeedsNewBox(proxyId, aabb, displacement, fat);
+    }
+    void SetFatBox(std::int32_t proxyId, const AABB& fat)
+    {
+        m_tree.SetFatBox(proxyId, fat);
+        BufferMove(proxyId);
+    }
     void SetFatBoxRule(FatBoxRule rule) { m_tree.SetFatBoxRule(rule); }
     const FatBoxRule& GetFatBoxRule() const { return m_tree.GetFatBoxRule(); }
     void SetTreeUpdate(TreeUpdate update) { m_tree.SetTreeUpdate(update); }
     /// DynamicTree::Rebuild; before the pairs are looked for, so the queries walk a built tree.
-    void RebuildTree() { m_tree.Rebuild(); }
+    void RebuildTree(TaskSystem* tasks = nullptr) { m_tree.Rebuild(tasks); }
     /// Makes the proxy report its pairs again at the next UpdatePairs.
     void TouchProxy(std::int32_t proxyId);
 

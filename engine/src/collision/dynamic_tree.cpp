@@ -115,10 +115,21 @@ void DynamicTree::DestroyProxy(std::int32_t proxyId)
 
 bool DynamicTree::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displacement)
 {
+    AABB fat;
+    if (!NeedsNewBox(proxyId, aabb, displacement, fat))
+    {
+        return false;
+    }
+    SetFatBox(proxyId, fat);
+    return true;
+}
+
+bool DynamicTree::NeedsNewBox(std::int32_t proxyId, const AABB& aabb, Vec2 displacement,
+                              AABB& fat) const
+{
     // The candidate fat box: the margin all round, then stretched along the predicted motion
     // (only on the side the shape is heading to).
     const Vec2 r(m_rule.margin, m_rule.margin);
-    AABB fat;
     fat.lowerBound = aabb.lowerBound - r;
     fat.upperBound = aabb.upperBound + r;
 
@@ -154,7 +165,11 @@ bool DynamicTree::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displac
             return false;
         }
     }
+    return true;
+}
 
+void DynamicTree::SetFatBox(std::int32_t proxyId, const AABB& fat)
+{
     if (m_update == TreeUpdate::EnlargeAndRebuild)
     {
         m_nodes[proxyId].aabb = fat;
@@ -167,7 +182,6 @@ bool DynamicTree::MoveProxy(std::int32_t proxyId, const AABB& aabb, Vec2 displac
         InsertLeaf(proxyId);
     }
     m_nodes[proxyId].moved = true;
-    return true;
 }
 
 void DynamicTree::InsertLeaf(std::int32_t leaf)

@@ -11,10 +11,15 @@
 // visit more nodes. Here a moved leaf only grows its ancestors' boxes, and once per step, before
 // the pairs are looked for, the grown part — every internal node above a moved leaf — is built
 // again top down over its leaves and the untouched subtrees below it, splitting each set at the
-// middle of its box centres' extent along the longer axis. The build is serial and each split
-// depends only on the set of units it splits (not on their order), so the tree, and with it the
-// pairs' order, is the same for any thread count and any standard library.
+// middle of its box centres' extent along the longer axis. Each split depends only on the set
+// of units it splits (not on their order), so the tree, and with it the pairs' order, is the same
+// for any standard library. With a task system the top splits are made on the calling thread and
+// the subtrees below them built on the threads: every subtree's internal nodes are the freed
+// nodes the serial build would give it (taken off the free list in its order before the build),
+// so the tree, node ids included, is the same for any thread count.
 #include "collision/broad_phase.h"
+
+#include "tasks/parallel_ranges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +34,22 @@ namespace
 /// middle split of clustered centres can peel off one unit at a time, and the median bounds the
 /// rest of the build's depth by log2 of the units.
 constexpr int kMaxMiddleSplitDepth = 32;
+
+/// The fewest units a thread is handed a subtree of: a unit costs a few dozen instructions per
+/// level, so a subtree of fewer costs less than handing it to another thread.
+constexpr int kMinUnitsPerBuildTask = 256;
+
+/// Levels split on the calling thread before the threads take the subtrees below: enough for
+/// two subtrees per thread, each level costing one pass over the units on this thread.
+int TopLevels(const TaskSystem* tasks)
+{
+    int levels = 0;
+    while ((1 << levels) < 2 * WorkerCount(tasks))
+    {
+        ++levels;
+    }
+    return levels;
+}
 
 } // namespace
 
@@ -51,7 +72,7 @@ void DynamicTree::EnlargeAncestors(std::int32_t leaf)
     m_grown = true;
 }
 
-void DynamicTree::RebuildGrown()
+void DynamicTree::RebuildGrown(TaskSystem* tasks)
 {
     m_grown = false; // a box grew, so the tree has a leaf and a root
 
@@ -77,8 +98,55 @@ void DynamicTree::RebuildGrown()
         node.enlarged = false;
         FreeNode(index);
     }
-    m_root = BuildRange(0, static_cast<int>(m_units.size()), 0);
+    // Rebuild's stages. Read: m_units (the units and their boxes). Written: the freed nodes,
+    // the units' parent links, m_root. The serial build's allocations, in order, are the freed
+    // nodes as the free list hands them out: taken now, each subtree's are known before it is
+    // built (BuildRange), wherever it is built.
+    const int count = static_cast<int>(m_units.size());
+    m_buildIds.clear();
+    for (int i = 0; i + 1 < count; ++i)
+    {
+        m_buildIds.push_back(AllocateNode());
+    }
+    if (tasks == nullptr || WorkerCount(tasks) < 2 || count < 2 * kMinUnitsPerBuildTask)
+    {
+        m_root = BuildRange(0, count, 0, 0);
+    }
+    else
+    {
+        m_buildSplits.clear();
+        m_buildTasks.clear();
+        SplitTop(0, count, 0, 0, TopLevels(tasks));
+        // Each task writes its own units' range, its own nodes and its units' parent links.
+        ForEachIndex(tasks, static_cast<int>(m_buildTasks.size()), 1,
+                     [this](int i)
+                     {
+                         const BuildTask& task = m_buildTasks[static_cast<std::size_t>(i)];
+                         BuildRange(task.begin, task.end, task.depth, task.offset);
+                     });
+        // The top splits' nodes, children before parents (the list holds parents first).
+        for (auto top = m_buildSplits.rbegin(); top != m_buildSplits.rend(); ++top)
+        {
+            LinkNode(RootOf(top->begin, top->end, top->offset),
+                     RootOf(top->begin, top->split, top->offset),
+                     RootOf(top->split, top->end, top->offset + top->split - top->begin - 1));
+        }
+        m_root = RootOf(0, count, 0);
+    }
     m_nodes[m_root].parentOrNext = kNullProxy;
+}
+
+void DynamicTree::SplitTop(int begin, int end, int depth, int offset, int levels)
+{
+    if (levels == 0 || end - begin < 2 * kMinUnitsPerBuildTask)
+    {
+        m_buildTasks.push_back({begin, end, depth, offset});
+        return;
+    }
+    const int split = SplitRange(begin, end, depth);
+    m_buildSplits.push_back({begin, split, end, offset});
+    SplitTop(begin, split, depth + 1, offset, levels - 1);
+    SplitTop(split, end, depth + 1, offset + split - begin - 1, levels - 1);
 }
 
 int DynamicTree::CountEnlarged() const
@@ -88,13 +156,8 @@ int DynamicTree::CountEnlarged() const
                                           { return node.height > 0 && node.enlarged; }));
 }
 
-std::int32_t DynamicTree::BuildRange(int begin, int end, int depth)
+int DynamicTree::SplitRange(int begin, int end, int depth)
 {
-    if (end - begin == 1)
-    {
-        return m_units[static_cast<std::size_t>(begin)].node;
-    }
-
     const auto first = m_units.begin() + begin;
     const auto last = m_units.begin() + end;
     Vec2 lower = first->centre;
@@ -133,10 +196,25 @@ std::int32_t DynamicTree::BuildRange(int begin, int end, int depth)
                          });
     }
 
-    const int split = static_cast<int>(middle - m_units.begin());
-    const std::int32_t child1 = BuildRange(begin, split, depth + 1);
-    const std::int32_t child2 = BuildRange(split, end, depth + 1);
-    const std::int32_t index = AllocateNode();
+    return static_cast<int>(middle - m_units.begin());
+}
+
+std::int32_t DynamicTree::BuildRange(int begin, int end, int depth, int offset)
+{
+    if (end - begin == 1)
+    {
+        return m_units[static_cast<std::size_t>(begin)].node;
+    }
+    const int split = SplitRange(begin, end, depth);
+    const std::int32_t child1 = BuildRange(begin, split, depth + 1, offset);
+    const std::int32_t child2 = BuildRange(split, end, depth + 1, offset + split - begin - 1);
+    const std::int32_t index = RootOf(begin, end, offset);
+    LinkNode(index, child1, child2);
+    return index;
+}
+
+void DynamicTree::LinkNode(std::int32_t index, std::int32_t child1, std::int32_t child2)
+{
     Node& node = m_nodes[index];
     node.child1 = child1;
     node.child2 = child2;
@@ -145,7 +223,6 @@ std::int32_t DynamicTree::BuildRange(int begin, int end, int depth)
     UniteLayers(node);
     m_nodes[child1].parentOrNext = index;
     m_nodes[child2].parentOrNext = index;
-    return index;
 }
 
 } // namespace meff::detail

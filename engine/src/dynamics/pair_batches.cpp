@@ -93,7 +93,7 @@ void EqualizeCapacity(std::vector<PairBatch>& lists, int batches, PairBatchCapac
 /// again in the serial pass (a proxy buffered twice, moved then touched, finds its pairs twice).
 void FindNewContactsInBatches(WorldState& world)
 {
-    world.broadPhase.RebuildTree();
+    world.broadPhase.RebuildTree(world.tasks);
     const int moves = world.broadPhase.GetMoveCount();
     const int batches = (moves + kMovesPerBatch - 1) / kMovesPerBatch;
     std::vector<PairBatch>& lists = world.scratch.pairBatches;

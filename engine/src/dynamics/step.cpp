@@ -251,34 +251,51 @@ void ListMovedBodies(const WorldState& world, std::vector<std::int32_t>& moved)
     }
 }
 
-/// The threaded SynchronizeShapes: the moved bodies' shapes' boxes computed on the threads
-/// (each range writes its own bodies' shapes and their displacements), then the broad phase's
-/// tree, which all proxies share, updated on this thread in body-list order, so that the tree
-/// is the serial walk's.
+/// The threaded SynchronizeShapes. On the threads, by moved body — Read: the bodies' poses, the
+/// broad phase's leaves. Written: the body's shapes' boxes, scratch.fatBoxes and
+/// scratch.shapeNewBox of its shapes, scratch.newBoxes of the body. Then on this thread, in
+/// body-list order, the new fat boxes of the shapes that left theirs — Read: the scratch. Written:
+/// the broad phase's tree and move buffer — so that the tree and the move buffer are the serial
+/// walk's.
 void SynchronizeShapesOnThreads(WorldState& world)
 {
     StepScratch& scratch = world.scratch;
     ListMovedBodies(world, scratch.movedBodies);
-    scratch.displacements.resize(world.shapes.size());
+    scratch.newBoxes.resize(scratch.movedBodies.size());
+    scratch.fatBoxes.resize(world.shapes.size());
+    scratch.shapeNewBox.resize(world.shapes.size());
     const bool swept = SweepsBoxes(world);
     ForEachIndex(world.tasks, static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
                  [&world, &scratch, swept](int i)
                  {
                      const Body& body = world.bodies[scratch.movedBodies[std::size_t(i)]];
                      const Transform xf0 = StartPose(body);
+                     bool newBox = false;
                      for (const std::int32_t s : body.shapes)
                      {
-                         scratch.displacements[std::size_t(s)] =
-                             SweepShapeBox(world.shapes[s], xf0, body.xf, swept);
+                         Shape& shape = world.shapes[s];
+                         const Vec2 displacement = SweepShapeBox(shape, xf0, body.xf, swept);
+                         const bool moves =
+                             world.broadPhase.NeedsNewBox(shape.proxyId, shape.aabb, displacement,
+                                                          scratch.fatBoxes[std::size_t(s)]);
+                         scratch.shapeNewBox[std::size_t(s)] = moves ? 1 : 0;
+                         newBox = newBox || moves;
                      }
+                     scratch.newBoxes[std::size_t(i)] = newBox ? 1 : 0;
                  });
-    for (const std::int32_t b : scratch.movedBodies)
+    for (std::size_t i = 0; i < scratch.movedBodies.size(); ++i)
     {
-        for (const std::int32_t s : world.bodies[b].shapes)
+        if (scratch.newBoxes[i] == 0)
         {
-            const Shape& shape = world.shapes[s];
-            world.broadPhase.MoveProxy(shape.proxyId, shape.aabb,
-                                       scratch.displacements[std::size_t(s)]);
+            continue;
+        }
+        for (const std::int32_t s : world.bodies[scratch.movedBodies[i]].shapes)
+        {
+            if (scratch.shapeNewBox[std::size_t(s)] != 0)
+            {
+                world.broadPhase.SetFatBox(world.shapes[s].proxyId,
+                                           scratch.fatBoxes[std::size_t(s)]);
+            }
         }
     }
 }

@@ -61,8 +61,12 @@ struct StepScratch
     std::vector<CollideEntry> collide;
     /// The threaded SynchronizeShapes' moved bodies, in body-list order.
     std::vector<std::int32_t> movedBodies;
-    /// Per shape index: the centre of its box's motion over the step (MoveProxy's displacement).
-    std::vector<Vec2> displacements;
+    /// Per moved body (movedBodies' order): whether a shape of it needs a new fat box.
+    std::vector<std::uint8_t> newBoxes;
+    /// Per shape index: its new fat box, where it needs one (BroadPhase::NeedsNewBox).
+    std::vector<AABB> fatBoxes;
+    /// Per shape index: whether it needs its new fat box.
+    std::vector<std::uint8_t> shapeNewBox;
     /// The batched pair finding's batches of move-buffer entries (only the first ones in use;
     /// never shrunk, so that the lists keep their capacity).
     std::vector<PairBatch> pairBatches;
