@@ -476,8 +476,12 @@ void ListContacts(WorldState& world, std::vector<CollideEntry>& entries)
 }
 
 /// The second pass, on the threads: each contact that passed the filter decided, its manifold
-/// kept or computed afresh. Each range writes only its own entries and contacts; deciding reads
-/// the bodies, shapes and fat boxes, which nothing changes until the third pass.
+/// kept or computed afresh. Read: the bodies, shapes and fat boxes, which nothing changes until
+/// the third pass. Written: each range its own entries and contacts. A fresh manifold that
+/// leaves the touching state as it was is all done here (ApplyContact then only clears
+/// Disabled: no wake, no event, and no pre-solve callback on the threads), and becomes Keep, so
+/// that the third pass, on the calling thread, is left only the contacts that begin or end
+/// touching, those destroyed and those found asleep.
 void DecideAndCompute(WorldState& world, std::vector<CollideEntry>& entries)
 {
     const Real recycleDistance = RecycleDistance(world);
@@ -498,6 +502,11 @@ void DecideAndCompute(WorldState& world, std::vector<CollideEntry>& entries)
                      else if (entry.action == CollideAction::Update)
                      {
                          entry.touching = ComputeContact(world, contact);
+                         if (entry.touching == contact.IsTouching())
+                         {
+                             KeepManifold(contact); // ApplyContact's only change to it
+                             entry.action = CollideAction::Keep;
+                         }
                      }
                  });
 }

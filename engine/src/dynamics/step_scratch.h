@@ -22,7 +22,8 @@ enum class CollideAction : std::uint8_t
     Pending, ///< threaded Collide: passed the filter, the rest decided on the threads
     Asleep,  ///< both bodies inactive: nothing, unless an earlier contact wakes one
     Destroy, ///< filtered out or the fat boxes parted
-    Keep,    ///< touching, and the manifold is kept (CollisionPolicy::recycleDistance)
+    Keep,    ///< touching, and the manifold is kept (CollisionPolicy::recycleDistance); threaded
+             ///< Collide: also a fresh manifold that left the touching state as it was
     Update,  ///< a fresh manifold (UpdateContact)
 };
 
