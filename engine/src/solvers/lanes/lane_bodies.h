@@ -70,24 +70,33 @@ template <typename State>
     return {columns[0], columns[1], columns[2]};
 }
 
-/// Writes four bodies: the transpose of Gather4 and four vector stores.
+/// Writes four items of four Reals each by index: Transpose4's inverse (in[c] holds the four
+/// items' component c) and four vector stores.
+template <typename Item>
+[[gnu::always_inline]] inline void Untranspose4(Item* items, const std::int32_t* store,
+                                                const Real4 (&in)[4])
+{
+    static_assert(sizeof(Item) == sizeof(Real4));
+    const Real4 lo01 = __builtin_shufflevector(in[0], in[1], 0, 4, 1, 5);
+    const Real4 lo23 = __builtin_shufflevector(in[0], in[1], 2, 6, 3, 7);
+    const Real4 hi01 = __builtin_shufflevector(in[2], in[3], 0, 4, 1, 5);
+    const Real4 hi23 = __builtin_shufflevector(in[2], in[3], 2, 6, 3, 7);
+    const Real4 r[4] = {__builtin_shufflevector(lo01, hi01, 0, 1, 4, 5),
+                        __builtin_shufflevector(lo01, hi01, 2, 3, 6, 7),
+                        __builtin_shufflevector(lo23, hi23, 0, 1, 4, 5),
+                        __builtin_shufflevector(lo23, hi23, 2, 3, 6, 7)};
+    for (int i = 0; i < 4; ++i)
+    {
+        std::memcpy(static_cast<void*>(&items[store[i]]), &r[i], sizeof(Real4));
+    }
+}
+
+/// Writes four bodies: Untranspose4 of x, y and angle, the padding's column zero.
 template <typename State>
 [[gnu::always_inline]] inline void Scatter4(State* states, const std::int32_t* store,
                                             const BodyState4& in)
 {
-    const Real4 zero{};
-    const Real4 xy01 = __builtin_shufflevector(in.x, in.y, 0, 4, 1, 5);
-    const Real4 xy23 = __builtin_shufflevector(in.x, in.y, 2, 6, 3, 7);
-    const Real4 a01 = __builtin_shufflevector(in.a, zero, 0, 4, 1, 5);
-    const Real4 a23 = __builtin_shufflevector(in.a, zero, 2, 6, 3, 7);
-    const Real4 r0 = __builtin_shufflevector(xy01, a01, 0, 1, 4, 5);
-    const Real4 r1 = __builtin_shufflevector(xy01, a01, 2, 3, 6, 7);
-    const Real4 r2 = __builtin_shufflevector(xy23, a23, 0, 1, 4, 5);
-    const Real4 r3 = __builtin_shufflevector(xy23, a23, 2, 3, 6, 7);
-    std::memcpy(static_cast<void*>(&states[store[0]]), &r0, sizeof(Real4));
-    std::memcpy(static_cast<void*>(&states[store[1]]), &r1, sizeof(Real4));
-    std::memcpy(static_cast<void*>(&states[store[2]]), &r2, sizeof(Real4));
-    std::memcpy(static_cast<void*>(&states[store[3]]), &r3, sizeof(Real4));
+    Untranspose4(states, store, {in.x, in.y, in.a, Real4{}});
 }
 
 #if MEFF_SIMD_LANES == 8

@@ -24,24 +24,6 @@ struct DeltaW
     RotW dq;
 };
 
-/// The transpose of Transpose4 (lane_bodies.h) and four vector stores.
-[[gnu::always_inline]] inline void ScatterDeltas4(SoftDelta* deltas, const std::int32_t* store,
-                                                  const Real4 (&in)[4])
-{
-    const Real4 xy01 = __builtin_shufflevector(in[0], in[1], 0, 4, 1, 5);
-    const Real4 xy23 = __builtin_shufflevector(in[0], in[1], 2, 6, 3, 7);
-    const Real4 sc01 = __builtin_shufflevector(in[2], in[3], 0, 4, 1, 5);
-    const Real4 sc23 = __builtin_shufflevector(in[2], in[3], 2, 6, 3, 7);
-    const Real4 r[4] = {__builtin_shufflevector(xy01, sc01, 0, 1, 4, 5),
-                        __builtin_shufflevector(xy01, sc01, 2, 3, 6, 7),
-                        __builtin_shufflevector(xy23, sc23, 0, 1, 4, 5),
-                        __builtin_shufflevector(xy23, sc23, 2, 3, 6, 7)};
-    for (int i = 0; i < 4; ++i)
-    {
-        std::memcpy(static_cast<void*>(&deltas[store[i]]), &r[i], sizeof(Real4));
-    }
-}
-
 /// Each lane's deltas (dp.x, dp.y, dq.s, dq.c: GatherComponents).
 [[gnu::always_inline]] inline DeltaW GatherDeltas(const SoftDelta* deltas,
                                                   const std::int32_t (&index)[kLanes])
@@ -58,11 +40,11 @@ struct DeltaW
 #if MEFF_SIMD_LANES == 8
     const Real4 low[4] = {LowHalf(d.dp.x), LowHalf(d.dp.y), LowHalf(d.dq.s), LowHalf(d.dq.c)};
     const Real4 high[4] = {HighHalf(d.dp.x), HighHalf(d.dp.y), HighHalf(d.dq.s), HighHalf(d.dq.c)};
-    ScatterDeltas4(deltas, store, low);
-    ScatterDeltas4(deltas, store + 4, high);
+    Untranspose4(deltas, store, low);
+    Untranspose4(deltas, store + 4, high);
 #else
     const Real4 all[4] = {d.dp.x, d.dp.y, d.dq.s, d.dq.c};
-    ScatterDeltas4(deltas, store, all);
+    Untranspose4(deltas, store, all);
 #endif
 }
 
