@@ -16,12 +16,6 @@ namespace meff::detail
 namespace
 {
 
-/// The masses of a group's bodies (ContactLanes::m_bodies).
-[[gnu::always_inline]] inline LaneMasses GatherMasses(const BodyMassW& A, const BodyMassW& B)
-{
-    return {A.invMass, A.invI, B.invMass, B.invI};
-}
-
 /// The friction rows of both points (as SolveVelocityConstraint: |λt| ≤ μ·λn, vt driven to
 /// the conveyor's speed; a group whose lanes all have tangentSpeed +0 skips subtracting it,
 /// which would change no bit).
@@ -45,16 +39,6 @@ namespace
         ApplyImpulseW(m, a, b, g.rA[j], g.rB[j], lambda * tangent);
     }
 }
-
-/// The spin rows' view of a group (SolveRollingLanes reads the rows by their names).
-struct RollingRows
-{
-    const RealW& rollingResistance;
-    const RealW& rollingMass;
-    RealW& rollingImpulse;
-    const RealW (&normalImpulse)[2];
-    RealW invIA, invIB;
-};
 
 void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMasses& m,
                   BodyStateW& a, BodyStateW& b)
@@ -86,14 +70,6 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     }
 }
 
-/// The block solver's view of a group: K's k12, K⁻¹ and the rows' own effective masses
-/// (SolveBlockLanes reads them by their names).
-struct BlockRows
-{
-    RealW k12, inv11, inv12, inv22;
-    RealW normalMass[2];
-};
-
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
 /// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
 /// impulses.
@@ -105,12 +81,9 @@ void SolveNormalBlock(ContactVelocityGroup& g, MaskW block, const LaneMasses& m,
     const RealW vn2 = Dot(RelativeVelocity(a, b, g.rA[1], g.rB[1]), g.normal);
     const RealW b1 = LessBias(vn1, velocityBias, 0) - (g.k11 * a1 + g.k12 * a2);
     const RealW b2 = LessBias(vn2, velocityBias, 1) - (g.k12 * a1 + g.k22 * a2);
-    // K⁻¹ as the preparation's condition test left K: K is symmetric, and so is its inverse, bit
-    // for bit (both off-diagonal entries are −k12/det).
-    const RealW invDet = InverseDeterminant(g.k11, g.k12, g.k12, g.k22);
-    const BlockRows rows{
-        g.k12, invDet * g.k22, -invDet * g.k12, invDet * g.k11, {g.normalMass[0], g.normalMass[1]}};
-    const auto [block1, block2] = SolveBlockLanes(rows, a1, a2, b1, b2);
+    // K⁻¹ as the preparation's condition test left K (BlockRowsOf).
+    const auto [block1, block2] =
+        SolveBlockLanes(BlockRowsOf(g.k11, g.k12, g.k22, g.normalMass), a1, a2, b1, b2);
     // Only the block lanes take the block's answer.
     const RealW new1 = Select(block, block1, a1);
     const RealW new2 = Select(block, block2, a2);
@@ -130,7 +103,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
                         DiscardSlots discard)
 {
     const LaneMasses m =
-        GatherMasses(GatherBodyMass(bodies, h.indexA), GatherBodyMass(bodies, h.indexB));
+        MassesOf(GatherBodyMass(bodies, h.indexA), GatherBodyMass(bodies, h.indexB));
     BodyStateW a = Gather(velocities, h.indexA);
     BodyStateW b = Gather(velocities, h.indexB);
     const bool tangentSpeed = (h.extras & ContactGroupHeader::kTangentSpeed) != 0;
@@ -221,7 +194,7 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
         const RealW K = A.invMass + B.invMass + A.invI * rnA * rnA + B.invI * rnB * rnB;
         const MaskW solvable = hasPoint & (K > 0);
         const RealW impulse = Select(solvable, -C / Select(solvable, K, Splat(1)), Splat(0));
-        ApplyImpulseW(GatherMasses(A, B), a, b, rA, rB, impulse * normal);
+        ApplyImpulseW(MassesOf(A, B), a, b, rA, rB, impulse * normal);
     }
     ScatterStores(positions, h.indexA, h.storesA, discard.own, a);
     ScatterStores(positions, h.indexB, h.storesB, discard.own, b);

@@ -5,6 +5,7 @@
 // back end's contact lanes and the soft step's.
 #pragma once
 
+#include "solvers/lanes/lane_bodies.h"
 #include "solvers/lanes/wide_real.h"
 
 namespace meff::detail
@@ -15,6 +16,24 @@ struct BlockImpulsesW
 {
     RealW x1, x2;
 };
+
+/// The block solver's view of a group's two normal rows: K's k12, K⁻¹ and the rows' own effective
+/// masses (SolveBlockLanes reads them by their names).
+struct BlockRows
+{
+    RealW k12, inv11, inv12, inv22;
+    RealW normalMass[2];
+};
+
+/// BlockRows from the rows' K = [k11 k12; k12 k22] and effective masses: K⁻¹ recomputed with the
+/// preparation's operations (Mat22::GetInverse), so bit for bit what it would have kept. K is
+/// symmetric, and so is its inverse (both off-diagonal entries are −k12/det).
+[[gnu::always_inline]] inline BlockRows BlockRowsOf(RealW k11, RealW k12, RealW k22,
+                                                    const RealW (&normalMass)[2])
+{
+    const RealW invDet = InverseDeterminant(k11, k12, k12, k22);
+    return {k12, invDet * k22, -invDet * k12, invDet * k11, {normalMass[0], normalMass[1]}};
+}
 
 /// Solves vn = K·x + b as one LCP by total enumeration of its four cases in Box2D's order (as
 /// ContactSolver's SolveNormalBlock), b = (vn − bias) − K·a being the rows' velocity error at

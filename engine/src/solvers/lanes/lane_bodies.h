@@ -231,6 +231,18 @@ struct BodyMassW
     return {columns[0], columns[1], {columns[2], columns[3]}};
 }
 
+/// The two bodies' inverse masses (1/kg) and inverse inertias (1/(kg·m²)) per lane.
+struct LaneMasses
+{
+    RealW invMassA, invIA, invMassB, invIB;
+};
+
+/// The inverse masses and inertias of a group's bodies A and B (GatherBodyMass of each).
+[[gnu::always_inline]] inline LaneMasses MassesOf(const BodyMassW& A, const BodyMassW& B)
+{
+    return {A.invMass, A.invI, B.invMass, B.invI};
+}
+
 /// The lanes whose bit is set in `bits` (bit l: lane l), as a mask.
 [[gnu::always_inline]] inline MaskW LanesOf(unsigned bits)
 {
@@ -256,13 +268,11 @@ inline unsigned BitsOf(MaskW m)
 /// kLanes solver body indices, one per lane.
 using IndexW = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
 
-/// Scatter for a worker of the world's TaskSystem, lane l writing body index[l] where bit l of
+/// Where a worker of the world's TaskSystem writes each lane's body: body index[l] where bit l of
 /// `stores` is set and the worker's discard slot `discard` (DiscardSlots::own) elsewhere (static
 /// or kinematic bodies, empty lanes).
-template <typename State>
-[[gnu::always_inline]] inline void ScatterStores(State* states, const std::int32_t (&index)[kLanes],
-                                                 unsigned stores, std::int32_t discard,
-                                                 const BodyStateW& in)
+[[gnu::always_inline]] inline void StoresOf(const std::int32_t (&index)[kLanes], unsigned stores,
+                                            std::int32_t discard, std::int32_t (&to)[kLanes])
 {
 #if MEFF_SIMD_LANES == 8
     const IndexW laneBit{1, 2, 4, 8, 16, 32, 64, 128};
@@ -272,10 +282,19 @@ template <typename State>
     IndexW bodies;
     std::memcpy(&bodies, index, sizeof(IndexW));
     const IndexW writes = ((IndexW{} + static_cast<std::int32_t>(stores)) & laneBit) != 0;
-    const IndexW to = (bodies & writes) | ((IndexW{} + discard) & ~writes);
-    std::int32_t toArray[kLanes];
-    std::memcpy(toArray, &to, sizeof(IndexW));
-    Scatter(states, toArray, in);
+    const IndexW where = (bodies & writes) | ((IndexW{} + discard) & ~writes);
+    std::memcpy(to, &where, sizeof(IndexW));
+}
+
+/// Scatter for a worker of the world's TaskSystem, to StoresOf's bodies.
+template <typename State>
+[[gnu::always_inline]] inline void ScatterStores(State* states, const std::int32_t (&index)[kLanes],
+                                                 unsigned stores, std::int32_t discard,
+                                                 const BodyStateW& in)
+{
+    std::int32_t to[kLanes];
+    StoresOf(index, stores, discard, to);
+    Scatter(states, to, in);
 }
 
 /// Fills lane l's bodies: the solver indices to read, where to write (the body, or the discard
@@ -302,12 +321,6 @@ void PackLaneBodies(Group& g, int l, const Constraint& c, std::int32_t discardIn
     PackLaneBodies(g, l, c.indexA, c.indexB, c.invMassA, c.invIA, c.invMassB, c.invIB,
                    discardIndex);
 }
-
-/// The two bodies' inverse masses (1/kg) and inverse inertias (1/(kg·m²)) per lane.
-struct LaneMasses
-{
-    RealW invMassA, invIA, invMassB, invIB;
-};
 
 /// Applies impulse P at lever arms rA, rB: −P to A, +P to B (velocities), or the same
 /// pseudo-impulse to positions.

@@ -10,6 +10,18 @@
 namespace meff::detail
 {
 
+/// A group's spin rows as SolveRollingLanes reads them (by their names): the rows, kept beside the
+/// group's other rows (few groups have them), its normal impulses and its bodies' inverse
+/// inertias.
+struct RollingRows
+{
+    const RealW& rollingResistance;
+    const RealW& rollingMass;
+    RealW& rollingImpulse;
+    const RealW (&normalImpulse)[2];
+    RealW invIA, invIB;
+};
+
 /// Each lane's spin row (SolveRollingRow), lane by lane: contacts with rolling resistance are
 /// rare, so the lanes without it (resistance 0) cost nothing else. `applied(lane, lambda)` is
 /// told each impulse applied (the soft step totals them over its sub-steps).
