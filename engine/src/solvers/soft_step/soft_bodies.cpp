@@ -54,6 +54,7 @@ void GatherSoftBody(const SolverWorld& world, Body& body, Real h, std::size_t i,
     body.sweep.c0 = body.sweep.c;
     body.sweep.a0 = body.sweep.a;
     bodies.start[i] = {body.sweep.c, body.sweep.a};
+    bodies.masses[i] = {body.invMass, body.invI, body.sweep.localCenter};
     bodies.velocities[i] = {body.linearVelocity, body.angularVelocity};
     // Static and kinematic bodies keep their velocities: no forces, no damping.
     if (body.type != BodyType::Dynamic)
@@ -78,6 +79,7 @@ void GatherSoftBodies(SolverWorld& world, const Island& island, Real h, SoftBodi
     bodies.velocities.resize(count + discardSlots);
     bodies.deltas.assign(count + discardSlots, SoftDelta{});
     bodies.start.resize(count);
+    bodies.masses.resize(count);
     bodies.kick.resize(count);
     bodies.wholeDamping.resize(count);
     bodies.halfDamping.resize(count);

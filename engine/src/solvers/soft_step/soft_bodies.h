@@ -8,6 +8,7 @@
 #pragma once
 
 #include "model/solver_types.h"
+#include "solvers/lanes/lane_bodies.h"
 #include "solvers/shared/island.h"
 #include "solvers/solver.h"
 
@@ -32,6 +33,9 @@ struct SoftBodies
     std::vector<Velocity> velocities;
     std::vector<SoftDelta> deltas;
     std::vector<Position> start; ///< centre of mass and angle when the step began
+    /// Each body's inverse mass, inverse inertia and local centre, as the lanes gather them by
+    /// their body indices (GatherBodyMass) instead of keeping a copy per row.
+    std::vector<BodyMass> masses;
     /// Per sub-step, as a Velocity: h·(F/m + gravityScale·g) (m/s) and h·T/I (rad/s).
     std::vector<Velocity> kick;
     /// The damping of a whole sub-step's kick and of a half kick, as a Velocity: each component's

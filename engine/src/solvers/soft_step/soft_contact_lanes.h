@@ -58,35 +58,54 @@ void ColourSoftRows(std::size_t count, std::int32_t bodyCount, BodiesOf&& bodies
     ColourConstraints(count, static_cast<std::size_t>(bodyCount), bodiesOf, out);
 }
 
-/// kLanes contacts' rows, one per lane. A lane with one point has a second point whose masses,
-/// lever arms and impulses are zero, which the updates leave unchanged; an empty lane has zero
-/// masses throughout and writes the discard slot. What the position correction reads comes
-/// first, together (it streams less than half of each group), and what most sweeps skip (soft
-/// contacts' softness, the spin row, the lanes' sources) last.
-struct SoftContactGroup
+/// What every pass reads of kLanes contacts besides their rows: the bodies and which lanes hold
+/// what, as bits (bit l: lane l). A lane's inverse masses and inertias are its bodies'
+/// (SoftBodies::masses, gathered by index). Empty lanes read lane 0's bodies and write the
+/// worker's discard slot.
+struct SoftContactHeader
 {
     std::int32_t indexA[kLanes], indexB[kLanes]; ///< solver body indices
-    std::int32_t storeA[kLanes], storeB[kLanes]; ///< where to write each body (discard slot)
-    bool anyRolling = false;                     ///< a lane has rolling resistance
-    RealW invMassA, invIA, invMassB, invIB;      ///< 1/kg, 1/(kg·m²)
+    /// Lanes that write their body (SolverMoves); the others (static or kinematic bodies, empty
+    /// lanes) write the worker's discard slot. A lane that does not move one of its bodies is a
+    /// contact against a fixed body: its normal rows are soft by SoftStepContext::staticContact.
+    std::uint8_t storesA = 0, storesB = 0;
+    std::uint8_t valid = 0;        ///< lanes holding a contact
+    std::uint8_t hasPoint[2] = {}; ///< lanes with that manifold point
+    std::uint8_t block = 0;        ///< two-point lanes whose normal rows are solved as the block
+    std::uint8_t hasFriction = 0;  ///< lanes with μ > 0
+    std::uint8_t extras = 0;       ///< what the group's SoftContactExtras hold
+
+    static constexpr std::uint8_t kTangentSpeed = 1; ///< a lane's tangentSpeed is not +0
+    static constexpr std::uint8_t kRolling = 2;      ///< a lane has rolling resistance
+};
+
+/// kLanes contacts' rows, one per lane. A lane with one point has a second point whose lever
+/// arms, row masses and impulses are zero, which the updates leave unchanged; an empty lane has
+/// zero rows throughout and writes only the discard slot. What the position correction reads
+/// comes first, together. The normal rows' block K and K⁻¹ are not kept: a sweep recomputes them
+/// from the bodies' masses and the rows' levers with the preparation's operations (RowCoupling,
+/// BlockRowsOf), which gives them bit for bit; the softness of the normal rows is the context's,
+/// by whether a lane's bodies both move (SoftContactHeader).
+struct SoftContactGroup
+{
     Vec2W normal;
     Vec2W rA[2], rB[2];      ///< lever arms at the step's start (m)
     RealW baseSeparation[2]; ///< separation − (rB − rA)·n at the start (m)
-    MaskW hasPoint[2];
-    RealW error[2]; ///< each point's C (SeparationOf) at the bodies' last poses (m)
+    RealW error[2];          ///< each point's C (SeparationOf) at the bodies' last poses (m)
     RealW normalMass[2], tangentMass[2];       ///< 1/k of each row (kg)
     RealW normalImpulse[2], tangentImpulse[2]; ///< accumulated in this sub-step (N·s)
     RealW totalNormalImpulse[2], totalTangentImpulse[2];
-    RealW k11, k12, k22; ///< the normal rows' block K (1/kg)
-    /// K⁻¹ = [inv11 inv12; inv12 inv22]: K is symmetric, and so is its inverse, bit for bit.
-    RealW inv11, inv12, inv22;
-    RealW friction, tangentSpeed; ///< μ; the conveyor's speed (m/s)
-    MaskW block;                  ///< two-point lanes whose normal rows are solved as the block
-    MaskW hasFriction;            ///< lanes with μ > 0
-    MaskW valid;                  ///< lanes holding a contact
-    RealW softBias, softMass, softImpulse; ///< the normal rows' Softness while solving
+    RealW friction; ///< μ
+};
+
+/// What few groups need (SoftContactHeader::extras), kept beside the rows by group index so that
+/// the other groups' sweeps neither read nor stream it. Where a group has none of a kind, its
+/// sweeps skip what the +0 it would hold would change by no bit.
+struct SoftContactExtras
+{
+    RealW tangentSpeed; ///< the friction rows' target (the conveyor's speed, m/s)
+    /// The spin row (0: none) and its impulse over the step.
     RealW rollingResistance, rollingMass, rollingImpulse, totalRollingImpulse;
-    std::int32_t source[kLanes]; ///< the contact's island position, −1: empty
 };
 
 /// The accumulated impulses of one group, kept aside by SaveImpulses.
@@ -138,29 +157,37 @@ class SoftContactLanes
         m_groupsOfColour.ForEachGroup(
             [&](std::int32_t i)
             {
-                const SoftContactGroup& g = m_groups[static_cast<std::size_t>(i)];
-                for (int l = 0; l < kLanes && g.source[l] >= 0; ++l)
+                const auto [first, end] = m_groupsOfColour.RowsOf(i, m_colouring);
+                for (std::int32_t l = 0; first + l < end; ++l)
                 {
-                    f(g.source[l], LaneImpulses(g, l));
+                    f(m_colouring.order[first + l], LaneImpulses(i, l));
                 }
             });
     }
 
   private:
-    static SoftContactImpulses LaneImpulses(const SoftContactGroup& g, int l)
+    /// Lane l's impulses of group i.
+    SoftContactImpulses LaneImpulses(std::int32_t i, int l) const
     {
+        const auto at = static_cast<std::size_t>(i);
+        const SoftContactGroup& g = m_groups[at];
+        // Without rolling resistance a lane's spin impulses are +0, as its contact's.
+        const bool rolling = (m_headers[at].extras & SoftContactHeader::kRolling) != 0;
         return {{g.normalImpulse[0][l], g.normalImpulse[1][l]},
                 {g.tangentImpulse[0][l], g.tangentImpulse[1][l]},
                 {g.totalNormalImpulse[0][l], g.totalNormalImpulse[1][l]},
                 {g.totalTangentImpulse[0][l], g.totalTangentImpulse[1][l]},
-                g.rollingImpulse[l],
-                g.totalRollingImpulse[l]};
+                rolling ? m_extras[at].rollingImpulse[l] : Real(0),
+                rolling ? m_extras[at].totalRollingImpulse[l] : Real(0)};
     }
     /// Packs group i from its colour's contacts.
     void PackGroup(std::int32_t i, std::span<const SoftContact> contacts);
     ConstraintColouring m_colouring;
-    std::vector<SoftContactGroup> m_groups; ///< colour after colour
-    ColourGroups m_groupsOfColour;          ///< where each colour's groups are, and their threads
+    std::vector<SoftContactHeader> m_headers; ///< colour after colour
+    std::vector<SoftContactGroup> m_groups;   ///< colour after colour
+    /// By group index, written only for the groups whose header names extras.
+    std::vector<SoftContactExtras> m_extras;
+    ColourGroups m_groupsOfColour; ///< where each colour's groups are, and their threads
     std::vector<SoftGroupImpulses> m_saved;
     bool m_errorsKnown = false; ///< whether every group's `error` is at the bodies' poses
 };

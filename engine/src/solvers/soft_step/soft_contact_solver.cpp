@@ -118,7 +118,7 @@ std::uint8_t PrepareContact(const IslandContacts& island, std::size_t k, Real wa
         const RowJacobian& J2 = normalRows[1];
         const Real k11 = InverseEffectiveMass(J1, masses);
         const Real k22 = InverseEffectiveMass(J2, masses);
-        const Real k12 = c.mA + c.mB + c.iA * J1.aA * J2.aA + c.iB * J1.aB * J2.aB;
+        const Real k12 = RowCoupling(J1.aA, J1.aB, J2.aA, J2.aB, c.mA, c.iA, c.mB, c.iB);
         if (k11 * k11 < kMaxConditionNumber * (k11 * k22 - k12 * k12))
         {
             c.K.ex = {k11, k12};

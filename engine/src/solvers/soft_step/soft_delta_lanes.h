@@ -48,13 +48,15 @@ struct DeltaW
 #endif
 }
 
-/// ScatterDeltas for a worker of the world's TaskSystem (WithWorkerStores).
-[[gnu::always_inline]] inline void ScatterDeltasFromWorker(SoftDelta* deltas,
-                                                           const std::int32_t (&store)[kLanes],
-                                                           DiscardSlots discard, const DeltaW& d)
+/// ScatterDeltas for a worker of the world's TaskSystem, to StoresOf's bodies (as ScatterStores).
+[[gnu::always_inline]] inline void ScatterDeltaStores(SoftDelta* deltas,
+                                                      const std::int32_t (&index)[kLanes],
+                                                      unsigned stores, std::int32_t discard,
+                                                      const DeltaW& d)
 {
-    WithWorkerStores(store, discard,
-                     [&](const std::int32_t(&to)[kLanes]) { ScatterDeltas(deltas, to, d); });
+    std::int32_t to[kLanes];
+    StoresOf(index, stores, discard, to);
+    ScatterDeltas(deltas, to, d);
 }
 
 /// SmallRotationW's lanes beyond kShortSeriesAngle: the longer series, and std::sin/std::cos

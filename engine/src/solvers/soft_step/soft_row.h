@@ -73,6 +73,21 @@ template <typename R>
     return iA * aA * aA + iB * aB * aB;
 }
 
+/// The seed's k of a linear row: 1/mA + 1/mB + AngularInverseMass.
+template <typename R>
+[[gnu::always_inline]] inline R LinearInverseMass(R aA, R aB, R mA, R iA, R mB, R iB)
+{
+    return mA + mB + AngularInverseMass(aA, aB, iA, iB);
+}
+
+/// The off-diagonal entry of the block K of two linear rows along the same direction through two
+/// points (levers aA1, aB1 and aA2, aB2): 1/mA + 1/mB + aA1·aA2/IA + aB1·aB2/IB.
+template <typename R>
+[[gnu::always_inline]] inline R RowCoupling(R aA1, R aB1, R aA2, R aB2, R mA, R iA, R mB, R iB)
+{
+    return mA + mB + iA * aA1 * aA2 + iB * aB1 * aB2;
+}
+
 /// J·v = n·(vB − vA) + aB·wB − aA·wA.
 template <typename V, typename R>
 [[gnu::always_inline]] inline R RowVelocityOf(V n, R aA, R aB, V vA, R wA, V vB, R wB)
@@ -92,8 +107,8 @@ template <typename R>
 /// The seed's inverse effective mass of row J.
 inline Real InverseEffectiveMass(const RowJacobian& J, const RowBodies& b)
 {
-    const Real angular = AngularInverseMass(J.aA, J.aB, b.iA, b.iB);
-    return J.linear ? b.mA + b.mB + angular : angular;
+    return J.linear ? LinearInverseMass(J.aA, J.aB, b.mA, b.iA, b.mB, b.iB)
+                    : AngularInverseMass(J.aA, J.aB, b.iA, b.iB);
 }
 
 /// 1/k, or 0 for a row no body can move along.
