@@ -339,6 +339,14 @@ bool IsPositiveZero(Real x)
     return x == 0 && !std::signbit(x);
 }
 
+/// What of contact c lives in its group's extras (SoftContactHeader::extras).
+std::uint8_t ExtrasOf(const SoftContact& c)
+{
+    return static_cast<std::uint8_t>(
+        (IsPositiveZero(c.tangentSpeed) ? 0 : SoftContactHeader::kTangentSpeed) |
+        (c.rollingResistance > 0 ? SoftContactHeader::kRolling : 0));
+}
+
 /// Lane l of a group from contact c (prepared by SoftContactSolver): its bits in the header, its
 /// rows, and what few contacts need in the group's extras.
 void PackLane(SoftContactHeader& h, SoftContactGroup& g, SoftContactExtras& e, int l,
@@ -352,18 +360,18 @@ void PackLane(SoftContactHeader& h, SoftContactGroup& g, SoftContactExtras& e, i
     h.valid |= bit;
     h.hasFriction |= c.friction > 0 ? bit : 0;
     g.friction[l] = c.friction;
-    if (!IsPositiveZero(c.tangentSpeed))
+    const std::uint8_t extras = ExtrasOf(c);
+    h.extras |= extras;
+    if ((extras & SoftContactHeader::kTangentSpeed) != 0)
     {
         e.tangentSpeed[l] = c.tangentSpeed;
-        h.extras |= SoftContactHeader::kTangentSpeed;
     }
-    if (c.rollingResistance > 0)
+    if ((extras & SoftContactHeader::kRolling) != 0)
     {
         e.rollingResistance[l] = c.rollingResistance;
         e.rollingMass[l] = c.rollingMass;
         e.rollingImpulse[l] = c.rollingImpulse;
         e.totalRollingImpulse[l] = c.totalRollingImpulse;
-        h.extras |= SoftContactHeader::kRolling;
     }
     g.normal.x[l] = c.normal.x;
     g.normal.y[l] = c.normal.y;
@@ -420,17 +428,13 @@ void SoftContactLanes::PackGroup(std::int32_t i, std::span<const SoftContact> co
     int filled = 0;
     for (; first + filled < end; ++filled)
     {
-        const std::int32_t k = m_colouring.order[first + filled];
-        // The extras are cleared only for a group that has some.
-        if (h.extras == 0)
+        const SoftContact& c = contacts[m_colouring.order[first + filled]];
+        // The extras are cleared only for a group that has some, before its first lane's.
+        if (h.extras == 0 && ExtrasOf(c) != 0)
         {
-            const SoftContact& c = contacts[k];
-            if (!IsPositiveZero(c.tangentSpeed) || c.rollingResistance > 0)
-            {
-                std::construct_at(&e);
-            }
+            std::construct_at(&e);
         }
-        PackLane(h, g, e, filled, contacts[k]);
+        PackLane(h, g, e, filled, c);
     }
     // Empty lanes read lane 0's bodies and change nothing (no rows), writing the discard slot.
     for (int l = filled; l < kLanes; ++l)

@@ -99,8 +99,9 @@ struct SoftContactGroup
 };
 
 /// What few groups need (SoftContactHeader::extras), kept beside the rows by group index so that
-/// the other groups' sweeps neither read nor stream it. Where a group has none of a kind, its
-/// sweeps skip what the +0 it would hold would change by no bit.
+/// the other groups' sweeps neither read nor stream it. A group without a kind skips it, which
+/// changes no bit: its tangentSpeed would be +0 in every lane, whose negation −0 is the bias the
+/// friction rows take instead, and a spin row of resistance 0 applies nothing.
 struct SoftContactExtras
 {
     RealW tangentSpeed; ///< the friction rows' target (the conveyor's speed, m/s)
