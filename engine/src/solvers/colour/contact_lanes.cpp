@@ -72,8 +72,8 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
 
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
 /// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
-/// impulses.
-void SolveNormalBlock(ContactVelocityGroup& g, MaskW block, const LaneMasses& m,
+/// impulses. Inlined: called, it passed the bodies' states through memory.
+[[gnu::always_inline]] inline void SolveNormalBlock(ContactVelocityGroup& g, MaskW block, const LaneMasses& m,
                       const RealW* velocityBias, BodyStateW& a, BodyStateW& b)
 {
     const RealW a1 = g.normalImpulse[0], a2 = g.normalImpulse[1];
