@@ -73,8 +73,9 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
 /// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
 /// impulses. Inlined: called, it passed the bodies' states through memory.
-[[gnu::always_inline]] inline void SolveNormalBlock(ContactVelocityGroup& g, MaskW block, const LaneMasses& m,
-                      const RealW* velocityBias, BodyStateW& a, BodyStateW& b)
+[[gnu::always_inline]] inline void SolveNormalBlock(ContactVelocityGroup& g, MaskW block,
+                                                    const LaneMasses& m, const RealW* velocityBias,
+                                                    BodyStateW& a, BodyStateW& b)
 {
     const RealW a1 = g.normalImpulse[0], a2 = g.normalImpulse[1];
     const RealW vn1 = Dot(RelativeVelocity(a, b, g.rA[0], g.rB[0]), g.normal);
@@ -145,8 +146,19 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
     ScatterStores(velocities, h.indexB, h.storesB, discard.own, b);
 }
 
+/// Which manifold types a position group's lanes hold (ContactGroupHeader::circles, faceB): a
+/// Select whose mask is false in every lane gives its second operand bit for bit, so where the
+/// header says no lane is of a type, SolvePositionGroup skips that type's selects.
+enum class GroupManifolds
+{
+    FaceA, ///< FaceA only (most of a pyramid's groups)
+    Faces, ///< FaceA and FaceB, no circles
+    Any,
+};
+
 /// One sweep over a group's points (as SolvePositionConstraint); returns each lane's smallest
 /// separation.
+template <GroupManifolds kKind>
 RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup& g,
                          const BodyMass* bodies, Position* positions, const Tolerances& tol,
                          Real baumgarte, DiscardSlots discard)
@@ -167,19 +179,31 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
         const TransformW xfA = TransformFromCenter(a, A.localCenter);
         const TransformW xfB = TransformFromCenter(b, B.localCenter);
         // FaceA and circles: A holds the reference face (or centre); FaceB: B does.
-        const TransformW reference = Select(faceB, xfB, xfA);
-        const TransformW incident = Select(faceB, xfA, xfB);
+        TransformW reference = xfA, incident = xfB;
+        if constexpr (kKind != GroupManifolds::FaceA)
+        {
+            reference = Select(faceB, xfB, xfA);
+            incident = Select(faceB, xfA, xfB);
+        }
         const Vec2W planePoint = Mul(reference, g.localPoint);
         const Vec2W clipPoint = Mul(incident, g.localPoints[j]);
         const Vec2W d = clipPoint - planePoint;
 
         // Circles: the normal joins the two centres (left as is when they coincide, as
         // Vec2::Normalize); faces: the reference face's normal.
-        const Vec2W centreNormal = h.circles != 0 ? NormalizeW(d) : d;
-        Vec2W normal = Select(circles, centreNormal, Mul(reference.q, g.localNormal));
+        Vec2W normal = Mul(reference.q, g.localNormal);
+        Vec2W point = clipPoint;
+        if constexpr (kKind == GroupManifolds::Any)
+        {
+            const Vec2W centreNormal = h.circles != 0 ? NormalizeW(d) : d;
+            normal = Select(circles, centreNormal, normal);
+            point = Select(circles, Splat(Real(0.5)) * (planePoint + clipPoint), clipPoint);
+        }
         const RealW separation = Dot(d, normal) - g.radiusA - g.radiusB;
-        const Vec2W point = Select(circles, Splat(Real(0.5)) * (planePoint + clipPoint), clipPoint);
-        normal = Select(faceB, Vec2W{-normal.x, -normal.y}, normal);
+        if constexpr (kKind != GroupManifolds::FaceA)
+        {
+            normal = Select(faceB, Vec2W{-normal.x, -normal.y}, normal);
+        }
 
         const Vec2W rA = point - a.linear;
         const Vec2W rB = point - b.linear;
@@ -199,6 +223,25 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
     ScatterStores(positions, h.indexA, h.storesA, discard.own, a);
     ScatterStores(positions, h.indexB, h.storesB, discard.own, b);
     return minSeparation;
+}
+
+/// SolvePositionGroup for the manifold types the group's header names.
+RealW SolvePositionGroupOfKind(const ContactGroupHeader& h, const ContactPositionGroup& g,
+                               const BodyMass* bodies, Position* positions, const Tolerances& tol,
+                               DiscardSlots discard)
+{
+    if (h.circles != 0)
+    {
+        return SolvePositionGroup<GroupManifolds::Any>(h, g, bodies, positions, tol, tol.baumgarte,
+                                                       discard);
+    }
+    if (h.faceB != 0)
+    {
+        return SolvePositionGroup<GroupManifolds::Faces>(h, g, bodies, positions, tol,
+                                                         tol.baumgarte, discard);
+    }
+    return SolvePositionGroup<GroupManifolds::FaceA>(h, g, bodies, positions, tol, tol.baumgarte,
+                                                     discard);
 }
 
 } // namespace
@@ -248,9 +291,9 @@ Real ContactLanes::SolvePositions(SolverData& data)
         ForEachGroupOfColour(c, data,
                              [&](std::int32_t i, DiscardSlots discard)
                              {
-                                 m_groupMinSeparation[i] = SolvePositionGroup(
+                                 m_groupMinSeparation[i] = SolvePositionGroupOfKind(
                                      m_headers[i], m_positionGroups[i], m_bodies.data(),
-                                     data.positions, tol, tol.baumgarte, discard);
+                                     data.positions, tol, discard);
                              });
     }
     // In group order whatever the threads: the same minimum, NaN and signed zeros included.
