@@ -166,6 +166,21 @@ inline Vec2W Mul(RotW q, Vec2W v)
     return q;
 }
 
+/// SinCosW's constants, each in every lane (wide_real.cpp): read from memory, they are the
+/// arithmetic's operands, where GCC 12 broadcast each from a scalar first (two SSE2 instructions
+/// per use).
+struct SinCosConstantsW
+{
+    RealW reducible, minusReducible; ///< ±6000: the reduction's exact range (rad)
+    RealW twoOverPi;                 ///< 2/π
+    RealW roundingShift;             ///< 1.5·2²³
+    RealW halfPi1, halfPi2, halfPi3; ///< π/2 in three parts (Cody and Waite)
+    RealW sin1, sin2, sin3;          ///< P's coefficients
+    RealW cos1, cos2, cos3, cos4;    ///< −1/2 and Q's coefficients
+    RealW one;                       ///< 1
+};
+extern const SinCosConstantsW kSinCosW;
+
 /// Sine and cosine of every lane's angle at once, each within about an ulp of std::sin/std::cos.
 /// The angle is reduced by the nearest multiple k of π/2, r = a − k·π/2 with |r| ≤ π/4, π/2 split
 /// into three floats (Cody and Waite) whose leading two have so few bits that k·C1 and k·C2 are
@@ -174,34 +189,23 @@ inline Vec2W Mul(RotW q, Vec2W v)
 /// float arithmetic, as evaluated here, both stay within 6.5e-8 (about half an ulp of 1) of the
 /// true values over [−π/4, π/4], two terms fewer than Taylor series of the same accuracy. Lanes
 /// beyond 6000 rad (k too large for exact products) or non-finite, and double builds, use the
-/// standard library.
+/// standard library. The constants are kSinCosW's (wide_real.cpp).
 [[gnu::always_inline]] inline RotW SinCosW(RealW angle)
 {
-    constexpr Real kReducible = Real(6000);
-    const MaskW reducible = (angle <= kReducible) & (angle >= -kReducible); // false for NaN
+    const SinCosConstantsW& k0 = kSinCosW;
+    const MaskW reducible = (angle <= k0.reducible) & (angle >= k0.minusReducible); // NaN: false
     if (!std::is_same_v<Real, float> || !AllLanes(reducible))
     {
         return SinCosLanes(angle);
     }
 
     using IntW = decltype(RealW{} < RealW{});
-    constexpr Real kTwoOverPi = Real(0.636619772367581343);
-    constexpr Real kHalfPi1 = Real(1.5703125);              // 201/128
-    constexpr Real kHalfPi2 = Real(4.838705062866211e-4);   // 12 significant bits
-    constexpr Real kHalfPi3 = Real(-4.371138828673793e-08); // π/2 − C1 − C2
     // Adding and subtracting 1.5·2²³ rounds a float to the nearest integer (|x| < 2²²).
-    constexpr Real kRoundingShift = Real(12582912.0);
-    const RealW k = (angle * kTwoOverPi + kRoundingShift) - kRoundingShift;
-    const RealW r = ((angle - k * kHalfPi1) - k * kHalfPi2) - k * kHalfPi3;
+    const RealW k = (angle * k0.twoOverPi + k0.roundingShift) - k0.roundingShift;
+    const RealW r = ((angle - k * k0.halfPi1) - k * k0.halfPi2) - k * k0.halfPi3;
     const RealW r2 = r * r;
-    const RealW sinR =
-        r + r * r2 *
-                (Real(-0.16666655242443085) +
-                 r2 * (Real(0.008332165889441967) + r2 * Real(-0.00019515953317750245)));
-    const RealW cosR =
-        1 + r2 * (Real(-0.5) +
-                  r2 * (Real(0.04166664555668831) +
-                        r2 * (Real(-0.0013887342065572739) + r2 * Real(2.4435852537862957e-05))));
+    const RealW sinR = r + r * r2 * (k0.sin1 + r2 * (k0.sin2 + r2 * k0.sin3));
+    const RealW cosR = k0.one + r2 * (k0.cos1 + r2 * (k0.cos2 + r2 * (k0.cos3 + r2 * k0.cos4)));
 
     // a = k·π/2 + r: quadrant k mod 4 swaps sine and cosine and sets their signs.
     const IntW quadrant = __builtin_convertvector(k, IntW) & 3;
