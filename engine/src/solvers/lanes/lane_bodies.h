@@ -294,6 +294,13 @@ template <typename State>
                                                  unsigned stores, std::int32_t discard,
                                                  const BodyStateW& in)
 {
+    // Every lane writes its body (most groups): the indices as they are, without StoresOf.
+    constexpr unsigned kEveryLane = (1U << kLanes) - 1;
+    if ((stores & kEveryLane) == kEveryLane)
+    {
+        Scatter(states, index, in);
+        return;
+    }
     std::int32_t to[kLanes];
     StoresOf(index, stores, discard, to);
     Scatter(states, to, in);
