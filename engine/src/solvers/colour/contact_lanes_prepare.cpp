@@ -140,10 +140,12 @@ WorldPointsW WorldPoints(const ContactGroupHeader& h, const ContactPositionGroup
     const MaskW circles = LanesOf(h.circles), faceB = LanesOf(h.faceB);
     const TransformW xfA = TransformFromCenter(positionA, localCenterA);
     const TransformW xfB = TransformFromCenter(positionB, localCenterB);
-    const TransformW reference = Select(faceB, xfB, xfA);
-    const TransformW incident = Select(faceB, xfA, xfB);
-    const RealW radiusReference = Select(faceB, g.radiusB, g.radiusA);
-    const RealW radiusIncident = Select(faceB, g.radiusA, g.radiusB);
+    // Where no lane is FaceB (most groups), the selects by faceB would give their second operand.
+    const bool anyFaceB = h.faceB != 0;
+    const TransformW reference = anyFaceB ? Select(faceB, xfB, xfA) : xfA;
+    const TransformW incident = anyFaceB ? Select(faceB, xfA, xfB) : xfB;
+    const RealW radiusReference = anyFaceB ? Select(faceB, g.radiusB, g.radiusA) : g.radiusA;
+    const RealW radiusIncident = anyFaceB ? Select(faceB, g.radiusA, g.radiusB) : g.radiusB;
     const Vec2W planePoint = Mul(reference, g.localPoint);
     const Vec2W clipPoints[2] = {Mul(incident, g.localPoints[0]), Mul(incident, g.localPoints[1])};
 
@@ -166,11 +168,11 @@ WorldPointsW WorldPoints(const ContactGroupHeader& h, const ContactPositionGroup
         // reference circle's rim.
         const Vec2W onFace = clip + (radiusReference - Dot(clip - planePoint, normal)) * normal;
         const Vec2W onRim = planePoint + radiusReference * normal;
-        const Vec2W surfaceReference = Select(circles, onRim, onFace);
+        const Vec2W surfaceReference = h.circles != 0 ? Select(circles, onRim, onFace) : onFace;
         const Vec2W surfaceIncident = clip - radiusIncident * normal;
         out.points[j] = Splat(Real(0.5)) * (surfaceReference + surfaceIncident);
     }
-    out.normal = Select(faceB, Vec2W{-normal.x, -normal.y}, normal);
+    out.normal = anyFaceB ? Select(faceB, Vec2W{-normal.x, -normal.y}, normal) : normal;
     return out;
 }
 
