@@ -156,12 +156,21 @@ enum class GroupManifolds
     Any,
 };
 
+/// The position sweep's tolerances in every lane, made once a sweep (read from memory, they are
+/// the arithmetic's operands instead of broadcasts in every group).
+struct PositionTolerancesW
+{
+    RealW baumgarte;                ///< Tolerances::baumgarte
+    RealW linearSlop;               ///< Tolerances::linearSlop (m)
+    RealW minusMaxLinearCorrection; ///< −Tolerances::maxLinearCorrection (m)
+};
+
 /// One sweep over a group's points (as SolvePositionConstraint); returns each lane's smallest
 /// separation.
 template <GroupManifolds kKind>
 RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup& g,
-                         const BodyMass* bodies, Position* positions, const Tolerances& tol,
-                         Real baumgarte, DiscardSlots discard)
+                         const BodyMass* bodies, Position* positions,
+                         const PositionTolerancesW& tol, DiscardSlots discard)
 {
     const BodyMassW A = GatherBodyMass(bodies, h.indexA);
     const BodyMassW B = GatherBodyMass(bodies, h.indexB);
@@ -175,6 +184,8 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
         {
             break;
         }
+        // Where every lane has the point (most groups), selecting by hasPoint changes nothing.
+        const bool everyLane = h.hasPoint[j] == (1U << kLanes) - 1;
         const MaskW hasPoint = LanesOf(h.hasPoint[j]);
         const TransformW xfA = TransformFromCenter(a, A.localCenter);
         const TransformW xfB = TransformFromCenter(b, B.localCenter);
@@ -207,16 +218,18 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
 
         const Vec2W rA = point - a.linear;
         const Vec2W rB = point - b.linear;
-        minSeparation = Select(hasPoint, MinW(minSeparation, separation), minSeparation);
+        minSeparation = everyLane
+                            ? MinW(minSeparation, separation)
+                            : Select(hasPoint, MinW(minSeparation, separation), minSeparation);
 
         // Baumgarte-scaled correction leaving linearSlop of overlap, at most
         // maxLinearCorrection; scalar effective mass k = Σ1/m + (r×n)²/I along the normal.
         const RealW C =
-            MinW(MaxW(baumgarte * (separation + tol.linearSlop), Splat(-tol.maxLinearCorrection)),
+            MinW(MaxW(tol.baumgarte * (separation + tol.linearSlop), tol.minusMaxLinearCorrection),
                  Splat(0));
         const RealW rnA = Cross(rA, normal), rnB = Cross(rB, normal);
         const RealW K = A.invMass + B.invMass + A.invI * rnA * rnA + B.invI * rnB * rnB;
-        const MaskW solvable = hasPoint & (K > 0);
+        const MaskW solvable = everyLane ? (K > 0) : (hasPoint & (K > 0));
         const RealW impulse = Select(solvable, -C / Select(solvable, K, Splat(1)), Splat(0));
         ApplyImpulseW(MassesOf(A, B), a, b, rA, rB, impulse * normal);
     }
@@ -227,21 +240,18 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
 
 /// SolvePositionGroup for the manifold types the group's header names.
 RealW SolvePositionGroupOfKind(const ContactGroupHeader& h, const ContactPositionGroup& g,
-                               const BodyMass* bodies, Position* positions, const Tolerances& tol,
-                               DiscardSlots discard)
+                               const BodyMass* bodies, Position* positions,
+                               const PositionTolerancesW& tol, DiscardSlots discard)
 {
     if (h.circles != 0)
     {
-        return SolvePositionGroup<GroupManifolds::Any>(h, g, bodies, positions, tol, tol.baumgarte,
-                                                       discard);
+        return SolvePositionGroup<GroupManifolds::Any>(h, g, bodies, positions, tol, discard);
     }
     if (h.faceB != 0)
     {
-        return SolvePositionGroup<GroupManifolds::Faces>(h, g, bodies, positions, tol,
-                                                         tol.baumgarte, discard);
+        return SolvePositionGroup<GroupManifolds::Faces>(h, g, bodies, positions, tol, discard);
     }
-    return SolvePositionGroup<GroupManifolds::FaceA>(h, g, bodies, positions, tol, tol.baumgarte,
-                                                     discard);
+    return SolvePositionGroup<GroupManifolds::FaceA>(h, g, bodies, positions, tol, discard);
 }
 
 } // namespace
@@ -285,7 +295,9 @@ void ContactLanes::CollectResults(std::span<SolvedContact> solved) const
 
 Real ContactLanes::SolvePositions(SolverData& data)
 {
-    const Tolerances& tol = data.step.tolerances;
+    const Tolerances& tolerances = data.step.tolerances;
+    const PositionTolerancesW tol{Splat(tolerances.baumgarte), Splat(tolerances.linearSlop),
+                                  Splat(-tolerances.maxLinearCorrection)};
     for (int c = 0; c < GroupColourCount(); ++c)
     {
         ForEachGroupOfColour(c, data,
