@@ -32,11 +32,11 @@ namespace
 /// What the lanes read of their contacts besides what the groups keep.
 struct LaneInputs
 {
-    RealW restitution, threshold;                  ///< e; restitution threshold (m/s)
-    BodyStateW startVelocityA{}, startVelocityB{}; ///< with restitutionFromStepStart
-    ContactGroupExtras extras{};                   ///< the group's, where its header names them
-    std::int32_t source[kLanes];                   ///< constraint index, −1 for an empty lane
-    bool hitEvents = false;                        ///< a lane's contact has hit events
+    RealW restitution, threshold;              ///< e; restitution threshold (m/s)
+    BodyStateW startVelocityA, startVelocityB; ///< with restitutionFromStepStart
+    ContactGroupExtras extras{};               ///< the group's, where its header names them
+    std::int32_t source[kLanes];               ///< constraint index, −1 for an empty lane
+    bool hitEvents = false;                    ///< a lane's contact has hit events
 };
 
 /// Whether x is +0 bit for bit (subtracting it changes nothing).
@@ -106,6 +106,14 @@ void GatherLane(ContactGroupHeader& h, ContactVelocityGroup& vg, ContactPosition
         // Impulses are scaled by dt/dt0 so that a changed step size keeps the same force.
         vg.normalImpulse[j][l] = impulseScale * mp.normalImpulse;
         vg.tangentImpulse[j][l] = impulseScale * mp.tangentImpulse;
+    }
+    // A missing point's lanes are zero (PrepareGroup no longer clears a full group's rows).
+    for (int j = manifold.pointCount; j < 2; ++j)
+    {
+        pg.localPoints[j].x[l] = 0;
+        pg.localPoints[j].y[l] = 0;
+        vg.normalImpulse[j][l] = 0;
+        vg.tangentImpulse[j][l] = 0;
     }
 }
 
@@ -311,10 +319,16 @@ bool ContactLanes::PrepareGroup(std::int32_t i, int colour, const IslandContacts
     ContactVelocityGroup& vg = m_velocityGroups[i];
     ContactPositionGroup& pg = m_positionGroups[i];
     h = ContactGroupHeader{};
-    vg = ContactVelocityGroup{};
-    pg = ContactPositionGroup{};
+    // A full group writes every lane of its rows (GatherLane, PrepareRows): only a colour's last
+    // group, which may have empty lanes, is cleared first.
+    const bool full = end - first >= kLanes;
+    if (!full)
+    {
+        vg = ContactVelocityGroup{};
+        pg = ContactPositionGroup{};
+    }
     const Real impulseScale = data.step.solver.warmStarting ? data.step.dtRatio : Real(0);
-    LaneInputs in{};
+    LaneInputs in;
     int filled = 0;
     for (; filled < kLanes && first + filled < end; ++filled)
     {
@@ -328,6 +342,11 @@ bool ContactLanes::PrepareGroup(std::int32_t i, int colour, const IslandContacts
     for (int l = filled; l < kLanes; ++l)
     {
         in.source[l] = -1;
+        in.restitution[l] = in.threshold[l] = 0;
+        for (BodyStateW* start : {&in.startVelocityA, &in.startVelocityB})
+        {
+            start->linear.x[l] = start->linear.y[l] = start->angular[l] = 0;
+        }
         h.indexA[l] = h.indexA[0];
         h.indexB[l] = h.indexB[0];
     }
