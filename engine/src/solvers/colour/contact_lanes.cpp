@@ -72,8 +72,9 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
 
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
 /// Box2D's order (as ContactSolver's SolveNormalBlock); a lane where none holds keeps its
-/// impulses. Inlined: called, it passed the bodies' states through memory.
-[[gnu::always_inline]] inline void SolveNormalBlock(ContactVelocityGroup& g, MaskW block,
+/// impulses. `block` holds the lanes that take the block's answer (bit l: lane l). Inlined:
+/// called, it passed the bodies' states through memory.
+[[gnu::always_inline]] inline void SolveNormalBlock(ContactVelocityGroup& g, unsigned block,
                                                     const LaneMasses& m, const RealW* velocityBias,
                                                     BodyStateW& a, BodyStateW& b)
 {
@@ -85,9 +86,10 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     // K⁻¹ as the preparation's condition test left K (BlockRowsOf).
     const auto [block1, block2] =
         SolveBlockLanes(BlockRowsOf(g.k11, g.k12, g.k22, g.normalMass), a1, a2, b1, b2);
-    // Only the block lanes take the block's answer.
-    const RealW new1 = Select(block, block1, a1);
-    const RealW new2 = Select(block, block2, a2);
+    // Only the block lanes take the block's answer (every lane in most groups).
+    const bool everyLane = block == kEveryLane;
+    const RealW new1 = everyLane ? block1 : Select(LanesOf(block), block1, a1);
+    const RealW new2 = everyLane ? block2 : Select(LanesOf(block), block2, a2);
 
     const Vec2W P1 = (new1 - a1) * g.normal;
     const Vec2W P2 = (new2 - a2) * g.normal;
@@ -123,7 +125,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
     }
     else if (!anyScalar)
     {
-        SolveNormalBlock(g, LanesOf(h.block), m, velocityBias, a, b);
+        SolveNormalBlock(g, h.block, m, velocityBias, a, b);
     }
     else
     {
@@ -132,7 +134,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
         BodyStateW aRows = a, bRows = b;
         ContactVelocityGroup rows = g;
         SolveNormalRows(rows, m, velocityBias, aRows, bRows);
-        SolveNormalBlock(g, block, m, velocityBias, a, b);
+        SolveNormalBlock(g, h.block, m, velocityBias, a, b);
         a.linear = Select(block, a.linear, aRows.linear);
         a.angular = Select(block, a.angular, aRows.angular);
         b.linear = Select(block, b.linear, bRows.linear);
@@ -185,7 +187,7 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
             break;
         }
         // Where every lane has the point (most groups), selecting by hasPoint changes nothing.
-        const bool everyLane = h.hasPoint[j] == (1U << kLanes) - 1;
+        const bool everyLane = h.hasPoint[j] == kEveryLane;
         const MaskW hasPoint = LanesOf(h.hasPoint[j]);
         const TransformW xfA = TransformFromCenter(a, A.localCenter);
         const TransformW xfB = TransformFromCenter(b, B.localCenter);

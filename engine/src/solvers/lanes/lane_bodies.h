@@ -245,6 +245,9 @@ struct LaneMasses
     return {A.invMass, A.invI, B.invMass, B.invI};
 }
 
+/// Every lane's bit (bit l: lane l).
+inline constexpr unsigned kEveryLane = (1U << kLanes) - 1;
+
 /// The lanes whose bit is set in `bits` (bit l: lane l), as a mask.
 [[gnu::always_inline]] inline MaskW LanesOf(unsigned bits)
 {
@@ -295,7 +298,6 @@ template <typename State>
                                                  const BodyStateW& in)
 {
     // Every lane writes its body (most groups): the indices as they are, without StoresOf.
-    constexpr unsigned kEveryLane = (1U << kLanes) - 1;
     if ((stores & kEveryLane) == kEveryLane)
     {
         Scatter(states, index, in);
