@@ -97,23 +97,18 @@ void GatherLane(ContactGroupHeader& h, ContactVelocityGroup& vg, ContactPosition
     pg.radiusB[l] = contact.radiusB;
     h.circles |= manifold.type == Manifold::Type::Circles ? bit : 0;
     h.faceB |= manifold.type == Manifold::Type::FaceB ? bit : 0;
-    for (int j = 0; j < manifold.pointCount; ++j)
+    // A missing point's lanes are zero (PrepareGroup clears only a group with empty lanes).
+#pragma GCC unroll 2
+    for (int j = 0; j < 2; ++j)
     {
+        const bool has = j < manifold.pointCount;
         const ManifoldPoint& mp = manifold.points[j];
-        pg.localPoints[j].x[l] = mp.localPoint.x;
-        pg.localPoints[j].y[l] = mp.localPoint.y;
-        h.hasPoint[j] |= bit;
+        pg.localPoints[j].x[l] = has ? mp.localPoint.x : Real(0);
+        pg.localPoints[j].y[l] = has ? mp.localPoint.y : Real(0);
+        h.hasPoint[j] |= has ? bit : 0;
         // Impulses are scaled by dt/dt0 so that a changed step size keeps the same force.
-        vg.normalImpulse[j][l] = impulseScale * mp.normalImpulse;
-        vg.tangentImpulse[j][l] = impulseScale * mp.tangentImpulse;
-    }
-    // A missing point's lanes are zero (PrepareGroup no longer clears a full group's rows).
-    for (int j = manifold.pointCount; j < 2; ++j)
-    {
-        pg.localPoints[j].x[l] = 0;
-        pg.localPoints[j].y[l] = 0;
-        vg.normalImpulse[j][l] = 0;
-        vg.tangentImpulse[j][l] = 0;
+        vg.normalImpulse[j][l] = has ? impulseScale * mp.normalImpulse : Real(0);
+        vg.tangentImpulse[j][l] = has ? impulseScale * mp.tangentImpulse : Real(0);
     }
 }
 
