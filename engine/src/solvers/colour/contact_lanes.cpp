@@ -54,8 +54,10 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     return velocityBias != nullptr ? vn - velocityBias[j] : vn;
 }
 
-/// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0.
-[[gnu::always_inline]] inline void SolveNormalRows(ContactVelocityGroup& g, const LaneMasses& m,
+/// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0 (in `impulse`, the
+/// group's or a copy of them).
+[[gnu::always_inline]] inline void SolveNormalRows(const ContactVelocityGroup& g,
+                                                   RealW (&impulse)[2], const LaneMasses& m,
                                                    const RealW* velocityBias, BodyStateW& a,
                                                    BodyStateW& b)
 {
@@ -63,9 +65,9 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     {
         const RealW vn = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), g.normal);
         const RealW lambda = -g.normalMass[j] * LessBias(vn, velocityBias, j);
-        const RealW newImpulse = MaxW(g.normalImpulse[j] + lambda, Splat(0));
-        const RealW applied = newImpulse - g.normalImpulse[j];
-        g.normalImpulse[j] = newImpulse;
+        const RealW newImpulse = MaxW(impulse[j] + lambda, Splat(0));
+        const RealW applied = newImpulse - impulse[j];
+        impulse[j] = newImpulse;
         ApplyImpulseW(m, a, b, g.rA[j], g.rB[j], applied * g.normal);
     }
 }
@@ -121,7 +123,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
     const bool anyScalar = (h.valid & ~h.block) != 0;
     if (!anyBlock)
     {
-        SolveNormalRows(g, m, velocityBias, a, b);
+        SolveNormalRows(g, g.normalImpulse, m, velocityBias, a, b);
     }
     else if (!anyScalar)
     {
@@ -132,8 +134,8 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
         // Mixed group: each lane takes the velocities and impulses of its own kind of solve.
         const MaskW block = LanesOf(h.block);
         BodyStateW aRows = a, bRows = b;
-        ContactVelocityGroup rows = g;
-        SolveNormalRows(rows, m, velocityBias, aRows, bRows);
+        RealW rows[2] = {g.normalImpulse[0], g.normalImpulse[1]};
+        SolveNormalRows(g, rows, m, velocityBias, aRows, bRows);
         SolveNormalBlock(g, h.block, m, velocityBias, a, b);
         a.linear = Select(block, a.linear, aRows.linear);
         a.angular = Select(block, a.angular, aRows.angular);
@@ -141,7 +143,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
         b.angular = Select(block, b.angular, bRows.angular);
         for (int j = 0; j < 2; ++j)
         {
-            g.normalImpulse[j] = Select(block, g.normalImpulse[j], rows.normalImpulse[j]);
+            g.normalImpulse[j] = Select(block, g.normalImpulse[j], rows[j]);
         }
     }
     ScatterStores(velocities, h.indexA, h.storesA, discard.own, a);
