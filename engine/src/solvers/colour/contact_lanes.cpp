@@ -191,8 +191,8 @@ RealW SolvePositionGroup(const ContactGroupHeader& h, const ContactPositionGroup
         // Where every lane has the point (most groups), selecting by hasPoint changes nothing.
         const bool everyLane = h.hasPoint[j] == kEveryLane;
         const MaskW hasPoint = LanesOf(h.hasPoint[j]);
-        const TransformW xfA = TransformFromCenter(a, A.localCenter);
-        const TransformW xfB = TransformFromCenter(b, B.localCenter);
+        TransformW xfA, xfB;
+        TransformsFromCenter(a, A.localCenter, b, B.localCenter, xfA, xfB);
         // FaceA and circles: A holds the reference face (or centre); FaceB: B does.
         TransformW reference = xfA, incident = xfB;
         if constexpr (kKind != GroupManifolds::FaceA)

@@ -141,8 +141,8 @@ WorldPointsW WorldPoints(const ContactGroupHeader& h, const ContactPositionGroup
                          const BodyStateW& positionB)
 {
     const MaskW circles = LanesOf(h.circles), faceB = LanesOf(h.faceB);
-    const TransformW xfA = TransformFromCenter(positionA, localCenterA);
-    const TransformW xfB = TransformFromCenter(positionB, localCenterB);
+    TransformW xfA, xfB;
+    TransformsFromCenter(positionA, localCenterA, positionB, localCenterB, xfA, xfB);
     // Where no lane is FaceB (most groups), the selects by faceB would give their second operand.
     const bool anyFaceB = h.faceB != 0;
     const TransformW reference = anyFaceB ? Select(faceB, xfB, xfA) : xfA;

@@ -358,13 +358,16 @@ struct TransformW
     Vec2W p;
 };
 
-/// The body transform from a position state (centre of mass, angle) and the local centre:
-/// p = c − q·localCenter.
-[[gnu::always_inline]] inline TransformW TransformFromCenter(const BodyStateW& position,
-                                                             Vec2W localCenter)
+/// The body transforms of both bodies of the lanes from their position states (centre of mass,
+/// angle) and local centres: p = c − q·localCenter, the angles' ranges tested at once (SinCosW of
+/// two angles).
+[[gnu::always_inline]] inline void TransformsFromCenter(const BodyStateW& a, Vec2W localCenterA,
+                                                        const BodyStateW& b, Vec2W localCenterB,
+                                                        TransformW& xfA, TransformW& xfB)
 {
-    const RotW q = SinCosW(position.angular);
-    return {q, position.linear - Mul(q, localCenter)};
+    SinCosW(a.angular, b.angular, xfA.q, xfB.q);
+    xfA.p = a.linear - Mul(xfA.q, localCenterA);
+    xfB.p = b.linear - Mul(xfB.q, localCenterB);
 }
 
 [[gnu::always_inline]] inline Vec2W Mul(const TransformW& xf, Vec2W v)

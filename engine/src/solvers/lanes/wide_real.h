@@ -181,24 +181,17 @@ struct SinCosConstantsW
 };
 extern const SinCosConstantsW kSinCosW;
 
-/// Sine and cosine of every lane's angle at once, each within about an ulp of std::sin/std::cos.
-/// The angle is reduced by the nearest multiple k of π/2, r = a − k·π/2 with |r| ≤ π/4, π/2 split
-/// into three floats (Cody and Waite) whose leading two have so few bits that k·C1 and k·C2 are
-/// exact for |k| < 4096; sin r ≈ r + r³·P(r²) and cos r ≈ 1 − r²/2 + r⁴·Q(r²), P and Q of degree
-/// 2, fitted by weighted least squares on 400 Chebyshev nodes of [0, π/4] (near-minimax): in
-/// float arithmetic, as evaluated here, both stay within 6.5e-8 (about half an ulp of 1) of the
-/// true values over [−π/4, π/4], two terms fewer than Taylor series of the same accuracy. Lanes
-/// beyond 6000 rad (k too large for exact products) or non-finite, and double builds, use the
-/// standard library. The constants are kSinCosW's (wide_real.cpp).
-[[gnu::always_inline]] inline RotW SinCosW(RealW angle)
+/// The lanes whose angle SinCosW reduces itself (|angle| ≤ 6000 rad; NaN: false).
+[[gnu::always_inline]] inline MaskW SinCosReducible(RealW angle)
+{
+    return (angle <= kSinCosW.reducible) & (angle >= kSinCosW.minusReducible);
+}
+
+/// SinCosW's reduction and polynomials, for angles that are SinCosReducible in every lane (float
+/// builds).
+[[gnu::always_inline]] inline RotW SinCosReduced(RealW angle)
 {
     const SinCosConstantsW& k0 = kSinCosW;
-    const MaskW reducible = (angle <= k0.reducible) & (angle >= k0.minusReducible); // NaN: false
-    if (!std::is_same_v<Real, float> || !AllLanes(reducible))
-    {
-        return SinCosLanes(angle);
-    }
-
     using IntW = decltype(RealW{} < RealW{});
     // Adding and subtracting 1.5·2²³ rounds a float to the nearest integer (|x| < 2²²).
     const RealW k = (angle * k0.twoOverPi + k0.roundingShift) - k0.roundingShift;
@@ -213,6 +206,38 @@ extern const SinCosConstantsW kSinCosW;
     const RealW s = swap ? cosR : sinR;
     const RealW c = swap ? sinR : cosR;
     return {(quadrant & 2) != 0 ? -s : s, ((quadrant + 1) & 2) != 0 ? -c : c};
+}
+
+/// Sine and cosine of every lane's angle at once, each within about an ulp of std::sin/std::cos.
+/// The angle is reduced by the nearest multiple k of π/2, r = a − k·π/2 with |r| ≤ π/4, π/2 split
+/// into three floats (Cody and Waite) whose leading two have so few bits that k·C1 and k·C2 are
+/// exact for |k| < 4096; sin r ≈ r + r³·P(r²) and cos r ≈ 1 − r²/2 + r⁴·Q(r²), P and Q of degree
+/// 2, fitted by weighted least squares on 400 Chebyshev nodes of [0, π/4] (near-minimax): in
+/// float arithmetic, as evaluated here, both stay within 6.5e-8 (about half an ulp of 1) of the
+/// true values over [−π/4, π/4], two terms fewer than Taylor series of the same accuracy. Lanes
+/// beyond 6000 rad (k too large for exact products) or non-finite, and double builds, use the
+/// standard library. The constants are kSinCosW's (wide_real.cpp).
+[[gnu::always_inline]] inline RotW SinCosW(RealW angle)
+{
+    if (!std::is_same_v<Real, float> || !AllLanes(SinCosReducible(angle)))
+    {
+        return SinCosLanes(angle);
+    }
+    return SinCosReduced(angle);
+}
+
+/// SinCosW of two bodies' angles, their ranges tested at once (the same results).
+[[gnu::always_inline]] inline void SinCosW(RealW angleA, RealW angleB, RotW& qA, RotW& qB)
+{
+    if (!std::is_same_v<Real, float> ||
+        !AllLanes(SinCosReducible(angleA) & SinCosReducible(angleB)))
+    {
+        qA = SinCosW(angleA);
+        qB = SinCosW(angleB);
+        return;
+    }
+    qA = SinCosReduced(angleA);
+    qB = SinCosReduced(angleB);
 }
 
 } // namespace meff::detail
