@@ -10,6 +10,7 @@
 
 #include "meff/math.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -200,12 +201,19 @@ extern const SinCosConstantsW kSinCosW;
     const RealW sinR = r + r * r2 * (k0.sin1 + r2 * (k0.sin2 + r2 * k0.sin3));
     const RealW cosR = k0.one + r2 * (k0.cos1 + r2 * (k0.cos2 + r2 * (k0.cos3 + r2 * k0.cos4)));
 
-    // a = k·π/2 + r: quadrant k mod 4 swaps sine and cosine and sets their signs.
+    // a = k·π/2 + r: quadrant k mod 4 swaps sine and cosine and sets their signs (negating is
+    // flipping the sign bit: bit 1 of the quadrant shifted there, and xor).
+    using Bits = std::conditional_t<sizeof(Real) == 4, std::uint32_t, std::uint64_t>;
+    using BitsW = Bits __attribute__((vector_size(kLanes * sizeof(Real))));
     const IntW quadrant = __builtin_convertvector(k, IntW) & 3;
     const IntW swap = (quadrant & 1) != 0;
     const RealW s = swap ? cosR : sinR;
     const RealW c = swap ? sinR : cosR;
-    return {(quadrant & 2) != 0 ? -s : s, ((quadrant + 1) & 2) != 0 ? -c : c};
+    constexpr int kToSignBit = int(sizeof(Real)) * 8 - 2;
+    const auto sSign = std::bit_cast<BitsW>(quadrant & 2) << kToSignBit;
+    const auto cSign = std::bit_cast<BitsW>((quadrant + 1) & 2) << kToSignBit;
+    return {std::bit_cast<RealW>(std::bit_cast<BitsW>(s) ^ sSign),
+            std::bit_cast<RealW>(std::bit_cast<BitsW>(c) ^ cSign)};
 }
 
 /// Sine and cosine of every lane's angle at once, each within about an ulp of std::sin/std::cos.
