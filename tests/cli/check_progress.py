@@ -59,9 +59,9 @@ def files(folder):
 
 
 def untimed(text):
-    """The text with its decimal numbers and their padding masked: render and sweep print
-    wall-clock times."""
-    return re.sub(r" *\d+\.\d+", " #", text)
+    """The text with its numbers and their padding masked: render and sweep print wall-clock
+    times, and a time with no digits after the point ("25", as %g prints it) is one too."""
+    return re.sub(r" *\d+(\.\d+)?([eE][-+]?\d+)?", " #", text)
 
 
 def check(name, label, total, unit, arguments, out_folder=None, timed=False, head=None):
