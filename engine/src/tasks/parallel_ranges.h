@@ -6,7 +6,10 @@
 #include "meff/error.h"
 #include "meff/task_system.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <exception>
+#include <vector>
 
 namespace meff::detail
 {
@@ -90,6 +93,56 @@ void ForEachIndex(TaskSystem* tasks, int count, int minRange, F&& f)
                       f(i);
                   }
               });
+}
+
+/// The indices one piece of StableCompact hands out: fixed, so that the pieces (and what they
+/// count) are the same for any thread count.
+inline constexpr int kCompactPiece = 1024;
+
+/// A serial loop's `for (i < count) if (keep(i)) emit(i, kept++);` on `tasks`: every piece of
+/// kCompactPiece indices first counts what it keeps, then, from the count of the pieces before
+/// it, emits its kept indices with the positions the serial loop gives them. keep is called
+/// twice for each index, so it must answer the same both times and write, if anything, only
+/// what index i alone owns, the same both times; emit must only write what position and index
+/// own. `pieceCounts` is scratch. Returns the number kept.
+template <typename Keep, typename Emit>
+std::int32_t StableCompact(TaskSystem* tasks, int count, std::vector<std::int32_t>& pieceCounts,
+                           Keep&& keep, Emit&& emit)
+{
+    const int pieces = (count + kCompactPiece - 1) / kCompactPiece;
+    pieceCounts.resize(static_cast<std::size_t>(pieces));
+    ForEachIndex(tasks, pieces, 2,
+                 [&](int piece)
+                 {
+                     std::int32_t kept = 0;
+                     const int end = std::min(count, (piece + 1) * kCompactPiece);
+                     for (int i = piece * kCompactPiece; i < end; ++i)
+                     {
+                         kept += keep(i) ? 1 : 0;
+                     }
+                     pieceCounts[static_cast<std::size_t>(piece)] = kept;
+                 });
+    std::int32_t total = 0;
+    for (std::int32_t& n : pieceCounts)
+    {
+        const std::int32_t first = total;
+        total += n;
+        n = first;
+    }
+    ForEachIndex(tasks, pieces, 2,
+                 [&](int piece)
+                 {
+                     std::int32_t position = pieceCounts[static_cast<std::size_t>(piece)];
+                     const int end = std::min(count, (piece + 1) * kCompactPiece);
+                     for (int i = piece * kCompactPiece; i < end; ++i)
+                     {
+                         if (keep(i))
+                         {
+                             emit(i, position++);
+                         }
+                     }
+                 });
+    return total;
 }
 
 /// Threads that may run the world's work at once (worker indices 0 to this − 1).

@@ -9,6 +9,7 @@ void ColourContactSolver::Prepare(const IslandContacts& island, SolverData& data
 {
     m_count = island.contactIndices.size();
     m_blockSolver = data.step.solver.blockSolver;
+    m_tasks = data.tasks;
     if (m_solved.size() < m_count)
     {
         m_velocity.resize(m_count);
@@ -44,7 +45,7 @@ void ColourContactSolver::SolveVelocities(SolverData& data)
 
 void ColourContactSolver::CollectResults()
 {
-    m_lanes.CollectResults({m_solved.data(), m_count});
+    m_lanes.CollectResults({m_solved.data(), m_count}, m_tasks);
     for (const std::int32_t k : Overflow())
     {
         CollectContactResult(m_velocity[k], m_solved[k]);

@@ -45,6 +45,7 @@ class ColourContactSolver final : public ContactStage
     std::size_t m_count = 0;
     bool m_anyHitEvents = false;
     bool m_blockSolver = true;
+    TaskSystem* m_tasks = nullptr; ///< the world's threads of the last Prepare (CollectResults)
 };
 
 } // namespace meff::detail

@@ -36,6 +36,7 @@ void ColourJointSolver::Prepare(std::span<const std::int32_t> jointIndices,
     // Which joints the lanes take, and their bodies, on the threads: each joint writes only
     // itself and its own slots.
     const std::size_t count = jointIndices.size();
+    m_tasks = data.tasks;
     m_laneOf.resize(count);
     m_bodiesOf.resize(count);
     ForEachIndex(data.tasks, static_cast<int>(count), kMinLaneJointPicksPerTask,
@@ -56,23 +57,32 @@ void ColourJointSolver::Prepare(std::span<const std::int32_t> jointIndices,
                                           SolverMoves(b.invMass, b.invI)};
                      }
                  });
+    // The lane joints listed for the colouring in island order, on the threads.
+    m_candidates.resize(count);
+    m_candidateRevolutes.resize(count);
+    m_candidateBodies.resize(count);
+    const auto laneJoints = static_cast<std::size_t>(StableCompact(
+        data.tasks, static_cast<int>(count), m_pieceCounts,
+        [&](int k) { return m_laneOf[static_cast<std::size_t>(k)] != nullptr; },
+        [&](int k, std::int32_t position)
+        {
+            const auto i = static_cast<std::size_t>(position);
+            const auto j = static_cast<std::size_t>(k);
+            m_candidates[i] = &joints[jointIndices[j]].joint;
+            m_candidateRevolutes[i] = m_laneOf[j];
+            m_candidateBodies[i] = m_bodiesOf[j];
+        }));
+    m_candidates.resize(laneJoints);
+    m_candidateRevolutes.resize(laneJoints);
+    m_candidateBodies.resize(laneJoints);
     // Then in island order on this thread: the other joints prepared one by one (their warm
-    // start moves the bodies), the lane joints listed for the colouring.
+    // start moves the bodies).
     m_sequential.clear();
-    m_candidates.clear();
-    m_candidateRevolutes.clear();
-    m_candidateBodies.clear();
-    for (std::size_t k = 0; k < count; ++k)
+    for (std::size_t k = 0; k < count && m_sequential.size() < count - laneJoints; ++k)
     {
-        Joint& joint = joints[jointIndices[k]].joint;
-        if (m_laneOf[k] != nullptr)
+        if (m_laneOf[k] == nullptr)
         {
-            m_candidates.push_back(&joint);
-            m_candidateRevolutes.push_back(m_laneOf[k]);
-            m_candidateBodies.push_back(m_bodiesOf[k]);
-        }
-        else
-        {
+            Joint& joint = joints[jointIndices[k]].joint;
             PrepareSequentialJoint(joint, bodies, data);
             m_sequential.push_back(&joint);
         }
@@ -104,7 +114,7 @@ void ColourJointSolver::StoreImpulses()
 {
     if (m_lanesInUse)
     {
-        m_lanes.StoreImpulses();
+        m_lanes.StoreImpulses(m_tasks);
     }
 }
 

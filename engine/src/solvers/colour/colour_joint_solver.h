@@ -41,8 +41,10 @@ class ColourJointSolver final : public JointStage
     /// While preparing, by island position: the joint's lane revolute (or null) and its bodies.
     std::vector<RevoluteJoint*> m_laneOf;
     std::vector<ConstraintBodies> m_bodiesOf;
+    std::vector<std::int32_t> m_pieceCounts; ///< StableCompact's scratch
     bool m_lanesInUse = false;
     RevoluteLanes m_lanes;
+    TaskSystem* m_tasks = nullptr; ///< the world's threads of the last Prepare (StoreImpulses)
 };
 
 } // namespace meff::detail

@@ -273,28 +273,30 @@ void ContactLanes::SolveVelocities(SolverData& data)
     }
 }
 
-void ContactLanes::CollectResults(std::span<SolvedContact> solved) const
+void ContactLanes::CollectResults(std::span<SolvedContact> solved, TaskSystem* tasks) const
 {
-    for (int c = 0; c < GroupColourCount(); ++c)
-    {
-        const std::int32_t end = m_colouring.colourStarts[c + 1];
-        std::int32_t first = m_colouring.colourStarts[c];
-        for (std::int32_t i = m_groupStarts[c]; i < m_groupStarts[c + 1]; ++i, first += kLanes)
-        {
-            const ContactVelocityGroup& group = m_velocityGroups[i];
-            const bool rolling = (m_headers[i].extras & ContactGroupHeader::kRolling) != 0;
-            for (int l = 0; l < kLanes && first + l < end; ++l)
-            {
-                SolvedContact& s = solved[m_colouring.order[first + l]];
-                s.rollingImpulse = rolling ? m_extras[i].rollingImpulse[l] : Real(0);
-                for (int j = 0; j < s.pointCount; ++j)
-                {
-                    s.normalImpulse[j] = group.normalImpulse[j][l];
-                    s.tangentImpulse[j] = group.tangentImpulse[j][l];
-                }
-            }
-        }
-    }
+    // Each group writes only its own contacts' SolvedContact: any thread may take any group.
+    ForEachGroupWithColour(m_groupStarts, tasks, kMinGroupsPerTask,
+                           [&](std::int32_t i, int c)
+                           {
+                               const std::int32_t end = m_colouring.colourStarts[c + 1];
+                               const std::int32_t first =
+                                   m_colouring.colourStarts[c] + (i - m_groupStarts[c]) * kLanes;
+                               const ContactVelocityGroup& group = m_velocityGroups[i];
+                               const bool rolling =
+                                   (m_headers[i].extras & ContactGroupHeader::kRolling) != 0;
+                               for (int l = 0; l < kLanes && first + l < end; ++l)
+                               {
+                                   SolvedContact& s = solved[m_colouring.order[first + l]];
+                                   s.rollingImpulse =
+                                       rolling ? m_extras[i].rollingImpulse[l] : Real(0);
+                                   for (int j = 0; j < s.pointCount; ++j)
+                                   {
+                                       s.normalImpulse[j] = group.normalImpulse[j][l];
+                                       s.tangentImpulse[j] = group.tangentImpulse[j][l];
+                                   }
+                               }
+                           });
 }
 
 Real ContactLanes::SolvePositions(SolverData& data)

@@ -104,8 +104,9 @@ class ContactLanes
     /// One velocity sweep of the lanes, colour after colour (a colour's groups on the
     /// world's threads).
     void SolveVelocities(SolverData& data);
-    /// Copies the lanes' accumulated impulses into their contacts' `solved[k]`.
-    void CollectResults(std::span<SolvedContact> solved) const;
+    /// Copies the lanes' accumulated impulses into their contacts' `solved[k]`, groups spread
+    /// over `tasks` (null: this thread).
+    void CollectResults(std::span<SolvedContact> solved, TaskSystem* tasks) const;
     /// One position sweep of the lanes; returns the smallest separation seen (≤ 0).
     Real SolvePositions(SolverData& data);
 

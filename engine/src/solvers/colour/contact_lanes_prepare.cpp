@@ -401,26 +401,14 @@ bool ContactLanes::Prepare(const IslandContacts& island, std::span<SolvedContact
 
     // Groups only read the bodies here, so every group may be prepared at once.
     std::atomic<bool> hitEvents{false};
-    ForRanges(data.tasks, groups, kMinGroupsPerTask,
-              [&](int begin, int end, int)
-              {
-                  auto colour = static_cast<int>(
-                      std::upper_bound(m_groupStarts.begin(), m_groupStarts.end(), begin) -
-                      m_groupStarts.begin() - 1);
-                  bool any = false;
-                  for (std::int32_t i = begin; i < end; ++i)
-                  {
-                      while (i >= m_groupStarts[colour + 1])
-                      {
-                          ++colour;
-                      }
-                      any = PrepareGroup(i, colour, island, solved, data) || any;
-                  }
-                  if (any)
-                  {
-                      hitEvents.store(true, std::memory_order_relaxed);
-                  }
-              });
+    ForEachGroupWithColour(m_groupStarts, data.tasks, kMinGroupsPerTask,
+                           [&](std::int32_t i, int colour)
+                           {
+                               if (PrepareGroup(i, colour, island, solved, data))
+                               {
+                                   hitEvents.store(true, std::memory_order_relaxed);
+                               }
+                           });
     return hitEvents.load(std::memory_order_relaxed);
 }
 

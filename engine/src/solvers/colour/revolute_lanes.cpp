@@ -156,21 +156,9 @@ void RevoluteLanes::Prepare(std::span<RevoluteJoint* const> joints,
     m_groupLargestSquared.resize(static_cast<std::size_t>(groups));
 
     // Packing and the rows only read the bodies, so every group may be prepared at once.
-    ForRanges(data.tasks, groups, kMinJointGroupsPerTask,
-              [&](int begin, int end, int)
-              {
-                  auto colour = static_cast<int>(
-                      std::upper_bound(m_groupStarts.begin(), m_groupStarts.end(), begin) -
-                      m_groupStarts.begin() - 1);
-                  for (std::int32_t i = begin; i < end; ++i)
-                  {
-                      while (i >= m_groupStarts[colour + 1])
-                      {
-                          ++colour;
-                      }
-                      PrepareGroup(i, colour, joints, data);
-                  }
-              });
+    ForEachGroupWithColour(m_groupStarts, data.tasks, kMinJointGroupsPerTask,
+                           [&](std::int32_t i, int colour)
+                           { PrepareGroup(i, colour, joints, data); });
     if (data.step.solver.warmStarting)
     {
         for (int c = 0; c < m_colouring.ColourCount(); ++c)
@@ -192,17 +180,22 @@ void RevoluteLanes::SolveVelocities(const SolverData& data)
     }
 }
 
-void RevoluteLanes::StoreImpulses() const
+void RevoluteLanes::StoreImpulses(TaskSystem* tasks) const
 {
-    for (std::size_t i = 0; i < m_sources.size(); ++i)
-    {
-        if (RevoluteJoint* joint = m_sources[i])
-        {
-            const RevoluteJointGroup& g = m_groups[i / kLanes];
-            const int l = static_cast<int>(i % kLanes);
-            joint->impulse = {g.impulse.x[l], g.impulse.y[l]};
-        }
-    }
+    // Each group writes only its own joints: any thread may take any group.
+    ForEachIndex(tasks, static_cast<int>(m_groups.size()), kMinJointGroupsPerTask,
+                 [&](int i)
+                 {
+                     const RevoluteJointGroup& g = m_groups[static_cast<std::size_t>(i)];
+                     for (int l = 0; l < kLanes; ++l)
+                     {
+                         if (RevoluteJoint* joint =
+                                 m_sources[static_cast<std::size_t>(i) * kLanes + l])
+                         {
+                             joint->impulse = {g.impulse.x[l], g.impulse.y[l]};
+                         }
+                     }
+                 });
 }
 
 bool RevoluteLanes::SolvePositions(const SolverData& data)

@@ -64,8 +64,9 @@ class RevoluteLanes
     std::span<const std::int32_t> Overflow() const { return m_colouring.overflow; }
     /// One velocity sweep, colour after colour (a colour's groups on the world's threads).
     void SolveVelocities(const SolverData& data);
-    /// Copies the lanes' accumulated impulses back into the joints.
-    void StoreImpulses() const;
+    /// Copies the lanes' accumulated impulses back into the joints, groups spread over `tasks`
+    /// (null: this thread).
+    void StoreImpulses(TaskSystem* tasks) const;
     /// One position sweep, as SolveVelocities; true when every anchor gap is within linearSlop.
     bool SolvePositions(const SolverData& data);
 

@@ -61,6 +61,29 @@ void ForEachGroupOfColour(const std::vector<std::int32_t>& starts, int c, TaskSy
               });
 }
 
+/// Runs f(group, colour) on every group of every colour ([0, starts.back())), at least
+/// `minGroups` to a range, on `tasks` (null: this thread): for what each group does alone
+/// (preparing its rows, copying out its impulses), which needs no colour order.
+template <typename F>
+void ForEachGroupWithColour(const std::vector<std::int32_t>& starts, TaskSystem* tasks,
+                            int minGroups, F&& f)
+{
+    ForRanges(tasks, starts.back(), minGroups,
+              [&](int begin, int end, int)
+              {
+                  auto colour = static_cast<int>(
+                      std::upper_bound(starts.begin(), starts.end(), begin) - starts.begin() - 1);
+                  for (std::int32_t i = begin; i < end; ++i)
+                  {
+                      while (i >= starts[colour + 1])
+                      {
+                          ++colour;
+                      }
+                      f(i, colour);
+                  }
+              });
+}
+
 /// The same on the world's threads of `data` (data.tasks, data.discardIndex).
 template <typename Solve>
 void ForEachGroupOfColour(const std::vector<std::int32_t>& starts, int c, const SolverData& data,

@@ -8,6 +8,7 @@
 #include "tasks/parallel_ranges.h"
 #include "meff/error.h"
 
+#include <atomic>
 #include <string>
 
 namespace meff::detail
@@ -100,28 +101,40 @@ void BuildIsland(SolverWorld& world, std::int32_t seed, Island& island)
 bool BuildWorldIsland(SolverWorld& world, Island& island)
 {
     island.Clear();
-    for (std::size_t b = 0; b < world.bodies.size(); ++b)
+    // Three stable compactions on the world's threads (StableCompact): the same arrays in the
+    // same order as one walk through them, whatever the threads.
+    std::atomic<bool> asleep{false};
+    const auto bodyCount = static_cast<int>(world.bodies.size());
+    island.bodies.resize(world.bodies.size());
+    const std::int32_t bodies = StableCompact(
+        world.tasks, bodyCount, island.pieceCounts,
+        [&](int b)
+        {
+            Body& body = world.bodies[static_cast<std::size_t>(b)];
+            if (!body.alive)
+            {
+                return false;
+            }
+            const bool moves = body.type != BodyType::Static;
+            // A sleeping body joins only the islands that reach it: that takes the search.
+            if (moves && !body.awake)
+            {
+                asleep.store(true, std::memory_order_relaxed);
+            }
+            body.islandFlag = moves;
+            // Static bodies are only read, by the contacts and joints that name them: one
+            // without either (a tile no one touches) costs the solve nothing, as in the search.
+            return moves || body.contactList != kNullIndex || body.jointList != kNullIndex;
+        },
+        [&](int b, std::int32_t position)
+        {
+            world.bodies[static_cast<std::size_t>(b)].islandIndex = position;
+            island.bodies[static_cast<std::size_t>(position)] = b;
+        });
+    island.bodies.resize(static_cast<std::size_t>(bodies));
+    if (asleep.load(std::memory_order_relaxed))
     {
-        Body& body = world.bodies[b];
-        if (!body.alive)
-        {
-            continue;
-        }
-        const bool moves = body.type != BodyType::Static;
-        // A sleeping body joins only the islands that reach it: that takes the search.
-        if (moves && !body.awake)
-        {
-            return false;
-        }
-        body.islandFlag = moves;
-        // Static bodies are only read, by the contacts and joints that name them: one
-        // without either (a tile no one touches) costs the solve nothing, as in the search.
-        if (!moves && body.contactList == kNullIndex && body.jointList == kNullIndex)
-        {
-            continue;
-        }
-        body.islandIndex = static_cast<std::int32_t>(island.bodies.size());
-        island.bodies.push_back(static_cast<std::int32_t>(b));
+        return false;
     }
     // Every contact has a dynamic body (AddPair refuses pairs without one) and every joint
     // gathered here a moving one, so all are reached, as the search from every awake body
@@ -130,23 +143,31 @@ bool BuildWorldIsland(SolverWorld& world, Island& island)
     // this order, and the oldest-first order colours joint_grid's net so that it flails more
     // (its largest gap to Box2D's order grows from 28 m to 76 m, and the broad phase's work
     // doubles).
-    for (std::size_t c = world.contacts.size(); c-- > 0;)
-    {
-        const Contact& contact = world.contacts[c];
-        if (contact.alive && contact.IsSolid())
+    const auto contactCount = static_cast<int>(world.contacts.size());
+    island.contacts.resize(world.contacts.size());
+    const std::int32_t contacts = StableCompact(
+        world.tasks, contactCount, island.pieceCounts,
+        [&](int r)
         {
-            island.contacts.push_back(static_cast<std::int32_t>(c));
-        }
-    }
-    for (std::size_t j = world.joints.size(); j-- > 0;)
-    {
-        const JointSlot& slot = world.joints[j];
-        if (slot.alive && (world.bodies[slot.joint.bodyA].type != BodyType::Static ||
-                           world.bodies[slot.joint.bodyB].type != BodyType::Static))
+            const Contact& contact = world.contacts[static_cast<std::size_t>(contactCount - 1 - r)];
+            return contact.alive && contact.IsSolid();
+        },
+        [&](int r, std::int32_t position)
+        { island.contacts[static_cast<std::size_t>(position)] = contactCount - 1 - r; });
+    island.contacts.resize(static_cast<std::size_t>(contacts));
+    const auto jointCount = static_cast<int>(world.joints.size());
+    island.joints.resize(world.joints.size());
+    const std::int32_t joints = StableCompact(
+        world.tasks, jointCount, island.pieceCounts,
+        [&](int r)
         {
-            island.joints.push_back(static_cast<std::int32_t>(j));
-        }
-    }
+            const JointSlot& slot = world.joints[static_cast<std::size_t>(jointCount - 1 - r)];
+            return slot.alive && (world.bodies[slot.joint.bodyA].type != BodyType::Static ||
+                                  world.bodies[slot.joint.bodyB].type != BodyType::Static);
+        },
+        [&](int r, std::int32_t position)
+        { island.joints[static_cast<std::size_t>(position)] = jointCount - 1 - r; });
+    island.joints.resize(static_cast<std::size_t>(joints));
     return true;
 }
 
@@ -173,26 +194,43 @@ void FinishBodies(SolverWorld& world, const Island& island, TaskSystem* tasks)
     {
         return; // an earlier island failed (reported): the step writes nothing more
     }
-    // Checked on the calling thread, in island order: the error names the first bad body
-    // whatever the threads, and no body is written before all are known good.
-    for (std::size_t i = 0; i < island.bodies.size(); ++i)
-    {
-        const Position& p = island.positions[i];
-        const Velocity& v = island.velocities[i];
-        if (!p.c.IsValid() || !meff::IsValid(p.a) || !v.v.IsValid() || !meff::IsValid(v.w))
+    // Checked on the threads, each range up to its first bad body; the error names the first
+    // bad body in island order whatever the threads (the smallest such index), and no body is
+    // written before all are known good.
+    const auto count = static_cast<std::int32_t>(island.bodies.size());
+    std::atomic<std::int32_t> firstBad{count};
+    ForRanges(
+        tasks, count, kMinBodiesPerTask,
+        [&](int begin, int end, int)
         {
-            const std::int32_t bodyIndex = island.bodies[i];
-            if (world.failed != nullptr)
+            for (std::int32_t i = begin; i < end; ++i)
             {
-                *world.failed = true;
+                const Position& p = island.positions[static_cast<std::size_t>(i)];
+                const Velocity& v = island.velocities[static_cast<std::size_t>(i)];
+                if (!p.c.IsValid() || !meff::IsValid(p.a) || !v.v.IsValid() || !meff::IsValid(v.w))
+                {
+                    std::int32_t seen = firstBad.load(std::memory_order_relaxed);
+                    while (i < seen &&
+                           !firstBad.compare_exchange_weak(seen, i, std::memory_order_relaxed))
+                    {
+                    }
+                    return;
+                }
             }
-            ReportError(SimulationError("step " + std::to_string(world.stepCount) + ": body " +
-                                            std::to_string(bodyIndex) + " (user data " +
-                                            std::to_string(world.bodies[bodyIndex].userData) +
-                                            ") has a non-finite position or velocity",
-                                        world.stepCount, bodyIndex));
-            return;
+        });
+    if (const std::int32_t bad = firstBad.load(std::memory_order_relaxed); bad < count)
+    {
+        const std::int32_t bodyIndex = island.bodies[static_cast<std::size_t>(bad)];
+        if (world.failed != nullptr)
+        {
+            *world.failed = true;
         }
+        ReportError(SimulationError("step " + std::to_string(world.stepCount) + ": body " +
+                                        std::to_string(bodyIndex) + " (user data " +
+                                        std::to_string(world.bodies[bodyIndex].userData) +
+                                        ") has a non-finite position or velocity",
+                                    world.stepCount, bodyIndex));
+        return;
     }
     // Each body is its own: any thread may take any range of them.
     ForEachIndex(tasks, static_cast<int>(island.bodies.size()), kMinBodiesPerTask,

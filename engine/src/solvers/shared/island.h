@@ -23,12 +23,13 @@ namespace meff::detail
 
 struct Island
 {
-    std::vector<std::int32_t> bodies;   ///< world body indices, solver order
-    std::vector<std::int32_t> contacts; ///< world contact indices, solver order
-    std::vector<std::int32_t> joints;   ///< world joint indices, solver order
-    std::vector<Position> positions;    ///< by solver index
-    std::vector<Velocity> velocities;   ///< by solver index
-    std::vector<std::int32_t> stack;    ///< depth-first search scratch
+    std::vector<std::int32_t> bodies;      ///< world body indices, solver order
+    std::vector<std::int32_t> contacts;    ///< world contact indices, solver order
+    std::vector<std::int32_t> joints;      ///< world joint indices, solver order
+    std::vector<Position> positions;       ///< by solver index
+    std::vector<Velocity> velocities;      ///< by solver index
+    std::vector<std::int32_t> stack;       ///< depth-first search scratch
+    std::vector<std::int32_t> pieceCounts; ///< BuildWorldIsland's scratch (StableCompact)
 
     void Clear()
     {

@@ -97,7 +97,7 @@ void SolveIsland(SolverWorld& world, Island& island, const StepContext& step,
         contacts.SolveVelocities(data);
     }
     contacts.CollectResults();
-    StoreContactImpulses(contacts.SolvedContacts(), world.contacts);
+    StoreContactImpulses(contacts.SolvedContacts(), world.contacts, world.tasks);
     joints.StoreImpulses();
 
     IntegratePositions(island, step, world.tasks);
@@ -143,18 +143,23 @@ void IntegratePositions(Island& island, const StepContext& step, TaskSystem* tas
                  });
 }
 
-void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts)
+void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts,
+                          TaskSystem* tasks)
 {
-    for (const SolvedContact& s : solved)
-    {
-        contacts[s.contactIndex].rollingImpulse = s.rollingImpulse;
-        Manifold& manifold = contacts[s.contactIndex].manifold;
-        for (int j = 0; j < s.pointCount; ++j)
-        {
-            manifold.points[j].normalImpulse = s.normalImpulse[j];
-            manifold.points[j].tangentImpulse = s.tangentImpulse[j];
-        }
-    }
+    // Each solved contact writes only its own contact: any thread may take any range of them
+    // (a contact's store costs about what a body's copy does).
+    ForEachIndex(tasks, static_cast<int>(solved.size()), kMinBodiesPerTask,
+                 [&](int i)
+                 {
+                     const SolvedContact& s = solved[static_cast<std::size_t>(i)];
+                     contacts[s.contactIndex].rollingImpulse = s.rollingImpulse;
+                     Manifold& manifold = contacts[s.contactIndex].manifold;
+                     for (int j = 0; j < s.pointCount; ++j)
+                     {
+                         manifold.points[j].normalImpulse = s.normalImpulse[j];
+                         manifold.points[j].tangentImpulse = s.tangentImpulse[j];
+                     }
+                 });
 }
 
 } // namespace meff::detail

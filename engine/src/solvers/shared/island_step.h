@@ -93,7 +93,9 @@ void IntegrateVelocities(SolverWorld& world, Island& island, const StepContext& 
 /// Moves every body of the island by h·v (its motion clamped to Tolerances::maxTranslation
 /// and maxRotation per step), bodies spread over `tasks` (null: the calling thread alone).
 void IntegratePositions(Island& island, const StepContext& step, TaskSystem* tasks = nullptr);
-/// Writes each solved contact's accumulated impulses into its manifold: next step's warm start.
-void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts);
+/// Writes each solved contact's accumulated impulses into its manifold (next step's warm
+/// start), contacts spread over `tasks` (null: the calling thread alone).
+void StoreContactImpulses(std::span<const SolvedContact> solved, std::span<Contact> contacts,
+                          TaskSystem* tasks = nullptr);
 
 } // namespace meff::detail
