@@ -2,7 +2,11 @@
 // SPDX-FileCopyrightText: 2026 the meff authors
 #include "solvers/soft_step/soft_joint_tree.h"
 
+#include "solvers/shared/island.h"
+#include "tasks/parallel_ranges.h"
+
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <variant>
 
@@ -82,25 +86,39 @@ Block Inverse(const Block& m, int n)
 } // namespace
 
 int SoftJointTree::Select(const std::vector<Joint*>& joints, std::vector<SoftJointFrame>& frames,
-                          std::size_t bodyCount)
+                          std::size_t bodyCount, TaskSystem* tasks)
 {
     // The same joints on the same bodies as last time (a net or a chain from step to step):
     // the same choice, without the search (it cost a joint net of 20,000 hinges 6 % of its
-    // step).
-    bool same = m_keys.size() == joints.size() && m_marks.size() == joints.size();
-    for (std::size_t k = 0; same && k < joints.size(); ++k)
+    // step). Each joint reads and writes only its own key, mark and frame (and costs about
+    // what a body's copy does).
+    const auto count = static_cast<int>(joints.size());
+    std::atomic<bool> same{m_keys.size() == joints.size() && m_marks.size() == joints.size()};
+    if (same.load(std::memory_order_relaxed))
     {
-        same = m_keys[k] == KeyOf(*joints[k], frames[k]);
+        ForRanges(tasks, count, kMinBodiesPerTask,
+                  [&](int begin, int end, int)
+                  {
+                      for (auto k = static_cast<std::size_t>(begin);
+                           k < static_cast<std::size_t>(end); ++k)
+                      {
+                          if (!(m_keys[k] == KeyOf(*joints[k], frames[k])))
+                          {
+                              same.store(false, std::memory_order_relaxed);
+                              return;
+                          }
+                      }
+                  });
     }
-    if (same)
+    if (same.load(std::memory_order_relaxed))
     {
-        int marked = 0;
-        for (std::size_t k = 0; k < joints.size(); ++k)
-        {
-            frames[k].pointInTree = m_marks[k] != 0;
-            marked += m_marks[k];
-        }
-        return marked;
+        ForEachIndex(tasks, count, kMinBodiesPerTask,
+                     [&](int k)
+                     {
+                         const auto i = static_cast<std::size_t>(k);
+                         frames[i].pointInTree = m_marks[i] != 0;
+                     });
+        return m_marked;
     }
     m_keys.clear();
     m_marks.clear();
@@ -161,6 +179,7 @@ int SoftJointTree::Select(const std::vector<Joint*>& joints, std::vector<SoftJoi
         marked += frames[k].pointInTree ? 1 : 0;
         m_marks.push_back(frames[k].pointInTree ? 1 : 0);
     }
+    m_marked = marked;
     return marked;
 }
 

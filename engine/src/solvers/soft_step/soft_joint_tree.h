@@ -39,6 +39,7 @@
 
 #include "joints/joint.h"
 #include "solvers/soft_step/soft_joint.h"
+#include "meff/task_system.h"
 
 #include <array>
 #include <cstdint>
@@ -60,9 +61,10 @@ class SoftJointTree
 
     /// Marks SoftJointFrame::pointInTree on the revolute joints among `joints` (frames[k] is
     /// joints[k]'s) that the tree solves; `bodyCount` is the island's solver index count.
-    /// Returns how many were marked.
+    /// Returns how many were marked. Keeping last step's choice is checked and applied with
+    /// the joints spread over `tasks` (null: this thread).
     int Select(const std::vector<Joint*>& joints, std::vector<SoftJointFrame>& frames,
-               std::size_t bodyCount);
+               std::size_t bodyCount, TaskSystem* tasks = nullptr);
 
     /// Orders the marked joints and their bodies for the factorisation; frames must stay where
     /// they are until the step ends.
@@ -119,6 +121,7 @@ class SoftJointTree
     /// Last Select's inputs and choices (joints[k]'s key and mark).
     std::vector<SelectionKey> m_keys;
     std::vector<std::uint8_t> m_marks;
+    int m_marked = 0; ///< how many of m_marks are set
     // Scratch of Select and Build.
     std::vector<std::int32_t> m_union, m_jointRoot;
     std::vector<std::uint8_t> m_bad, m_cycle;

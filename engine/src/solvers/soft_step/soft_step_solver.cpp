@@ -259,7 +259,7 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
     const std::size_t bodyCount = m_bodies.start.size();
     if (m_context.step->solver.softStep.jointTrees)
     {
-        m_tree.Select(m_joints, m_frames, bodyCount);
+        m_tree.Select(m_joints, m_frames, bodyCount, m_context.tasks);
     }
     std::size_t laneCandidates = 0;
     for (std::size_t k = 0; k < m_joints.size(); ++k)
