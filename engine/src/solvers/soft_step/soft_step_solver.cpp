@@ -261,13 +261,25 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
     {
         m_tree.Select(m_joints, m_frames, bodyCount, m_context.tasks);
     }
-    std::size_t laneCandidates = 0;
-    for (std::size_t k = 0; k < m_joints.size(); ++k)
-    {
-        // A tree's joints are solved with their tree, not in lanes.
-        m_candidates[k] = m_frames[k].pointInTree ? nullptr : m_candidates[k];
-        laneCandidates += m_candidates[k] != nullptr ? 1 : 0;
-    }
+    // The lane candidates and their positions in island order, on the threads; a tree's
+    // joints are solved with their tree, not in lanes.
+    m_laneJoints.resize(count);
+    m_laneRows.resize(count);
+    const auto laneCandidates = static_cast<std::size_t>(StableCompact(
+        m_context.tasks, static_cast<int>(count), m_pieceCounts,
+        [&](int k)
+        {
+            const auto i = static_cast<std::size_t>(k);
+            return m_candidates[i] != nullptr && !m_frames[i].pointInTree;
+        },
+        [&](int k, std::int32_t position)
+        {
+            m_laneJoints[static_cast<std::size_t>(position)] =
+                m_candidates[static_cast<std::size_t>(k)];
+            m_laneRows[static_cast<std::size_t>(position)] = k;
+        }));
+    m_laneJoints.resize(laneCandidates);
+    m_laneRows.resize(laneCandidates);
     SplitLaneJoints(laneCandidates >= kMinSoftLaneRows);
     m_tree.Build(m_joints, m_frames, bodyCount);
     // A tree's plain revolute joints have nothing left to solve one by one.
@@ -283,18 +295,10 @@ void SoftStepSolver::PrepareJoints(SolverWorld& world, const Island& island, Rea
 
 void SoftStepSolver::SplitLaneJoints(bool useLanes)
 {
-    m_laneJoints.clear();
-    m_laneRows.clear();
-    if (useLanes)
+    if (!useLanes)
     {
-        for (std::size_t k = 0; k < m_joints.size(); ++k)
-        {
-            if (RevoluteJoint* revolute = m_candidates[k])
-            {
-                m_laneJoints.push_back(revolute);
-                m_laneRows.push_back(static_cast<std::int32_t>(k));
-            }
-        }
+        m_laneJoints.clear();
+        m_laneRows.clear();
     }
     m_revolutes.Prepare(m_laneJoints, m_frames, m_laneRows, m_bodies.DiscardIndex(),
                         m_context.tasks);
@@ -304,14 +308,14 @@ void SoftStepSolver::SplitLaneJoints(bool useLanes)
     }
     // The joints the lanes took leave the scalar list; the others, and the lane joints no
     // colour had room for, stay in island order.
-    m_inLanes.assign(m_joints.size(), 1);
+    m_inLanes.assign(m_joints.size(), 0);
+    for (const std::int32_t k : m_laneRows)
+    {
+        m_inLanes[static_cast<std::size_t>(k)] = 1;
+    }
     for (const std::int32_t i : m_revolutes.Overflow())
     {
         m_inLanes[m_laneRows[i]] = 0;
-    }
-    for (std::size_t k = 0; k < m_joints.size(); ++k)
-    {
-        m_inLanes[k] = m_inLanes[k] != 0 && m_candidates[k] != nullptr ? 1 : 0;
     }
     std::size_t kept = 0;
     for (std::size_t k = 0; k < m_joints.size(); ++k)

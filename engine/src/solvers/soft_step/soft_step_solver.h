@@ -65,7 +65,8 @@ class SoftStepSolver final : public Solver
   private:
     void SolveIsland(SolverWorld& world, Island& island, const StepContext& step);
     void PrepareJoints(SolverWorld& world, const Island& island, Real warmScale);
-    /// With `useLanes`, moves the plain revolute joints of the prepared joints to the lanes.
+    /// With `useLanes`, moves the lane candidates (m_laneJoints, at m_laneRows of the prepared
+    /// joints) to the lanes; without, leaves every joint to the scalar rows.
     void SplitLaneJoints(bool useLanes);
     void SubStep(bool first, const StepContext& step);
     /// Scales every accumulated impulse of the island (contacts and joints).
@@ -100,8 +101,9 @@ class SoftStepSolver final : public Solver
     std::vector<RevoluteJoint*> m_laneJoints;
     std::vector<std::int32_t> m_laneRows;
     std::vector<std::uint8_t> m_inLanes;
-    std::vector<Velocity> m_pseudo; ///< the real velocities while CorrectJoints runs
-    std::vector<Velocity> m_before; ///< the velocities before a relax sweep
+    std::vector<std::int32_t> m_pieceCounts; ///< StableCompact's scratch
+    std::vector<Velocity> m_pseudo;          ///< the real velocities while CorrectJoints runs
+    std::vector<Velocity> m_before;          ///< the velocities before a relax sweep
 };
 
 /// The soft coefficients of one step's sub-steps from the settings (SoftStepSettings): contact
