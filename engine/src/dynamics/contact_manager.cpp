@@ -461,78 +461,72 @@ void CollideSerial(WorldState& world)
     }
 }
 
-/// The threaded Collide's first pass, in list order: the contacts listed, and filtered, since
-/// the user's filter is called on this thread in the serial walk's order.
-void ListContacts(WorldState& world, std::vector<CollideEntry>& entries)
+/// The threaded Collide's list, in list order. Read: the contacts' list links only, so that it
+/// runs beside DecideAndCompute, which writes the rest of the contacts. Written: `order`, sized
+/// to the contact count before.
+void ListContacts(const WorldState& world, std::vector<std::int32_t>& order)
 {
-    entries.clear();
-    for (std::int32_t c = world.contactList; c != kNullIndex;)
+    std::size_t i = 0;
+    for (std::int32_t c = world.contactList; c != kNullIndex; c = world.contacts[c].next)
     {
-        Contact& contact = world.contacts[c];
-        const bool passes = PassesFilter(world, contact);
-        entries.push_back({c, passes ? CollideAction::Pending : CollideAction::Destroy, false});
-        c = contact.next;
+        order[i++] = c;
     }
 }
 
-/// The second pass, on the threads: each contact that passed the filter decided, its manifold
-/// kept or computed afresh. Read: the bodies, shapes and fat boxes, which nothing changes until
-/// the third pass. Written: each range its own entries and contacts. A fresh manifold that
-/// leaves the touching state as it was is all done here (ApplyContact then only clears
-/// Disabled: no wake, no event, and no pre-solve callback on the threads), and becomes Keep, so
-/// that the third pass, on the calling thread, is left only the contacts that begin or end
-/// touching, those destroyed and those found asleep.
-void DecideAndCompute(WorldState& world, std::vector<CollideEntry>& entries)
+/// Decides a contact (not flagged for filtering) and computes or keeps its manifold, on the
+/// threads. Read: the bodies, shapes and fat boxes, which nothing changes until
+/// ApplyListedWork. Written: the contact (all but its list links) and its work. A fresh
+/// manifold that leaves the touching state as it was is all done here (ApplyContact then only
+/// clears Disabled: no wake, no event, and no pre-solve callback on the threads), and becomes
+/// Keep, so that ApplyListedWork, on the calling thread, is left only the contacts that begin
+/// or end touching, those destroyed, those found asleep and those flagged for filtering.
+[[gnu::always_inline]] inline CollideWork DecideAndCompute(const WorldState& world,
+                                                           Contact& contact, Real recycleDistance)
 {
-    const Real recycleDistance = RecycleDistance(world);
-    ForEachIndex(world.tasks, static_cast<int>(entries.size()), kMinContactsPerTask,
-                 [&world, &entries, recycleDistance](int i)
-                 {
-                     CollideEntry& entry = entries[static_cast<std::size_t>(i)];
-                     if (entry.action != CollideAction::Pending)
-                     {
-                         return;
-                     }
-                     Contact& contact = world.contacts[entry.contact];
-                     entry.action = DecideActive(world, contact, recycleDistance);
-                     if (entry.action == CollideAction::Keep)
-                     {
-                         KeepManifold(contact); // with a pre-solve callback, Collide is serial
-                     }
-                     else if (entry.action == CollideAction::Update)
-                     {
-                         entry.touching = ComputeContact(world, contact);
-                         if (entry.touching == contact.IsTouching())
-                         {
-                             KeepManifold(contact); // ApplyContact's only change to it
-                             entry.action = CollideAction::Keep;
-                         }
-                     }
-                 });
+    CollideWork work{DecideActive(world, contact, recycleDistance), false};
+    if (work.action == CollideAction::Keep)
+    {
+        KeepManifold(contact); // with a pre-solve callback, Collide is serial
+    }
+    else if (work.action == CollideAction::Update)
+    {
+        work.touching = ComputeContact(world, contact);
+        if (work.touching == contact.IsTouching())
+        {
+            KeepManifold(contact); // ApplyContact's only change to it
+            work.action = CollideAction::Keep;
+        }
+    }
+    return work;
 }
 
-/// The third pass, in list order, so that wakes, events and their order are the serial walk's.
-/// A contact found asleep in the second pass is decided again here, where the serial walk would
-/// have decided it: an earlier contact that began or ended touching may have woken a body.
-void ApplyListedWork(WorldState& world, const std::vector<CollideEntry>& entries)
+/// The last pass, in list order, so that filtering, wakes, events and their order are the
+/// serial walk's. A contact found asleep on the threads is decided again here, where the
+/// serial walk would have decided it: an earlier contact that began or ended touching may have
+/// woken a body. A contact flagged for filtering is filtered, decided and done here, as the
+/// serial walk does it (the user's filter is called on this thread, in list order).
+void ApplyListedWork(WorldState& world, const std::vector<std::int32_t>& order,
+                     const std::vector<CollideWork>& work)
 {
     const Real recycleDistance = RecycleDistance(world);
-    for (const CollideEntry& entry : entries)
+    for (const std::int32_t c : order)
     {
-        switch (entry.action)
+        const CollideWork& done = work[static_cast<std::size_t>(c)];
+        switch (done.action)
         {
         case CollideAction::Update:
-            ApplyContact(world, entry.contact, entry.touching);
+            ApplyContact(world, c, done.touching);
             break;
         case CollideAction::Asleep:
-            Perform(world, entry.contact,
-                    DecideActive(world, world.contacts[entry.contact], recycleDistance));
+            Perform(world, c, DecideActive(world, world.contacts[c], recycleDistance));
             break;
         case CollideAction::Destroy:
-            DestroyContact(world, entry.contact);
+            DestroyContact(world, c);
+            break;
+        case CollideAction::Pending:
+            Perform(world, c, Decide(world, world.contacts[c], recycleDistance));
             break;
         case CollideAction::Keep: // done on the threads
-        case CollideAction::Pending:
             break;
         }
     }
@@ -555,10 +549,32 @@ void Collide(WorldState& world)
         CollideSerial(world);
         return;
     }
-    std::vector<CollideEntry>& entries = world.scratch.collide;
-    ListContacts(world, entries);
-    DecideAndCompute(world, entries);
-    ApplyListedWork(world, entries);
+    // On the threads, by contact index, every alive contact not flagged for filtering decided
+    // and its manifold computed or kept (DecideAndCompute), and beside them the list walked
+    // (ListContacts); then on this thread, in list order, the rest (ApplyListedWork).
+    StepScratch& scratch = world.scratch;
+    scratch.collideOrder.resize(static_cast<std::size_t>(world.contactCount));
+    scratch.collideWork.resize(world.contacts.size());
+    const Real recycleDistance = RecycleDistance(world);
+    ForRangesBeside(
+        world.tasks, static_cast<int>(world.contacts.size()), kMinContactsPerTask,
+        [&world, &scratch] { ListContacts(world, scratch.collideOrder); },
+        [&world, &scratch, recycleDistance](int begin, int end, int)
+        {
+            for (int c = begin; c < end; ++c)
+            {
+                Contact& contact = world.contacts[static_cast<std::size_t>(c)];
+                if (!contact.alive)
+                {
+                    continue;
+                }
+                CollideWork& work = scratch.collideWork[static_cast<std::size_t>(c)];
+                work = (contact.flags & Contact::Filter) != 0
+                           ? CollideWork{CollideAction::Pending, false}
+                           : DecideAndCompute(world, contact, recycleDistance);
+            }
+        });
+    ApplyListedWork(world, scratch.collideOrder, scratch.collideWork);
 }
 
 void UpdateContact(WorldState& world, std::int32_t contactIndex)

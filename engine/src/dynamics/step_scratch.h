@@ -16,10 +16,10 @@
 namespace meff::detail
 {
 
-/// What Collide does with one contact, decided in list order before any of it is done.
+/// What Collide does with one contact, decided before any of it is done.
 enum class CollideAction : std::uint8_t
 {
-    Pending, ///< threaded Collide: passed the filter, the rest decided on the threads
+    Pending, ///< threaded Collide: flagged for filtering, so filtered and decided in list order
     Asleep,  ///< both bodies inactive: nothing, unless an earlier contact wakes one
     Destroy, ///< filtered out or the fat boxes parted
     Keep,    ///< touching, and the manifold is kept (CollisionPolicy::recycleDistance); threaded
@@ -27,11 +27,10 @@ enum class CollideAction : std::uint8_t
     Update,  ///< a fresh manifold (UpdateContact)
 };
 
-/// One contact of the threaded Collide, in list order.
-struct CollideEntry
+/// One contact of the threaded Collide, by contact index.
+struct CollideWork
 {
-    std::int32_t contact;
-    CollideAction action; ///< Pending or Destroy, then decided on the threads
+    CollideAction action; ///< decided on the threads
     bool touching;        ///< Update: the fresh manifold's touching state, written by the threads
 };
 
@@ -59,7 +58,9 @@ struct PairBatchCapacity
 struct StepScratch
 {
     /// The threaded Collide's contacts, in contact-list order.
-    std::vector<CollideEntry> collide;
+    std::vector<std::int32_t> collideOrder;
+    /// The threaded Collide's decisions, by contact index (alive contacts only).
+    std::vector<CollideWork> collideWork;
     /// The threaded SynchronizeShapes' moved bodies, in body-list order.
     std::vector<std::int32_t> movedBodies;
     /// Per moved body (movedBodies' order): whether a shape of it needs a new fat box.
