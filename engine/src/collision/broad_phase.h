@@ -213,7 +213,7 @@ class DynamicTree
     bool m_grown = false;           ///< some box grew in place since the last Rebuild
     std::vector<BuildUnit> m_units; ///< Rebuild's scratch, kept for its capacity
     std::vector<std::int32_t> m_unitStack;
-    std::vector<std::int32_t> m_buildIds; ///< the freed nodes, in the serial build's order
+    std::vector<std::int32_t> m_buildIds; ///< the marked nodes, in the serial build's order
     std::vector<BuildSplit> m_buildSplits;
     std::vector<BuildTask> m_buildTasks;
 };

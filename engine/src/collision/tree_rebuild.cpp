@@ -77,11 +77,15 @@ void DynamicTree::RebuildGrown(TaskSystem* tasks)
     m_grown = false; // a box grew, so the tree has a leaf and a root
 
     // The units: leaves and internal nodes not marked (their subtrees are kept whole), found
-    // from the root through the marked nodes, which are freed. The marked nodes form a binary
-    // tree whose leaves are the units, so the build allocates exactly the nodes freed here and
+    // from the root through the marked nodes, which the build reuses. The marked nodes form a
+    // binary tree whose leaves are the units, so the build needs exactly the nodes marked: a
+    // build that freed them in this walk's order and allocated its nodes afresh would take them
+    // back off the free list last freed first, and leave the free list as it was. So they are
+    // used in that order, without the free list: the tree, node ids included, is the same, and
     // the pool never grows (no Node reference is invalidated below).
     m_units.clear();
     m_unitStack.clear();
+    m_buildIds.clear();
     m_unitStack.push_back(m_root);
     while (!m_unitStack.empty())
     {
@@ -96,18 +100,14 @@ void DynamicTree::RebuildGrown(TaskSystem* tasks)
         m_unitStack.push_back(node.child2);
         m_unitStack.push_back(node.child1);
         node.enlarged = false;
-        FreeNode(index);
+        m_buildIds.push_back(index);
     }
-    // Rebuild's stages. Read: m_units (the units and their boxes). Written: the freed nodes,
-    // the units' parent links, m_root. The serial build's allocations, in order, are the freed
-    // nodes as the free list hands them out: taken now, each subtree's are known before it is
-    // built (BuildRange), wherever it is built.
+    std::reverse(m_buildIds.begin(), m_buildIds.end());
+    // Rebuild's stages. Read: m_units (the units and their boxes). Written: the marked nodes
+    // (LinkNode sets all that AllocateNode would have reset, but for the fields an internal node
+    // keeps as AllocateNode made it: no user data, not moved), the units' parent links, m_root.
+    // Each subtree's nodes are known before it is built (BuildRange), wherever it is built.
     const int count = static_cast<int>(m_units.size());
-    m_buildIds.clear();
-    for (int i = 0; i + 1 < count; ++i)
-    {
-        m_buildIds.push_back(AllocateNode());
-    }
     if (tasks == nullptr || WorkerCount(tasks) < 2 || count < 2 * kMinUnitsPerBuildTask)
     {
         m_root = BuildRange(0, count, 0, 0);
