@@ -66,6 +66,16 @@ class DynamicTree
     bool NeedsNewBox(std::int32_t proxyId, const AABB& aabb, Vec2 displacement, AABB& fat) const;
     /// MoveProxy's update, given NeedsNewBox's fat box.
     void SetFatBox(std::int32_t proxyId, const AABB& fat);
+    /// SetFatBox for TreeUpdate::EnlargeAndRebuild, safe on several threads at once for distinct
+    /// leaves while nothing else changes the tree: the leaf takes the fat box and is flagged as
+    /// moved, and its ancestors are marked for Rebuild without growing their boxes, which stay
+    /// stale until Rebuild builds every marked node afresh: Rebuild must come before anything
+    /// reads the tree's internal boxes (the step's pair search rebuilds first). Rebuild's tree is
+    /// SetFatBox's: it depends only on the set of marked nodes, every ancestor of a moved leaf.
+    /// Then NoteGrown, on one thread.
+    void SetFatBoxForRebuild(std::int32_t proxyId, const AABB& fat);
+    /// After SetFatBoxForRebuild: the tree awaits Rebuild.
+    void NoteGrown() { m_grown = true; }
     /// The rule for the boxes made from now on; boxes already made are kept until their shape
     /// leaves them (or they are far too large for the new rule).
     void SetFatBoxRule(FatBoxRule rule) { m_rule = rule; }
@@ -273,6 +283,19 @@ class BroadPhase
     void SetFatBox(std::int32_t proxyId, const AABB& fat)
     {
         m_tree.SetFatBox(proxyId, fat);
+        BufferMove(proxyId);
+    }
+    /// SetFatBox in two halves for TreeUpdate::EnlargeAndRebuild: the tree's
+    /// (DynamicTree::SetFatBoxForRebuild), on several threads at once for distinct proxies, then
+    /// the move buffer's (BufferRebuiltMove), on one thread, in the order of the moves.
+    void SetFatBoxForRebuild(std::int32_t proxyId, const AABB& fat)
+    {
+        m_tree.SetFatBoxForRebuild(proxyId, fat);
+    }
+    /// SetFatBoxForRebuild's second half.
+    void BufferRebuiltMove(std::int32_t proxyId)
+    {
+        m_tree.NoteGrown();
         BufferMove(proxyId);
     }
     void SetFatBoxRule(FatBoxRule rule) { m_tree.SetFatBoxRule(rule); }

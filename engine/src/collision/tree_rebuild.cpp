@@ -22,6 +22,7 @@
 #include "tasks/parallel_ranges.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace meff::detail
@@ -70,6 +71,24 @@ void DynamicTree::EnlargeAncestors(std::int32_t leaf)
         index = node.parentOrNext;
     }
     m_grown = true;
+}
+
+void DynamicTree::SetFatBoxForRebuild(std::int32_t proxyId, const AABB& fat)
+{
+    m_nodes[proxyId].aabb = fat;
+    m_nodes[proxyId].moved = true;
+    // A marked node's ancestors are all marked, or being marked by the thread that marked it
+    // (EnlargeAncestors too marks up to the root or to a marked node), so the walk stops at one.
+    for (std::int32_t index = m_nodes[proxyId].parentOrNext; index != kNullProxy;
+         index = m_nodes[index].parentOrNext)
+    {
+        const std::atomic_ref<bool> enlarged(m_nodes[index].enlarged);
+        if (enlarged.load(std::memory_order_relaxed))
+        {
+            break;
+        }
+        enlarged.store(true, std::memory_order_relaxed);
+    }
 }
 
 void DynamicTree::RebuildGrown(TaskSystem* tasks)

@@ -252,17 +252,17 @@ void ListMovedBodies(const WorldState& world, std::vector<std::int32_t>& moved)
 }
 
 /// The threaded SynchronizeShapes. On the threads, by moved body — Read: the bodies' poses, the
-/// broad phase's leaves. Written: the body's shapes' boxes, scratch.fatBoxes and
+/// broad phase's leaves. Written: the body's shapes' boxes, their leaves' fat boxes where they
+/// need new ones and the marks on the leaves' ancestors (BroadPhase::SetFatBoxForRebuild),
 /// scratch.shapeNewBox of its shapes, scratch.newBoxes of the body. Then on this thread, in
-/// body-list order, the new fat boxes of the shapes that left theirs — Read: the scratch. Written:
-/// the broad phase's tree and move buffer — so that the tree and the move buffer are the serial
+/// body-list order, the shapes that took new fat boxes go to the move buffer — Read: the
+/// scratch. Written: the move buffer — so that the tree and the move buffer are the serial
 /// walk's.
 void SynchronizeShapesOnThreads(WorldState& world)
 {
     StepScratch& scratch = world.scratch;
     ListMovedBodies(world, scratch.movedBodies);
     scratch.newBoxes.resize(scratch.movedBodies.size());
-    scratch.fatBoxes.resize(world.shapes.size());
     scratch.shapeNewBox.resize(world.shapes.size());
     const bool swept = SweepsBoxes(world);
     ForEachIndex(world.tasks, static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
@@ -275,9 +275,13 @@ void SynchronizeShapesOnThreads(WorldState& world)
                      {
                          Shape& shape = world.shapes[s];
                          const Vec2 displacement = SweepShapeBox(shape, xf0, body.xf, swept);
-                         const bool moves =
-                             world.broadPhase.NeedsNewBox(shape.proxyId, shape.aabb, displacement,
-                                                          scratch.fatBoxes[std::size_t(s)]);
+                         AABB fat;
+                         const bool moves = world.broadPhase.NeedsNewBox(shape.proxyId, shape.aabb,
+                                                                         displacement, fat);
+                         if (moves)
+                         {
+                             world.broadPhase.SetFatBoxForRebuild(shape.proxyId, fat);
+                         }
                          scratch.shapeNewBox[std::size_t(s)] = moves ? 1 : 0;
                          newBox = newBox || moves;
                      }
@@ -293,8 +297,7 @@ void SynchronizeShapesOnThreads(WorldState& world)
         {
             if (scratch.shapeNewBox[std::size_t(s)] != 0)
             {
-                world.broadPhase.SetFatBox(world.shapes[s].proxyId,
-                                           scratch.fatBoxes[std::size_t(s)]);
+                world.broadPhase.BufferRebuiltMove(world.shapes[s].proxyId);
             }
         }
     }
@@ -305,7 +308,8 @@ void SynchronizeShapesOnThreads(WorldState& world)
 void SynchronizeShapes(WorldState& world)
 {
     // Box2D's back end stays on one thread, its walk Box2D 2.4.1's.
-    if (world.StageTasks() != nullptr)
+    if (world.StageTasks() != nullptr &&
+        world.collision.treeUpdate == TreeUpdate::EnlargeAndRebuild)
     {
         SynchronizeShapesOnThreads(world);
         return;

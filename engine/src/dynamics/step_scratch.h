@@ -65,8 +65,6 @@ struct StepScratch
     std::vector<std::int32_t> movedBodies;
     /// Per moved body (movedBodies' order): whether a shape of it needs a new fat box.
     std::vector<std::uint8_t> newBoxes;
-    /// Per shape index: its new fat box, where it needs one (BroadPhase::NeedsNewBox).
-    std::vector<AABB> fatBoxes;
     /// Per shape index: whether it needs its new fat box.
     std::vector<std::uint8_t> shapeNewBox;
     /// The batched pair finding's batches of move-buffer entries (only the first ones in use;
