@@ -92,22 +92,25 @@ void UnlinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int si
 
 } // namespace
 
-void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
+bool ContactShapes(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB,
+                   std::int32_t& sA, std::int32_t& sB)
 {
     if (!CustomFilterAllows(world, shapeIndexA, shapeIndexB))
     {
-        return;
+        return false;
     }
-    const Shape& first = world.shapes[shapeIndexA];
-    const Shape& second = world.shapes[shapeIndexB];
     bool swap = false;
-    if (!ContactOrder(first.type, second.type, swap))
+    if (!ContactOrder(world.shapes[shapeIndexA].type, world.shapes[shapeIndexB].type, swap))
     {
-        return;
+        return false;
     }
-    const std::int32_t sA = swap ? shapeIndexB : shapeIndexA;
-    const std::int32_t sB = swap ? shapeIndexA : shapeIndexB;
+    sA = swap ? shapeIndexB : shapeIndexA;
+    sB = swap ? shapeIndexA : shapeIndexB;
+    return true;
+}
 
+std::int32_t TakeContactSlot(WorldState& world, std::int32_t sA, std::int32_t sB)
+{
     std::int32_t index;
     if (!world.freeContacts.empty())
     {
@@ -119,7 +122,12 @@ void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t sha
         index = static_cast<std::int32_t>(world.contacts.size());
         world.contacts.emplace_back();
     }
-    Contact& contact = world.contacts[index];
+    world.contactPairs.Insert(ShapePairKey(sA, sB));
+    return index;
+}
+
+void InitContact(const WorldState& world, Contact& contact, std::int32_t sA, std::int32_t sB)
+{
     contact = Contact{};
     contact.alive = true;
     contact.shapeA = sA;
@@ -149,16 +157,22 @@ void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t sha
     {
         contact.flags |= Contact::HitEvents;
     }
-
-    contact.serial = ++world.contactSerial;
     if (IsSwept(world, contact))
     {
         contact.flags |= Contact::Swept;
+    }
+}
+
+void LinkContact(WorldState& world, std::int32_t index)
+{
+    Contact& contact = world.contacts[index];
+    contact.serial = ++world.contactSerial;
+    if ((contact.flags & Contact::Swept) != 0)
+    {
         contact.sweptSlot = static_cast<std::int32_t>(world.sweptContacts.size());
         world.sweptContacts.push_back(index);
     }
 
-    world.contactPairs.Insert(ShapePairKey(sA, sB));
     contact.prev = kNullIndex;
     contact.next = world.contactList;
     if (world.contactList != kNullIndex)
@@ -172,6 +186,19 @@ void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t sha
     LinkEdge(world, world.bodies[contact.bodyA], index, 0);
     LinkEdge(world, world.bodies[contact.bodyB], index, 1);
     ++world.contactCount;
+}
+
+void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)
+{
+    std::int32_t sA;
+    std::int32_t sB;
+    if (!ContactShapes(world, shapeIndexA, shapeIndexB, sA, sB))
+    {
+        return;
+    }
+    const std::int32_t index = TakeContactSlot(world, sA, sB);
+    InitContact(world, world.contacts[index], sA, sB);
+    LinkContact(world, index);
 }
 
 namespace

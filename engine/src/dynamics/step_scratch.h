@@ -41,6 +41,14 @@ struct ShapePair
     std::int32_t shapeB;
 };
 
+/// A contact the batched pair finding makes: its slot and its shapes in manifold order.
+struct NewContact
+{
+    std::int32_t index;
+    std::int32_t shapeA;
+    std::int32_t shapeB;
+};
+
 /// One batch of the batched pair finding (pair_batches.cpp).
 struct PairBatch
 {
@@ -70,6 +78,8 @@ struct StepScratch
     /// The batched pair finding's batches of move-buffer entries (only the first ones in use;
     /// never shrunk, so that the lists keep their capacity).
     std::vector<PairBatch> pairBatches;
+    /// The contacts the batched pair finding makes, in the order it makes them.
+    std::vector<NewContact> newContacts;
     /// The capacity every batch's lists have (pair_batches.cpp: EqualizeCapacity).
     PairBatchCapacity pairBatchCapacity;
 };
