@@ -21,7 +21,7 @@ namespace
 
 /// Contact::Swept: what the continuous stage sweeps (Box2D 2.4.1's b2World::SolveTOI skips a
 /// sensor and two ordinary dynamic bodies).
-bool IsSwept(const WorldState& world, const Contact& contact)
+[[gnu::always_inline]] inline bool IsSwept(const WorldState& world, const Contact& contact)
 {
     const Body& bodyA = world.bodies[contact.bodyA];
     const Body& bodyB = world.bodies[contact.bodyB];
@@ -92,8 +92,14 @@ void UnlinkEdge(WorldState& world, Body& body, std::int32_t contactIndex, int si
 
 } // namespace
 
-bool ContactShapes(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB,
-                   std::int32_t& sA, std::int32_t& sB)
+namespace
+{
+
+/// CreateContact's first step: asks the user's filter, then orders the shapes as the manifold
+/// functions take them (sA, sB); false when no contact is made.
+[[gnu::always_inline]] inline bool ContactShapes(WorldState& world, std::int32_t shapeIndexA,
+                                                 std::int32_t shapeIndexB, std::int32_t& sA,
+                                                 std::int32_t& sB)
 {
     if (!CustomFilterAllows(world, shapeIndexA, shapeIndexB))
     {
@@ -109,7 +115,10 @@ bool ContactShapes(WorldState& world, std::int32_t shapeIndexA, std::int32_t sha
     return true;
 }
 
-std::int32_t TakeContactSlot(WorldState& world, std::int32_t sA, std::int32_t sB)
+/// The second: a slot for the contact (the free list's last, or a new one), its index, and the
+/// pair in the set of existing contacts.
+[[gnu::always_inline]] inline std::int32_t TakeContactSlot(WorldState& world, std::int32_t sA,
+                                                           std::int32_t sB)
 {
     std::int32_t index;
     if (!world.freeContacts.empty())
@@ -126,7 +135,11 @@ std::int32_t TakeContactSlot(WorldState& world, std::int32_t sA, std::int32_t sB
     return index;
 }
 
-void InitContact(const WorldState& world, Contact& contact, std::int32_t sA, std::int32_t sB)
+/// The third: the new contact's own fields from its shapes and bodies, all but its serial
+/// number and the lists' links. Writes only the contact, so that new contacts can be made on
+/// several threads at once (MakeContacts).
+[[gnu::always_inline]] inline void InitContact(const WorldState& world, Contact& contact,
+                                               std::int32_t sA, std::int32_t sB)
 {
     contact = Contact{};
     contact.alive = true;
@@ -163,7 +176,9 @@ void InitContact(const WorldState& world, Contact& contact, std::int32_t sA, std
     }
 }
 
-void LinkContact(WorldState& world, std::int32_t index)
+/// The last: the serial number, the swept list, the contact list and the bodies' edges, the
+/// count.
+[[gnu::always_inline]] inline void LinkContact(WorldState& world, std::int32_t index)
 {
     Contact& contact = world.contacts[index];
     contact.serial = ++world.contactSerial;
@@ -186,6 +201,48 @@ void LinkContact(WorldState& world, std::int32_t index)
     LinkEdge(world, world.bodies[contact.bodyA], index, 0);
     LinkEdge(world, world.bodies[contact.bodyB], index, 1);
     ++world.contactCount;
+}
+
+} // namespace
+
+/// New contacts to a range of MakeContacts' threaded part: a contact's fields cost about a
+/// hundred instructions.
+constexpr int kMinContactsPerInitTask = 256;
+
+/// CreateContact for the batches' kept pairs without the user's filter, in three passes whose
+/// contacts, slots, serial numbers and lists are CreateContact's one pair after another: on
+/// this thread, in order, the pairs with no contact yet take their slots (ContactShapes,
+/// TakeContactSlot); on the threads, each new contact's own fields (InitContact; Read: the
+/// shapes and bodies. Written: the contact); on this thread, in order, the links (LinkContact).
+void MakeContacts(WorldState& world, int batches)
+{
+    std::vector<NewContact>& made = world.scratch.newContacts;
+    made.clear();
+    for (int b = 0; b < batches; ++b)
+    {
+        for (const ShapePair& pair : world.scratch.pairBatches[static_cast<std::size_t>(b)].kept)
+        {
+            std::int32_t sA;
+            std::int32_t sB;
+            if (!world.contactPairs.Contains(ShapePairKey(pair.shapeA, pair.shapeB)) &&
+                ContactShapes(world, pair.shapeA, pair.shapeB, sA, sB))
+            {
+                made.push_back({TakeContactSlot(world, sA, sB), sA, sB});
+            }
+        }
+    }
+    const WorldState& read = world;
+    ForEachIndex(world.tasks, static_cast<int>(made.size()), kMinContactsPerInitTask,
+                 [&world, &read, &made](int i)
+                 {
+                     const NewContact& contact = made[static_cast<std::size_t>(i)];
+                     InitContact(read, world.contacts[contact.index], contact.shapeA,
+                                 contact.shapeB);
+                 });
+    for (const NewContact& contact : made)
+    {
+        LinkContact(world, contact.index);
+    }
 }
 
 void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB)

@@ -3,9 +3,10 @@
 // SPDX-FileCopyrightText: 2019 Erin Catto (Box2D 2.4.1, MIT; see THIRD_PARTY_NOTICES)
 // Pair finding in batches, for the colour and soft-step back ends: the broad phase's queries
 // for the moved proxies and the built-in rules of AddPair run on the world's threads, batch by
-// batch, and the contacts are made afterwards on the stepping thread in the batches' order, so
-// that the pairs, their order and the user's filter's questions are UpdatePairs' for any thread
-// count. Box2D's back end keeps UpdatePairs (contact_manager.cpp: FindNewContacts).
+// batch, and the contacts are made afterwards in the batches' order (their slots and links on
+// the stepping thread, their fields on the threads: MakeContacts), so that the pairs, their
+// order and the user's filter's questions are UpdatePairs' for any thread count. Box2D's back end
+// keeps UpdatePairs (contact_manager.cpp: FindNewContacts).
 #include "dynamics/pair_rules.h"
 #include "tasks/parallel_ranges.h"
 
@@ -80,46 +81,6 @@ void EqualizeCapacity(std::vector<PairBatch>& lists, int batches, PairBatchCapac
     {
         batch.found.reserve(found);
         batch.kept.reserve(kept);
-    }
-}
-
-/// New contacts to a range of MakeContacts' threaded part: a contact's fields cost about a
-/// hundred instructions.
-constexpr int kMinContactsPerInitTask = 256;
-
-/// CreateContact for the batches' kept pairs without the user's filter, in three passes whose
-/// contacts, slots, serial numbers and lists are CreateContact's one pair after another: on
-/// this thread, in order, the pairs with no contact yet take their slots (ContactShapes,
-/// TakeContactSlot); on the threads, each new contact's own fields (InitContact; Read: the
-/// shapes and bodies. Written: the contact); on this thread, in order, the links (LinkContact).
-void MakeContacts(WorldState& world, int batches)
-{
-    std::vector<NewContact>& made = world.scratch.newContacts;
-    made.clear();
-    for (int b = 0; b < batches; ++b)
-    {
-        for (const ShapePair& pair : world.scratch.pairBatches[static_cast<std::size_t>(b)].kept)
-        {
-            std::int32_t sA;
-            std::int32_t sB;
-            if (!world.contactPairs.Contains(ShapePairKey(pair.shapeA, pair.shapeB)) &&
-                ContactShapes(world, pair.shapeA, pair.shapeB, sA, sB))
-            {
-                made.push_back({TakeContactSlot(world, sA, sB), sA, sB});
-            }
-        }
-    }
-    const WorldState& read = world;
-    ForEachIndex(world.tasks, static_cast<int>(made.size()), kMinContactsPerInitTask,
-                 [&world, &read, &made](int i)
-                 {
-                     const NewContact& contact = made[static_cast<std::size_t>(i)];
-                     InitContact(read, world.contacts[contact.index], contact.shapeA,
-                                 contact.shapeB);
-                 });
-    for (const NewContact& contact : made)
-    {
-        LinkContact(world, contact.index);
     }
 }
 

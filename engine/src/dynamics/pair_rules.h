@@ -89,22 +89,12 @@ inline bool BodiesShouldCollide(const WorldState& world, std::int32_t a, std::in
 /// count or log its calls, so asked exactly when Box2D asks its b2ContactFilter (after the
 /// built-in rules, before the shape types are looked at: Box2D asks about two segments too,
 /// then makes no contact), then the contact.
-/// Makes a contact between two shapes, as the four steps below in turn.
 void CreateContact(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB);
-/// CreateContact's first step: asks the user's filter, then orders the shapes as the manifold
-/// functions take them (sA, sB); false when no contact is made.
-bool ContactShapes(WorldState& world, std::int32_t shapeIndexA, std::int32_t shapeIndexB,
-                   std::int32_t& sA, std::int32_t& sB);
-/// The second: a slot for the contact (the free list's last, or a new one), its index, and the
-/// pair in the set of existing contacts.
-std::int32_t TakeContactSlot(WorldState& world, std::int32_t sA, std::int32_t sB);
-/// The third: the new contact's own fields from its shapes and bodies, all but its serial
-/// number and the lists' links. Writes only the contact, so that new contacts can be made on
-/// several threads at once.
-void InitContact(const WorldState& world, Contact& contact, std::int32_t sA, std::int32_t sB);
-/// The last: the serial number, the swept list, the contact list and the bodies' edges, the
-/// count.
-void LinkContact(WorldState& world, std::int32_t index);
+/// CreateContact for the kept pairs of the first `batches` of the batched pair finding
+/// (WorldState::scratch.pairBatches) that have no contact yet, without the user's filter, in
+/// three passes whose contacts, slots, serial numbers and lists are CreateContact's one pair
+/// after another (contact_manager.cpp).
+void MakeContacts(WorldState& world, int batches);
 
 /// FindNewContacts for the colour and soft-step back ends (pair_batches.cpp).
 void FindNewContactsInBatches(WorldState& world);
