@@ -9,6 +9,7 @@
 #include "meff/error.h"
 
 #include <atomic>
+#include <span>
 #include <string>
 
 namespace meff::detail
@@ -98,6 +99,27 @@ void BuildIsland(SolverWorld& world, std::int32_t seed, Island& island)
     }
 }
 
+namespace
+{
+
+/// The indices of `items` that `keep` accepts, newest slot first (reverse array order), into
+/// `out`, in the order a serial walk from the last slot gives them (StableCompact).
+template <typename Item, typename Keep>
+void KeepNewestFirst(TaskSystem* tasks, std::vector<std::int32_t>& pieceCounts,
+                     std::span<const Item> items, std::vector<std::int32_t>& out, Keep&& keep)
+{
+    const auto count = static_cast<int>(items.size());
+    out.resize(items.size());
+    const std::int32_t kept = StableCompact(
+        tasks, count, pieceCounts,
+        [&](int r) { return keep(items[static_cast<std::size_t>(count - 1 - r)]); },
+        [&](int r, std::int32_t position)
+        { out[static_cast<std::size_t>(position)] = count - 1 - r; });
+    out.resize(static_cast<std::size_t>(kept));
+}
+
+} // namespace
+
 bool BuildWorldIsland(SolverWorld& world, Island& island)
 {
     island.Clear();
@@ -143,31 +165,16 @@ bool BuildWorldIsland(SolverWorld& world, Island& island)
     // this order, and the oldest-first order colours joint_grid's net so that it flails more
     // (its largest gap to Box2D's order grows from 28 m to 76 m, and the broad phase's work
     // doubles).
-    const auto contactCount = static_cast<int>(world.contacts.size());
-    island.contacts.resize(world.contacts.size());
-    const std::int32_t contacts = StableCompact(
-        world.tasks, contactCount, island.pieceCounts,
-        [&](int r)
+    KeepNewestFirst(world.tasks, island.pieceCounts, std::span<const Contact>(world.contacts),
+                    island.contacts,
+                    [](const Contact& contact) { return contact.alive && contact.IsSolid(); });
+    KeepNewestFirst(
+        world.tasks, island.pieceCounts, std::span<const JointSlot>(world.joints), island.joints,
+        [&](const JointSlot& slot)
         {
-            const Contact& contact = world.contacts[static_cast<std::size_t>(contactCount - 1 - r)];
-            return contact.alive && contact.IsSolid();
-        },
-        [&](int r, std::int32_t position)
-        { island.contacts[static_cast<std::size_t>(position)] = contactCount - 1 - r; });
-    island.contacts.resize(static_cast<std::size_t>(contacts));
-    const auto jointCount = static_cast<int>(world.joints.size());
-    island.joints.resize(world.joints.size());
-    const std::int32_t joints = StableCompact(
-        world.tasks, jointCount, island.pieceCounts,
-        [&](int r)
-        {
-            const JointSlot& slot = world.joints[static_cast<std::size_t>(jointCount - 1 - r)];
             return slot.alive && (world.bodies[slot.joint.bodyA].type != BodyType::Static ||
                                   world.bodies[slot.joint.bodyB].type != BodyType::Static);
-        },
-        [&](int r, std::int32_t position)
-        { island.joints[static_cast<std::size_t>(position)] = jointCount - 1 - r; });
-    island.joints.resize(static_cast<std::size_t>(joints));
+        });
     return true;
 }
 
