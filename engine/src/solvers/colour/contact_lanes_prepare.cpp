@@ -39,12 +39,6 @@ struct LaneInputs
     bool hitEvents = false;                    ///< a lane's contact has hit events
 };
 
-/// Whether x is +0 bit for bit (subtracting it changes nothing).
-bool IsPositiveZero(Real x)
-{
-    return x == 0 && !std::signbit(x);
-}
-
 /// Lane l's contact: the bodies and manifold, into the group's header and rows.
 void GatherLane(ContactGroupHeader& h, ContactVelocityGroup& vg, ContactPositionGroup& pg,
                 LaneInputs& in, int l, std::int32_t source, const Contact& contact,

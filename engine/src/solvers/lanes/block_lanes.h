@@ -37,11 +37,10 @@ struct BlockRows
 
 /// Solves vn = K·x + b as one LCP by total enumeration of its four cases in Box2D's order (as
 /// ContactSolver's SolveNormalBlock), b = (vn − bias) − K·a being the rows' velocity error at
-/// the old impulses a. A lane where no case holds keeps a. `Group` holds K's k12, K⁻¹ (inv11,
+/// the old impulses a. A lane where no case holds keeps a. `g` holds K's k12, K⁻¹ (inv11,
 /// inv12, inv22: K is symmetric, and so is K⁻¹) and each row's own effective mass
 /// (normalMass[2], 1/kii).
-template <typename Group>
-[[gnu::always_inline]] inline BlockImpulsesW SolveBlockLanes(const Group& g, RealW a1, RealW a2,
+[[gnu::always_inline]] inline BlockImpulsesW SolveBlockLanes(const BlockRows& g, RealW a1, RealW a2,
                                                              RealW b1, RealW b2)
 {
     const RealW zero = Splat(0);

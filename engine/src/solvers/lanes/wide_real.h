@@ -39,6 +39,13 @@ using Real4 = Real __attribute__((vector_size(4 * sizeof(Real))));
 /// A lane mask: all bits set in the lanes where a comparison holds.
 using MaskW = decltype(RealW{} < RealW{});
 
+/// Whether x is +0 bit for bit: a target or speed the sweeps may skip, since subtracting +0
+/// changes no bit.
+inline bool IsPositiveZero(Real x)
+{
+    return x == 0 && !std::signbit(x);
+}
+
 inline RealW Splat(Real x)
 {
     return RealW{} + x;

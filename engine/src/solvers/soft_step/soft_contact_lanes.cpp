@@ -333,12 +333,6 @@ void CorrectGroup(const SoftContactHeader& h, const SoftContactGroup& g,
     }
 }
 
-/// Whether x is +0 bit for bit (a target the sweeps may skip: subtracting it changes nothing).
-bool IsPositiveZero(Real x)
-{
-    return x == 0 && !std::signbit(x);
-}
-
 /// What of contact c lives in its group's extras (SoftContactHeader::extras).
 std::uint8_t ExtrasOf(const SoftContact& c)
 {

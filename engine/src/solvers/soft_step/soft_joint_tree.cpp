@@ -91,7 +91,8 @@ int SoftJointTree::Select(const std::vector<Joint*>& joints, std::vector<SoftJoi
     // The same joints on the same bodies as last time (a net or a chain from step to step):
     // the same choice, without the search (it cost a joint net of 20,000 hinges 6 % of its
     // step). Each joint reads and writes only its own key, mark and frame (and costs about
-    // what a body's copy does).
+    // what a body's copy does); a joint that matches takes last time's mark at once, since
+    // where any does not, the search below sets every joint's.
     const auto count = static_cast<int>(joints.size());
     std::atomic<bool> same{m_keys.size() == joints.size() && m_marks.size() == joints.size()};
     if (same.load(std::memory_order_relaxed))
@@ -107,18 +108,13 @@ int SoftJointTree::Select(const std::vector<Joint*>& joints, std::vector<SoftJoi
                               same.store(false, std::memory_order_relaxed);
                               return;
                           }
+                          frames[k].pointInTree = m_marks[k] != 0;
                       }
                   });
-    }
-    if (same.load(std::memory_order_relaxed))
-    {
-        ForEachIndex(tasks, count, kMinBodiesPerTask,
-                     [&](int k)
-                     {
-                         const auto i = static_cast<std::size_t>(k);
-                         frames[i].pointInTree = m_marks[i] != 0;
-                     });
-        return m_marked;
+        if (same.load(std::memory_order_relaxed))
+        {
+            return m_marked;
+        }
     }
     m_keys.clear();
     m_marks.clear();
