@@ -279,9 +279,8 @@ void ContactLanes::CollectResults(std::span<SolvedContact> solved, TaskSystem* t
     ForEachGroupWithColour(m_groupStarts, tasks, kMinGroupsPerTask,
                            [&](std::int32_t i, int c)
                            {
-                               const std::int32_t end = m_colouring.colourStarts[c + 1];
-                               const std::int32_t first =
-                                   m_colouring.colourStarts[c] + (i - m_groupStarts[c]) * kLanes;
+                               const GroupRows rows = GroupRowsOf(m_groupStarts, m_colouring, i, c);
+                               const std::int32_t first = rows.first, end = rows.end;
                                const ContactVelocityGroup& group = m_velocityGroups[i];
                                const bool rolling =
                                    (m_headers[i].extras & ContactGroupHeader::kRolling) != 0;

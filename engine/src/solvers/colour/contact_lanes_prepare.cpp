@@ -301,9 +301,8 @@ void WarmStartGroup(const ContactGroupHeader& h, const ContactVelocityGroup& g,
 bool ContactLanes::PrepareGroup(std::int32_t i, int colour, const IslandContacts& island,
                                 std::span<SolvedContact> solved, const SolverData& data)
 {
-    const std::int32_t end = m_colouring.colourStarts[colour + 1];
-    const std::int32_t first =
-        m_colouring.colourStarts[colour] + (i - m_groupStarts[colour]) * kLanes;
+    const GroupRows rows = GroupRowsOf(m_groupStarts, m_colouring, i, colour);
+    const std::int32_t first = rows.first, end = rows.end;
     ContactGroupHeader& h = m_headers[i];
     ContactVelocityGroup& vg = m_velocityGroups[i];
     ContactPositionGroup& pg = m_positionGroups[i];

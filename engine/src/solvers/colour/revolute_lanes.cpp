@@ -111,9 +111,8 @@ RealW SolvePositionGroup(const RevoluteJointGroup& g, Position* positions, Disca
 void RevoluteLanes::PrepareGroup(std::int32_t i, int colour, std::span<RevoluteJoint* const> joints,
                                  const SolverData& data)
 {
-    const std::int32_t end = m_colouring.colourStarts[colour + 1];
-    const std::int32_t first =
-        m_colouring.colourStarts[colour] + (i - m_groupStarts[colour]) * kLanes;
+    const GroupRows rows = GroupRowsOf(m_groupStarts, m_colouring, i, colour);
+    const std::int32_t first = rows.first, end = rows.end;
     RevoluteJointGroup& g = m_groups[i];
     g = RevoluteJointGroup{};
     // Empty lanes write the discard slot; all their masses are zero.

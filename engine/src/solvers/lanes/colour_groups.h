@@ -84,6 +84,20 @@ void ForEachGroupWithColour(const std::vector<std::int32_t>& starts, TaskSystem*
               });
 }
 
+/// A group's constraints: positions [first, end) of colouring.order (at most kLanes).
+struct GroupRows
+{
+    std::int32_t first, end;
+};
+
+/// The constraints of group i of colour `colour`, whose groups start at starts[colour].
+inline GroupRows GroupRowsOf(const std::vector<std::int32_t>& starts,
+                             const ConstraintColouring& colouring, std::int32_t i, int colour)
+{
+    const std::int32_t first = colouring.colourStarts[colour] + (i - starts[colour]) * kLanes;
+    return {first, std::min(first + kLanes, colouring.colourStarts[colour + 1])};
+}
+
 /// The same on the world's threads of `data` (data.tasks, data.discardIndex).
 template <typename Solve>
 void ForEachGroupOfColour(const std::vector<std::int32_t>& starts, int c, const SolverData& data,
@@ -117,16 +131,11 @@ struct ColourGroups
                                 starts.begin()) -
                1;
     }
-    /// Group i's constraints: positions [first, end) of colouring.order (at most kLanes).
-    struct Rows
-    {
-        std::int32_t first, end;
-    };
+    using Rows = GroupRows;
+    /// Group i's constraints (GroupRowsOf).
     Rows RowsOf(std::int32_t i, const ConstraintColouring& colouring) const
     {
-        const int colour = ColourOf(i);
-        const std::int32_t first = colouring.colourStarts[colour] + (i - starts[colour]) * kLanes;
-        return {first, std::min(first + kLanes, colouring.colourStarts[colour + 1])};
+        return GroupRowsOf(starts, colouring, i, ColourOf(i));
     }
     /// Runs f(group) on every group, in ranges on the threads: for what each group does alone
     /// (packing, scaling or copying its own rows).
