@@ -66,7 +66,17 @@ KNOWN_FAILURES = {
     ("soft_step", "solver2d_far_ragdoll_pile"): {"rebound": "2.47 m/s: a ragdoll's leg off the "
                                                             "trough (limit 2.08; Box2D 1.32)"},
     ("colour", "solver2d_card_house"): {"rest": "0.0685 m/s at 10 s (limit 0.05; Box2D "
-                                                "0.0259)"},
+                                                "0.0259)",
+                                        "hold": "1.37 m: left4_0 at frame 74, the house fallen "
+                                                "(limit 0.2; Box2D 1.37, see below)"},
+    ("colour", "solver2d_vertical_stack"): {"hold": "14.3 m: box9 at frame 325, the column "
+                                                    "fallen (limit 0.5; Box2D 28.3, see below)"},
+    ("soft_step", "solver2d_card_house"): {"hold": "1.33 m: right4_0 at frame 150, the house "
+                                                   "fallen (limit 0.2; Box2D 1.37; at 8 to 32 "
+                                                   "sub-steps too, where Solver2D's soft step "
+                                                   "holds it without skins; built 10 times "
+                                                   "larger, so that the skins' overlaps are "
+                                                   "small beside the cards, it stands)"},
     ("colour", "solver2d_circle_stack"): {"rebound": "0.578 m/s: the bottom ball off the ground "
                                                      "(limit 0.25; Box2D 0)"},
     ("colour", "solver2d_far_pyramid"): {"penetration": "0.0547 m (limit 0.05; Box2D 0.0469)",
@@ -84,6 +94,20 @@ KNOWN_FAILURES = {
     ("box2d", "long_bounce"): {"energy": "1091 J gained by the e = 1 ball over 100000 steps "
                                          "(limit 56.4)"},
     ("colour", "long_bounce"): {"energy": "1091 J, as Box2D's (limit 56.4)"},
+    # Solver2D's structures that Box2D 2.4.1 lets fall at Solver2D's 4 velocity and 2 position
+    # iterations (the scenes' descriptions say so). Every one of Solver2D's own solvers lets the
+    # card house fall at 4 and 2 as well, and its Box2D 2.4.1 solver (PGS_NGS_Block, without
+    # skins) at 8 and 3 and at 30 and 10 too. The Box2D back end is Box2D, bit for bit: not a
+    # bug to fix there. The colour back end solves Box2D's rows at the same iterations and
+    # falls with it (entries above). The soft step falls at every sub-step count tried (4 to
+    # 32) where Solver2D's soft step, without skins, holds the house from 8: the one to look
+    # into (its entry above).
+    ("box2d", "solver2d_card_house"): {"hold": "1.37 m: flat3_0 at frame 128, the house fallen "
+                                               "(limit 0.2 = half a card; every card starts "
+                                               "11-22 mm into its neighbours' 0.01 m skins; at "
+                                               "8/3 and up to 50/20 iterations it falls too)"},
+    ("box2d", "solver2d_vertical_stack"): {"hold": "28.3 m: box14 at frame 553, the column "
+                                                   "fallen (limit 0.5 = half a box)"},
 }
 
 

@@ -5,9 +5,10 @@
 
 tests/plausibility/tight_*.json each set one threshold below what every back end does (a
 rebound of 0.01 m/s where Box2D leaves 0.031 m/s, no energy tolerance where the position pass
-lifts a box out of the ground, rest for a rolling ball). Under each back end `meff validate`
-must exit with status 1, print FAIL for each, name the check in summary.json (value above its
-limit) and give the JUnit case a failure of type "plausibility" naming it.
+lifts a box out of the ground, rest for a rolling ball, hold for a box sliding down a
+frictionless slope). Under each back end `meff validate` must exit with status 1, print FAIL
+for each, name the check in summary.json (value above its limit) and give the JUnit case a
+failure of type "plausibility" naming it.
 
 usage: check_plausibility_fails.py MEFF SCENE_DIR OUTPUT_DIR
 """
@@ -17,7 +18,8 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
 
-EXPECTED = {"tight_rebound": "rebound", "tight_energy": "energy", "tight_rest": "rest"}
+EXPECTED = {"tight_rebound": "rebound", "tight_energy": "energy", "tight_rest": "rest",
+            "tight_hold": "hold"}
 
 
 def main():

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 the meff authors
-// The scene file's "plausibility" section: every threshold a number ≥ 0, "rest" an object.
+// The scene file's "plausibility" section: every threshold a number ≥ 0, "rest" and "hold"
+// objects.
 #include "plausibility_fields.h"
 
 namespace meff::scene_detail
@@ -57,6 +58,18 @@ void ReadPlausibility(ObjectReader& reader, ScenePlausibility& plausibility)
         }
         ReadThreshold(restReader, "speed", check.speed);
         restReader.Finish();
+    }
+    if (const Json* hold = reader.Object("hold", false))
+    {
+        ObjectReader holdReader(reader.Diag(), *hold, reader.PathOf("hold"));
+        ScenePlausibilityHold& check = plausibility.hold.emplace();
+        ReadThreshold(holdReader, "after", check.after);
+        const std::optional<double> distance = holdReader.Number("distance", std::nullopt);
+        if (distance && CheckNonNegative(holdReader, "distance", *distance))
+        {
+            check.distance = *distance;
+        }
+        holdReader.Finish();
     }
     reader.Finish();
 }

@@ -90,6 +90,10 @@ std::optional<SectionJson> PlausibilityJson(const ScenePlausibility& p)
     {
         out["rest"] = {{"after", p.rest->after}, {"speed", p.rest->speed}};
     }
+    if (p.hold)
+    {
+        out["hold"] = {{"after", p.hold->after}, {"distance", p.hold->distance}};
+    }
     return out;
 }
 

@@ -1175,7 +1175,7 @@ Command AddValidateCommand(CLI::App& parent)
     AddSolverOption(*app, options->solver,
                     "Run every scene with this back end: box2d (compared with Box2D frame by "
                     "frame), colour or soft_step (held to the plausibility checks instead: "
-                    "no NaN, energy, rebound, joint gaps, penetration, speed, rest; "
+                    "no NaN, energy, rebound, joint gaps, penetration, speed, rest, hold; "
                     "docs/validation.md); with --baseline, any is compared with its baseline; "
                     "default: each scene's own");
     app->add_flag("--plausibility", options->plausibility,

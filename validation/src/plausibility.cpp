@@ -448,6 +448,7 @@ PlausibilityResult CheckPlausibility(const Scene& scene, std::optional<SolverKin
     PlausibilityCheck maxSpeed = NewCheck("max_speed", "m/s");
     PlausibilityCheck rise = NewCheck("rise", "m");
     PlausibilityCheck rest = NewCheck("rest", "m/s");
+    PlausibilityCheck hold = NewCheck("hold", "m");
 
     // Energy: E(t) - E(0) may not exceed a fraction of the largest kinetic energy of the run
     // (the integrator's own error, symplectic Euler's O(h) wobble of a swinging body, scales
@@ -491,6 +492,21 @@ PlausibilityResult CheckPlausibility(const Scene& scene, std::optional<SolverKin
     {
         rest.limit = limits.rest->speed;
         rest.note = "from " + Format(limits.rest->after) + " s";
+    }
+    // Hold: where each dynamic body's centre of mass is at hold.after is its place; the
+    // furthest any of them is from it later. A structure that falls or slides apart moves its
+    // bodies by their own size; one that stands, by what settling moves it (the scene's limit
+    // says how much, docs/validation.md).
+    hold.applies = limits.hold.has_value();
+    std::vector<Vec> places; // empty until hold.after
+    if (limits.hold)
+    {
+        hold.limit = limits.hold->distance;
+        hold.note = "from the places at " + Format(limits.hold->after) + " s";
+        if (limits.hold->after <= 0)
+        {
+            places = startCenters;
+        }
     }
 
     const auto [startGap, startGapJoint] = run.JointGap();
@@ -655,11 +671,19 @@ PlausibilityResult CheckPlausibility(const Scene& scene, std::optional<SolverKin
         }
 
         const bool resting = limits.rest && frame * dt >= limits.rest->after - 1e-9;
+        const bool holding = !places.empty();
+        if (limits.hold && !holding && frame * dt >= limits.hold->after - 1e-9)
+        {
+            for (const BodyInfo& body : bodies)
+            {
+                places.push_back(ToVec(run.world().GetWorldCenter(body.id)));
+            }
+        }
         for (std::size_t i = 0; i < bodies.size(); ++i)
         {
             const BodyInfo& body = bodies[i];
-            const double height =
-                Dot(up, Minus(ToVec(run.world().GetWorldCenter(body.id)), startCenters[i]));
+            const Vec center = ToVec(run.world().GetWorldCenter(body.id));
+            const double height = Dot(up, Minus(center, startCenters[i]));
             if (height > rise.value)
             {
                 rise.value = height;
@@ -678,6 +702,13 @@ PlausibilityResult CheckPlausibility(const Scene& scene, std::optional<SolverKin
                 rest.value = speed;
                 rest.frame = frame;
                 rest.where = run.BodyName(body.scene);
+            }
+            const double moved = holding ? Length(Minus(center, places[i])) : 0.0;
+            if (moved > hold.value)
+            {
+                hold.value = moved;
+                hold.frame = frame;
+                hold.where = run.BodyName(body.scene);
             }
         }
     }
@@ -698,11 +729,11 @@ PlausibilityResult CheckPlausibility(const Scene& scene, std::optional<SolverKin
         jointGap.note = "no joints";
     }
     for (PlausibilityCheck* check :
-         {&energy, &rebound, &jointGap, &penetration, &maxSpeed, &rise, &rest})
+         {&energy, &rebound, &jointGap, &penetration, &maxSpeed, &rise, &rest, &hold})
     {
         check->passed = !check->applies || check->value <= check->limit;
     }
-    result.checks = {finite, energy, rebound, jointGap, penetration, maxSpeed, rise, rest};
+    result.checks = {finite, energy, rebound, jointGap, penetration, maxSpeed, rise, rest, hold};
     result.passed = std::all_of(result.checks.begin(), result.checks.end(),
                                 [](const PlausibilityCheck& check) { return check.passed; });
     return result;

@@ -261,9 +261,21 @@ struct ScenePlausibilityRest
     friend bool operator==(const ScenePlausibilityRest&, const ScenePlausibilityRest&) = default;
 };
 
+/// "plausibility.hold": the scene holds its shape (a structure built to stand, a settled stack), so
+/// that no dynamic body may move far from where it was once `after` has passed.
+struct ScenePlausibilityHold
+{
+    double after = 0;    ///< s: where every dynamic body is at this time is its place (≥ 0)
+    double distance = 0; ///< m: the furthest any dynamic body's centre of mass may move from it
+                         ///< later (≥ 0; required in the file)
+
+    friend bool operator==(const ScenePlausibilityHold&, const ScenePlausibilityHold&) = default;
+};
+
 /// "plausibility": the thresholds of the physics checks every back end is held to (no NaN,
-/// energy, rebound, joint gaps, penetration, speed, rest), meff::validation::CheckPlausibility
-/// and docs/validation.md. Each field has a default; a scene sets the ones it needs.
+/// energy, rebound, joint gaps, penetration, speed, rest, hold),
+/// meff::validation::CheckPlausibility and docs/validation.md. Each field has a default; a scene
+/// sets the ones it needs.
 struct ScenePlausibility
 {
     /// Energy may grow beyond the work done on the scene by at most this fraction of the
@@ -289,6 +301,7 @@ struct ScenePlausibility
     /// gravity (m), unchecked when absent ("max_rise").
     std::optional<double> maxRise;
     std::optional<ScenePlausibilityRest> rest; ///< "rest": absent, not checked
+    std::optional<ScenePlausibilityHold> hold; ///< "hold": absent, not checked
 
     friend bool operator==(const ScenePlausibility&, const ScenePlausibility&) = default;
 };

@@ -4,8 +4,8 @@
 // A regression team cannot compare the soft step or the colour back end with Box2D frame by
 // frame (they are other solvers), but it can check physics: no NaN, no energy from nowhere, no
 // rebound where restitution is 0, joints that hold, no tunnelling, no speed spikes, stacks
-// that come to rest. The thresholds are the scene's ("plausibility" in the scene file,
-// meff::ScenePlausibility); docs/validation.md says what each check measures.
+// that come to rest, structures that stand. The thresholds are the scene's ("plausibility" in the
+// scene file, meff::ScenePlausibility); docs/validation.md says what each check measures.
 #pragma once
 
 #include "meff/scene.h"
@@ -38,7 +38,7 @@ struct PlausibilityResult
     int frames = 0;
     bool passed = true;
     std::vector<PlausibilityCheck> checks; ///< finite, energy, rebound, joint_gap, penetration,
-                                           ///< max_speed, rise, rest: always in this order
+                                           ///< max_speed, rise, rest, hold: always in this order
 };
 
 /// Runs `scene` for `frames` steps (default: its own) with `solver` as its back end (default:
