@@ -20,6 +20,13 @@ void ReadThreshold(ObjectReader& reader, std::string_view key, double& target)
     }
 }
 
+/// A required number ≥ 0: its value when present and valid; reported and empty otherwise.
+std::optional<double> RequiredThreshold(ObjectReader& reader, std::string_view key)
+{
+    const std::optional<double> value = reader.Number(key, std::nullopt);
+    return value && CheckNonNegative(reader, key, *value) ? value : std::nullopt;
+}
+
 } // namespace
 
 void ReadPlausibility(ObjectReader& reader, ScenePlausibility& plausibility)
@@ -33,26 +40,17 @@ void ReadPlausibility(ObjectReader& reader, ScenePlausibility& plausibility)
     ReadThreshold(reader, "joint_gap", plausibility.jointGap);
     if (reader.Find("max_speed") != nullptr)
     {
-        const std::optional<double> value = reader.Number("max_speed", std::nullopt);
-        if (value && CheckNonNegative(reader, "max_speed", *value))
-        {
-            plausibility.maxSpeed = *value;
-        }
+        plausibility.maxSpeed = RequiredThreshold(reader, "max_speed");
     }
     if (reader.Find("max_rise") != nullptr)
     {
-        const std::optional<double> value = reader.Number("max_rise", std::nullopt);
-        if (value && CheckNonNegative(reader, "max_rise", *value))
-        {
-            plausibility.maxRise = *value;
-        }
+        plausibility.maxRise = RequiredThreshold(reader, "max_rise");
     }
     if (const Json* rest = reader.Object("rest", false))
     {
         ObjectReader restReader(reader.Diag(), *rest, reader.PathOf("rest"));
         ScenePlausibilityRest& check = plausibility.rest.emplace();
-        const std::optional<double> after = restReader.Number("after", std::nullopt);
-        if (after && CheckNonNegative(restReader, "after", *after))
+        if (const std::optional<double> after = RequiredThreshold(restReader, "after"))
         {
             check.after = *after;
         }
@@ -64,8 +62,7 @@ void ReadPlausibility(ObjectReader& reader, ScenePlausibility& plausibility)
         ObjectReader holdReader(reader.Diag(), *hold, reader.PathOf("hold"));
         ScenePlausibilityHold& check = plausibility.hold.emplace();
         ReadThreshold(holdReader, "after", check.after);
-        const std::optional<double> distance = holdReader.Number("distance", std::nullopt);
-        if (distance && CheckNonNegative(holdReader, "distance", *distance))
+        if (const std::optional<double> distance = RequiredThreshold(holdReader, "distance"))
         {
             check.distance = *distance;
         }
