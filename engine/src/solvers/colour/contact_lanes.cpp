@@ -54,22 +54,44 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     return velocityBias != nullptr ? vn - velocityBias[j] : vn;
 }
 
+/// The lanes of RowMass(k) whose bit is set in `rows`, 0 in the others: a normal row's mass as
+/// the preparation computed it (its k is K's diagonal entry; 0 where the row is not solved).
+[[gnu::always_inline]] inline RealW NormalMass(RealW k, unsigned rows)
+{
+    // Where every lane solves the row (most groups), selecting changes nothing.
+    return rows == kEveryLane ? RowMass(k) : Select(LanesOf(rows), RowMass(k), Splat(0));
+}
+
 /// The normal rows one by one: λ = −(vn − bias)/k, accumulated impulse ≥ 0 (in `impulse`, the
 /// group's or a copy of them).
-[[gnu::always_inline]] inline void SolveNormalRows(const ContactVelocityGroup& g,
+[[gnu::always_inline]] inline void SolveNormalRows(const ContactGroupHeader& h,
+                                                   const ContactVelocityGroup& g,
                                                    RealW (&impulse)[2], const LaneMasses& m,
                                                    const RealW* velocityBias, BodyStateW& a,
                                                    BodyStateW& b)
 {
+    const RealW normalMass[2] = {NormalMass(g.k11, h.hasPoint[0]), NormalMass(g.k22, h.solvesTwo)};
     for (int j = 0; j < 2; ++j)
     {
         const RealW vn = Dot(RelativeVelocity(a, b, g.rA[j], g.rB[j]), g.normal);
-        const RealW lambda = -g.normalMass[j] * LessBias(vn, velocityBias, j);
+        const RealW lambda = -normalMass[j] * LessBias(vn, velocityBias, j);
         const RealW newImpulse = MaxW(impulse[j] + lambda, Splat(0));
         const RealW applied = newImpulse - impulse[j];
         impulse[j] = newImpulse;
         ApplyImpulseW(m, a, b, g.rA[j], g.rB[j], applied * g.normal);
     }
+}
+
+/// The block lanes' BlockRows from K alone. There the preparation's condition test left
+/// det K > 0 (k11² < kMaxConditionNumber·det) and so k11, k22 > 0 (sums of non-negative terms
+/// whose product exceeds k12²): K⁻¹ = adj K / det and the rows' masses 1/kii are what
+/// InverseDeterminant and RowMass give, the preparation's bit for bit, without their tests for
+/// zero. The other lanes' are not taken.
+[[gnu::always_inline]] inline BlockRows BlockLaneRows(const ContactVelocityGroup& g)
+{
+    const RealW one = Splat(1);
+    const RealW invDet = one / (g.k11 * g.k22 - g.k12 * g.k12);
+    return {g.k12, invDet * g.k22, -invDet * g.k12, invDet * g.k11, {one / g.k11, one / g.k22}};
 }
 
 /// The two normal rows as one LCP, vn = K·x + b, by total enumeration of its four cases in
@@ -85,9 +107,7 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     const RealW vn2 = Dot(RelativeVelocity(a, b, g.rA[1], g.rB[1]), g.normal);
     const RealW b1 = LessBias(vn1, velocityBias, 0) - (g.k11 * a1 + g.k12 * a2);
     const RealW b2 = LessBias(vn2, velocityBias, 1) - (g.k12 * a1 + g.k22 * a2);
-    // K⁻¹ as the preparation's condition test left K (BlockRowsOf).
-    const auto [block1, block2] =
-        SolveBlockLanes(BlockRowsOf(g.k11, g.k12, g.k22, g.normalMass), a1, a2, b1, b2);
+    const auto [block1, block2] = SolveBlockLanes(BlockLaneRows(g), a1, a2, b1, b2);
     // Only the block lanes take the block's answer (every lane in most groups).
     const bool everyLane = block == kEveryLane;
     const RealW new1 = everyLane ? block1 : Select(LanesOf(block), block1, a1);
@@ -123,7 +143,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
     const bool anyScalar = (h.valid & ~h.block) != 0;
     if (!anyBlock)
     {
-        SolveNormalRows(g, g.normalImpulse, m, velocityBias, a, b);
+        SolveNormalRows(h, g, g.normalImpulse, m, velocityBias, a, b);
     }
     else if (!anyScalar)
     {
@@ -135,7 +155,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
         const MaskW block = LanesOf(h.block);
         BodyStateW aRows = a, bRows = b;
         RealW rows[2] = {g.normalImpulse[0], g.normalImpulse[1]};
-        SolveNormalRows(g, rows, m, velocityBias, aRows, bRows);
+        SolveNormalRows(h, g, rows, m, velocityBias, aRows, bRows);
         SolveNormalBlock(g, h.block, m, velocityBias, a, b);
         a.linear = Select(block, a.linear, aRows.linear);
         a.angular = Select(block, a.angular, aRows.angular);

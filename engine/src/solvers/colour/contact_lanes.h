@@ -43,9 +43,12 @@ struct ContactGroupHeader
     std::uint8_t storesA = 0, storesB = 0;
     std::uint8_t valid = 0;        ///< lanes holding a contact
     std::uint8_t hasPoint[2] = {}; ///< lanes with that manifold point
-    std::uint8_t block = 0;        ///< lanes whose normal rows are solved as the 2×2 block
-    std::uint8_t circles = 0;      ///< manifold type Circles
-    std::uint8_t faceB = 0;        ///< manifold type FaceB (FaceA where neither bit is set)
+    /// Lanes whose second normal row is solved: with two points, unless the block solver's
+    /// condition test dropped it (the row's normal mass is 0 in the others).
+    std::uint8_t solvesTwo = 0;
+    std::uint8_t block = 0;   ///< lanes whose normal rows are solved as the 2×2 block
+    std::uint8_t circles = 0; ///< manifold type Circles
+    std::uint8_t faceB = 0;   ///< manifold type FaceB (FaceA where neither bit is set)
     std::uint8_t extras = 0; ///< what the group's ContactGroupExtras hold (kTangentSpeed, kRolling)
 
     static constexpr std::uint8_t kTangentSpeed = 1; ///< a lane's tangentSpeed is not +0
@@ -56,14 +59,15 @@ struct ContactGroupHeader
 /// kLanes contacts' velocity rows, one per lane. A lane with one point has a second point with
 /// zero row masses and lever arms, which the updates leave unchanged; an empty lane has zero rows
 /// throughout and writes only the discard slot.
-/// K⁻¹ of the block solver is not kept: a sweep recomputes it from K with the preparation's
-/// operations (as Mat22::GetInverse), which gives it bit for bit.
+/// Neither the normal rows' masses nor K⁻¹ of the block solver are kept: a sweep recomputes them
+/// from K (k11 and k22 are the normal rows' k) with the preparation's operations (RowMass, as
+/// Mat22::GetInverse), which gives them bit for bit, in fewer bytes to stream than they take.
 struct ContactVelocityGroup
 {
     RealW friction;
     Vec2W normal;
     Vec2W rA[2], rB[2];
-    RealW normalMass[2], tangentMass[2];       ///< 1/k of each row (kg)
+    RealW tangentMass[2];                      ///< 1/k of each friction row (kg)
     RealW normalImpulse[2], tangentImpulse[2]; ///< accumulated (N·s)
     RealW k11, k12, k22;                       ///< block matrix K
 };

@@ -106,13 +106,6 @@ void GatherLane(ContactGroupHeader& h, ContactVelocityGroup& vg, ContactPosition
     }
 }
 
-/// 1/k of a row, 0 for a row no body can move along.
-[[gnu::always_inline]] inline RealW RowMass(RealW k)
-{
-    const MaskW positive = k > 0;
-    return Select(positive, Splat(1) / Select(positive, k, Splat(1)), Splat(0));
-}
-
 /// The scalar effective mass's inverse along n (seed: 1/m_eff = Σ 1/m + (r×n)²/I).
 [[gnu::always_inline]] inline RealW InverseEffectiveMass(const LaneMasses& m, Vec2W rA, Vec2W rB,
                                                          Vec2W n)
@@ -211,8 +204,6 @@ PreparedLanes PrepareRows(ContactGroupHeader& h, ContactVelocityGroup& vg,
         const Vec2W rB = world.points[j] - positionB.linear;
         vg.rA[j] = Select(has, rA, Vec2W{});
         vg.rB[j] = Select(has, rB, Vec2W{});
-        vg.normalMass[j] =
-            Select(has, RowMass(InverseEffectiveMass(masses, rA, rB, world.normal)), Splat(0));
         vg.tangentMass[j] =
             Select(has, RowMass(InverseEffectiveMass(masses, rA, rB, tangent)), Splat(0));
 
@@ -230,9 +221,11 @@ PreparedLanes PrepareRows(ContactGroupHeader& h, ContactVelocityGroup& vg,
         }
     }
 
-    // Two points, block solver on: K (K⁻¹ is left to the sweeps, which recompute it as
-    // ContactSolver's preparation computes it), unless the rows are nearly parallel, in which
-    // case only the first point is solved (Box2D; the second keeps its stored impulse).
+    // Two points, block solver on: K (K⁻¹ and the normal rows' masses are left to the sweeps,
+    // which recompute them as ContactSolver's preparation computes them: k11 and k22 are the
+    // rows' InverseEffectiveMass along the normal, lever arms and all), unless the rows are nearly
+    // parallel, in which case only the first point is solved (Box2D; the second keeps its stored
+    // impulse).
     const RealW mA = masses.invMassA, mB = masses.invMassB, iA = masses.invIA, iB = masses.invIB;
     const RealW rn1A = Cross(vg.rA[0], vg.normal), rn1B = Cross(vg.rB[0], vg.normal);
     const RealW rn2A = Cross(vg.rA[1], vg.normal), rn2B = Cross(vg.rB[1], vg.normal);
@@ -246,11 +239,11 @@ PreparedLanes PrepareRows(ContactGroupHeader& h, ContactVelocityGroup& vg,
     const MaskW block = blockSolver ? (twoPoints & wellConditioned) : MaskW{};
     h.block = static_cast<std::uint8_t>(BitsOf(block));
     const MaskW dropSecond = blockSolver ? (twoPoints & ~wellConditioned) : MaskW{};
-    vg.normalMass[1] = Select(dropSecond, Splat(0), vg.normalMass[1]);
     vg.tangentMass[1] = Select(dropSecond, Splat(0), vg.tangentMass[1]);
     vg.normalImpulse[1] = Select(dropSecond, Splat(0), vg.normalImpulse[1]);
     vg.tangentImpulse[1] = Select(dropSecond, Splat(0), vg.tangentImpulse[1]);
     out.solvesTwo = twoPoints & ~dropSecond;
+    h.solvesTwo = static_cast<std::uint8_t>(BitsOf(out.solvesTwo));
     return out;
 }
 

@@ -43,7 +43,6 @@ struct BlockRows
 [[gnu::always_inline]] inline BlockImpulsesW SolveBlockLanes(const BlockRows& g, RealW a1, RealW a2,
                                                              RealW b1, RealW b2)
 {
-    const RealW zero = Splat(0);
     // Case 1: both in contact, x = −K⁻¹·b.
     const RealW x1 = -(g.inv11 * b1 + g.inv12 * b2);
     const RealW x2 = -(g.inv12 * b1 + g.inv22 * b2);
@@ -57,14 +56,12 @@ struct BlockRows
     // Case 4: both separating.
     const MaskW case4 = (b1 >= 0) & (b2 >= 0);
 
-    RealW new1 = Select(case4, zero, a1), new2 = Select(case4, zero, a2);
-    new1 = Select(case3, zero, new1);
-    new2 = Select(case3, z2, new2);
-    new1 = Select(case2, y1, new1);
-    new2 = Select(case2, zero, new2);
-    new1 = Select(case1, x1, new1);
-    new2 = Select(case1, x2, new2);
-    return {new1, new2};
+    // The first case that holds picks: the first impulse x1, y1, 0 (cases 3, 4) or a1 (none), the
+    // second x2, 0 (case 2), z2, 0 (case 4) or a2; by masks, the same bits as a select per case.
+    const MaskW first12 = case1 | case2;
+    const MaskW none = ~(first12 | case3 | case4);
+    const MaskW takeY1 = case2 & ~case1, takeZ2 = case3 & ~first12;
+    return {Pick(case1, x1, takeY1, y1, none, a1), Pick(case1, x2, takeZ2, z2, none, a2)};
 }
 
 } // namespace meff::detail

@@ -381,6 +381,13 @@ inline TransformW Select(MaskW m, const TransformW& ifTrue, const TransformW& if
             Select(m, ifTrue.p, ifFalse.p)};
 }
 
+/// 1/k of a row, 0 for a row no body can move along (k ≤ 0).
+[[gnu::always_inline]] inline RealW RowMass(RealW k)
+{
+    const MaskW positive = k > 0;
+    return Select(positive, Splat(1) / Select(positive, k, Splat(1)), Splat(0));
+}
+
 /// 1/det of the lanes' 2×2 matrix [k11 k12; k21 k22], 0 where it is singular (as
 /// Mat22::GetInverse and Mat22::Solve).
 [[gnu::always_inline]] inline RealW InverseDeterminant(RealW k11, RealW k12, RealW k21, RealW k22)

@@ -54,6 +54,13 @@ inline RealW Select(MaskW m, RealW ifTrue, RealW ifFalse)
 {
     return m ? ifTrue : ifFalse;
 }
+/// x where mx is set, y where my is set, z where mz is set and +0 where none is, the masks being
+/// disjoint: each lane's bits are one operand's, as from selects, by three ands and two ors.
+inline RealW Pick(MaskW mx, RealW x, MaskW my, RealW y, MaskW mz, RealW z)
+{
+    return std::bit_cast<RealW>((mx & std::bit_cast<MaskW>(x)) | (my & std::bit_cast<MaskW>(y)) |
+                                (mz & std::bit_cast<MaskW>(z)));
+}
 inline RealW MinW(RealW a, RealW b)
 {
     return a < b ? a : b;
