@@ -82,6 +82,14 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     }
 }
 
+/// Makes the compiler forget the values it has loaded from memory (it emits no instruction): the
+/// group's rows read after it are read again where used, as the arithmetic's memory operands,
+/// instead of kept from before in registers (SSE2 has sixteen) and spilled to the stack.
+[[gnu::always_inline]] inline void ForgetLoads()
+{
+    asm volatile("" ::: "memory");
+}
+
 /// The block lanes' BlockRows from K alone. There the preparation's condition test left
 /// det K > 0 (k11² < kMaxConditionNumber·det) and so k11, k22 > 0 (sums of non-negative terms
 /// whose product exceeds k12²): K⁻¹ = adj K / det and the rows' masses 1/kii are what
@@ -107,6 +115,7 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     const RealW vn2 = Dot(RelativeVelocity(a, b, g.rA[1], g.rB[1]), g.normal);
     const RealW b1 = LessBias(vn1, velocityBias, 0) - (g.k11 * a1 + g.k12 * a2);
     const RealW b2 = LessBias(vn2, velocityBias, 1) - (g.k12 * a1 + g.k22 * a2);
+    ForgetLoads();
     const auto [block1, block2] = SolveBlockLanes(BlockLaneRows(g), a1, a2, b1, b2);
     // Only the block lanes take the block's answer (every lane in most groups).
     const bool everyLane = block == kEveryLane;
@@ -121,6 +130,28 @@ void SolveRolling(ContactVelocityGroup& g, ContactGroupExtras& e, const LaneMass
     b.angular = b.angular + m.invIB * (Cross(g.rB[0], P1) + Cross(g.rB[1], P2));
     g.normalImpulse[0] = new1;
     g.normalImpulse[1] = new2;
+}
+
+/// The normal rows of a group with both kinds of lanes: each lane takes the velocities and
+/// impulses of its own kind of solve. Not inlined: inlined, its copies of the bodies' states had
+/// the sweep keep more on the stack in every group, the others (nearly all) included.
+[[gnu::noinline]] void SolveMixedNormals(const ContactGroupHeader& h, ContactVelocityGroup& g,
+                                         const LaneMasses& m, const RealW* velocityBias,
+                                         BodyStateW& a, BodyStateW& b)
+{
+    const MaskW block = LanesOf(h.block);
+    BodyStateW aRows = a, bRows = b;
+    RealW rows[2] = {g.normalImpulse[0], g.normalImpulse[1]};
+    SolveNormalRows(h, g, rows, m, velocityBias, aRows, bRows);
+    SolveNormalBlock(g, h.block, m, velocityBias, a, b);
+    a.linear = Select(block, a.linear, aRows.linear);
+    a.angular = Select(block, a.angular, aRows.angular);
+    b.linear = Select(block, b.linear, bRows.linear);
+    b.angular = Select(block, b.angular, bRows.angular);
+    for (int j = 0; j < 2; ++j)
+    {
+        g.normalImpulse[j] = Select(block, g.normalImpulse[j], rows[j]);
+    }
 }
 
 void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
@@ -151,20 +182,7 @@ void SolveVelocityGroup(const ContactGroupHeader& h, ContactVelocityGroup& g,
     }
     else
     {
-        // Mixed group: each lane takes the velocities and impulses of its own kind of solve.
-        const MaskW block = LanesOf(h.block);
-        BodyStateW aRows = a, bRows = b;
-        RealW rows[2] = {g.normalImpulse[0], g.normalImpulse[1]};
-        SolveNormalRows(h, g, rows, m, velocityBias, aRows, bRows);
-        SolveNormalBlock(g, h.block, m, velocityBias, a, b);
-        a.linear = Select(block, a.linear, aRows.linear);
-        a.angular = Select(block, a.angular, aRows.angular);
-        b.linear = Select(block, b.linear, bRows.linear);
-        b.angular = Select(block, b.angular, bRows.angular);
-        for (int j = 0; j < 2; ++j)
-        {
-            g.normalImpulse[j] = Select(block, g.normalImpulse[j], rows[j]);
-        }
+        SolveMixedNormals(h, g, m, velocityBias, a, b);
     }
     ScatterStores(velocities, h.indexA, h.storesA, discard.own, a);
     ScatterStores(velocities, h.indexB, h.storesB, discard.own, b);
