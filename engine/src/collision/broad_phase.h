@@ -100,7 +100,7 @@ class DynamicTree
         }
     }
 
-    std::int32_t GetUserData(std::int32_t proxyId) const { return m_nodes[proxyId].userData; }
+    std::int32_t GetUserData(std::int32_t proxyId) const { return m_links[proxyId].userData; }
     const AABB& GetFatAABB(std::int32_t proxyId) const { return m_nodes[proxyId].aabb; }
     bool WasMoved(std::int32_t proxyId) const { return m_nodes[proxyId].moved; }
     ProxyLayers GetLayers(std::int32_t proxyId) const
@@ -146,14 +146,13 @@ class DynamicTree
     /// Checks parent links, heights, boxes and layer unions of the whole tree; for tests.
     bool Validate() const;
 
-    struct Node
+    /// The part of a node that a walk (Query, RayCast, BoxCast) reads: 32 bytes, aligned so
+    /// that one never straddles two cache lines. The rest is in NodeLinks, at the same index.
+    struct alignas(32) Node
     {
         AABB aabb;
-        std::int32_t userData = -1;
-        std::int32_t parentOrNext = kNullProxy; ///< parent, or next free node
         std::int32_t child1 = kNullProxy;
         std::int32_t child2 = kNullProxy;
-        std::int32_t height = -1; ///< leaf 0, free -1
         /// A leaf's ProxyLayers bits; an internal node's, the union of its leaves'.
         std::uint16_t categoryBits = 0;
         std::uint16_t maskBits = 0;
@@ -163,6 +162,15 @@ class DynamicTree
         /// for a moved leaf below (TreeUpdate::EnlargeAndRebuild); Rebuild builds it again.
         bool enlarged = false;
         bool IsLeaf() const { return child1 == kNullProxy; }
+    };
+    // A whole number of nodes per cache line (two with float, one with double).
+    static_assert(64 % sizeof(Node) == 0);
+    /// The part of a node that only the tree's updates and the proxies' owners read.
+    struct NodeLinks
+    {
+        std::int32_t userData = -1;
+        std::int32_t parentOrNext = kNullProxy; ///< parent, or next free node
+        std::int32_t height = -1;               ///< leaf 0, free -1
     };
 
   private:
@@ -214,7 +222,10 @@ class DynamicTree
     /// in m_buildSplits (parents first) and the ranges below them in m_buildTasks.
     void SplitTop(int begin, int end, int depth, int offset, int levels);
 
+    /// The nodes, split in two arrays indexed alike (node id = proxy id): what the walks read,
+    /// and the rest. Every change to the pool resizes both.
     std::vector<Node> m_nodes;
+    std::vector<NodeLinks> m_links;
     std::int32_t m_root = kNullProxy;
     std::int32_t m_freeList = kNullProxy;
     std::int32_t m_nodeCount = 0;

@@ -17,34 +17,44 @@ void DynamicTree::Walk(const AABB& aabb, const ProxyLayers* layers, Callback&& c
 {
     // Depth-first with an explicit stack, visiting child2 before child1 (child1 is pushed
     // first), as Box2D does. The box is copied: the callback may change what `aabb` names.
+    // A node is tested before it is pushed rather than after it is popped: the same nodes are
+    // visited in the same order (the tree does not change during the walk), but the ones that
+    // fail cost no trip through the stack, and the two children, side by side in one cache line
+    // or two, are read together.
     const AABB box = aabb;
+    const auto enters = [this, &box, layers](std::int32_t nodeId)
+    {
+        const Node& node = m_nodes[nodeId];
+        return TestOverlap(node.aabb, box) &&
+               (layers == nullptr || LayersMeet(node.categoryBits, node.maskBits, *layers));
+    };
+    if (m_root == kNullProxy || !enters(m_root))
+    {
+        return;
+    }
     TreeWalkStack stack;
     stack.Push(m_root);
     while (!stack.Empty())
     {
         const std::int32_t nodeId = stack.Pop();
-        if (nodeId == kNullProxy)
-        {
-            continue;
-        }
-
         const Node& node = m_nodes[nodeId];
-        if (!TestOverlap(node.aabb, box) ||
-            (layers != nullptr && !LayersMeet(node.categoryBits, node.maskBits, *layers)))
-        {
-            continue;
-        }
         if (node.IsLeaf())
         {
             if (!callback(nodeId))
             {
                 return;
             }
+            continue;
         }
-        else
+        const std::int32_t child1 = node.child1;
+        const std::int32_t child2 = node.child2;
+        if (enters(child1))
         {
-            stack.Push(node.child1);
-            stack.Push(node.child2);
+            stack.Push(child1);
+        }
+        if (enters(child2))
+        {
+            stack.Push(child2);
         }
     }
 }

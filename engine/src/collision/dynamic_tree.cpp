@@ -31,10 +31,11 @@ constexpr std::int32_t kInitialNodeCapacity = 16;
 DynamicTree::DynamicTree(FatBoxRule rule) : m_rule(rule)
 {
     m_nodes.resize(kInitialNodeCapacity);
+    m_links.resize(kInitialNodeCapacity);
     for (std::int32_t i = 0; i < kInitialNodeCapacity; ++i)
     {
-        m_nodes[i].parentOrNext = i + 1 < kInitialNodeCapacity ? i + 1 : kNullProxy;
-        m_nodes[i].height = -1;
+        m_links[i].parentOrNext = i + 1 < kInitialNodeCapacity ? i + 1 : kNullProxy;
+        m_links[i].height = -1;
     }
     m_freeList = 0;
 }
@@ -48,22 +49,24 @@ std::int32_t DynamicTree::AllocateNode()
         const auto oldCapacity = static_cast<std::int32_t>(m_nodes.size());
         const std::int32_t newCapacity = 2 * oldCapacity;
         m_nodes.resize(static_cast<std::size_t>(newCapacity));
+        m_links.resize(static_cast<std::size_t>(newCapacity));
         for (std::int32_t i = oldCapacity; i < newCapacity; ++i)
         {
-            m_nodes[i].parentOrNext = i + 1 < newCapacity ? i + 1 : kNullProxy;
-            m_nodes[i].height = -1;
+            m_links[i].parentOrNext = i + 1 < newCapacity ? i + 1 : kNullProxy;
+            m_links[i].height = -1;
         }
         m_freeList = oldCapacity;
     }
 
     const std::int32_t id = m_freeList;
     Node& node = m_nodes[id];
-    m_freeList = node.parentOrNext;
-    node.parentOrNext = kNullProxy;
+    NodeLinks& links = m_links[id];
+    m_freeList = links.parentOrNext;
+    links.parentOrNext = kNullProxy;
     node.child1 = kNullProxy;
     node.child2 = kNullProxy;
-    node.height = 0;
-    node.userData = -1;
+    links.height = 0;
+    links.userData = -1;
     node.categoryBits = 0;
     node.maskBits = 0;
     node.bitsDecide = true;
@@ -75,9 +78,9 @@ std::int32_t DynamicTree::AllocateNode()
 
 void DynamicTree::FreeNode(std::int32_t id)
 {
-    Node& node = m_nodes[id];
-    node.parentOrNext = m_freeList;
-    node.height = -1;
+    NodeLinks& links = m_links[id];
+    links.parentOrNext = m_freeList;
+    links.height = -1;
     m_freeList = id;
     --m_nodeCount;
 }
@@ -95,8 +98,8 @@ std::int32_t DynamicTree::CreateProxy(const AABB& aabb, std::int32_t userData, P
     const Vec2 r(m_rule.margin, m_rule.margin);
     node.aabb.lowerBound = aabb.lowerBound - r;
     node.aabb.upperBound = aabb.upperBound + r;
-    node.userData = userData;
-    node.height = 0;
+    m_links[proxyId].userData = userData;
+    m_links[proxyId].height = 0;
     node.categoryBits = layers.categoryBits;
     node.maskBits = layers.maskBits;
     node.bitsDecide = layers.bitsDecide;
@@ -189,7 +192,7 @@ void DynamicTree::InsertLeaf(std::int32_t leaf)
     if (m_root == kNullProxy)
     {
         m_root = leaf;
-        m_nodes[leaf].parentOrNext = kNullProxy;
+        m_links[leaf].parentOrNext = kNullProxy;
         return;
     }
 
@@ -233,21 +236,21 @@ void DynamicTree::InsertLeaf(std::int32_t leaf)
     }
 
     const std::int32_t sibling = index;
-    const std::int32_t oldParent = m_nodes[sibling].parentOrNext;
+    const std::int32_t oldParent = m_links[sibling].parentOrNext;
     // May grow the pool: no Node references are held across this call.
     const std::int32_t newParent = AllocateNode();
     {
         Node& parent = m_nodes[newParent];
-        parent.parentOrNext = oldParent;
-        parent.userData = -1;
+        m_links[newParent].parentOrNext = oldParent;
+        m_links[newParent].userData = -1;
         parent.aabb = Combine(leafBox, m_nodes[sibling].aabb);
-        parent.height = m_nodes[sibling].height + 1;
+        m_links[newParent].height = m_links[sibling].height + 1;
         parent.child1 = sibling;
         parent.child2 = leaf;
         UniteLayers(parent);
     }
-    m_nodes[sibling].parentOrNext = newParent;
-    m_nodes[leaf].parentOrNext = newParent;
+    m_links[sibling].parentOrNext = newParent;
+    m_links[leaf].parentOrNext = newParent;
 
     if (oldParent != kNullProxy)
     {
@@ -267,19 +270,18 @@ void DynamicTree::InsertLeaf(std::int32_t leaf)
     }
 
     // Back up to the root: rebalance, then refresh height and box.
-    index = m_nodes[leaf].parentOrNext;
+    index = m_links[leaf].parentOrNext;
     while (index != kNullProxy)
     {
         index = Balance(index);
 
         Node& node = m_nodes[index];
-        const Node& c1 = m_nodes[node.child1];
-        const Node& c2 = m_nodes[node.child2];
-        node.height = 1 + std::max(c1.height, c2.height);
-        node.aabb = Combine(c1.aabb, c2.aabb);
+        m_links[index].height =
+            1 + std::max(m_links[node.child1].height, m_links[node.child2].height);
+        node.aabb = Combine(m_nodes[node.child1].aabb, m_nodes[node.child2].aabb);
         UniteLayers(node);
 
-        index = node.parentOrNext;
+        index = m_links[index].parentOrNext;
     }
 }
 
@@ -291,15 +293,15 @@ void DynamicTree::RemoveLeaf(std::int32_t leaf)
         return;
     }
 
-    const std::int32_t parent = m_nodes[leaf].parentOrNext;
-    const std::int32_t grand = m_nodes[parent].parentOrNext;
+    const std::int32_t parent = m_links[leaf].parentOrNext;
+    const std::int32_t grand = m_links[parent].parentOrNext;
     const std::int32_t sibling =
         m_nodes[parent].child1 == leaf ? m_nodes[parent].child2 : m_nodes[parent].child1;
 
     if (grand == kNullProxy)
     {
         m_root = sibling;
-        m_nodes[sibling].parentOrNext = kNullProxy;
+        m_links[sibling].parentOrNext = kNullProxy;
         FreeNode(parent);
         return;
     }
@@ -314,7 +316,7 @@ void DynamicTree::RemoveLeaf(std::int32_t leaf)
     {
         m_nodes[grand].child2 = sibling;
     }
-    m_nodes[sibling].parentOrNext = grand;
+    m_links[sibling].parentOrNext = grand;
     FreeNode(parent);
 
     std::int32_t index = grand;
@@ -323,13 +325,12 @@ void DynamicTree::RemoveLeaf(std::int32_t leaf)
         index = Balance(index);
 
         Node& node = m_nodes[index];
-        const Node& c1 = m_nodes[node.child1];
-        const Node& c2 = m_nodes[node.child2];
-        node.aabb = Combine(c1.aabb, c2.aabb);
-        node.height = 1 + std::max(c1.height, c2.height);
+        node.aabb = Combine(m_nodes[node.child1].aabb, m_nodes[node.child2].aabb);
+        m_links[index].height =
+            1 + std::max(m_links[node.child1].height, m_links[node.child2].height);
         UniteLayers(node);
 
-        index = node.parentOrNext;
+        index = m_links[index].parentOrNext;
     }
 }
 
@@ -339,30 +340,32 @@ void DynamicTree::RemoveLeaf(std::int32_t leaf)
 std::int32_t DynamicTree::Balance(std::int32_t iA)
 {
     Node& a = m_nodes[iA];
-    if (a.IsLeaf() || a.height < 2)
+    NodeLinks& aLinks = m_links[iA];
+    if (a.IsLeaf() || aLinks.height < 2)
     {
         return iA;
     }
 
     const std::int32_t iB = a.child1;
     const std::int32_t iC = a.child2;
-    const std::int32_t balance = m_nodes[iC].height - m_nodes[iB].height;
+    const std::int32_t balance = m_links[iC].height - m_links[iB].height;
 
     // Lifts `iUp` (a child of A) above A. `upIsChild2` tells which slot of A it occupied; the
     // child of `up` left behind replaces it in that same slot.
     auto rotate = [&](std::int32_t iUp, std::int32_t iStay, bool upIsChild2)
     {
         Node& up = m_nodes[iUp];
+        NodeLinks& upLinks = m_links[iUp];
         const std::int32_t iF = up.child1;
         const std::int32_t iG = up.child2;
 
         up.child1 = iA;
-        up.parentOrNext = a.parentOrNext;
-        a.parentOrNext = iUp;
+        upLinks.parentOrNext = aLinks.parentOrNext;
+        aLinks.parentOrNext = iUp;
 
-        if (up.parentOrNext != kNullProxy)
+        if (upLinks.parentOrNext != kNullProxy)
         {
-            Node& above = m_nodes[up.parentOrNext];
+            Node& above = m_nodes[upLinks.parentOrNext];
             if (above.child1 == iA)
             {
                 above.child1 = iUp;
@@ -378,11 +381,11 @@ std::int32_t DynamicTree::Balance(std::int32_t iA)
         }
 
         // The taller grandchild stays under `up`; ties keep G (up's child2).
-        const bool keepF = m_nodes[iF].height > m_nodes[iG].height;
+        const bool keepF = m_links[iF].height > m_links[iG].height;
         const std::int32_t iKeep = keepF ? iF : iG;
         const std::int32_t iGive = keepF ? iG : iF;
-        Node& keep = m_nodes[iKeep];
-        Node& give = m_nodes[iGive];
+        const Node& keep = m_nodes[iKeep];
+        const Node& give = m_nodes[iGive];
         const Node& stay = m_nodes[iStay];
 
         up.child2 = iKeep;
@@ -394,12 +397,12 @@ std::int32_t DynamicTree::Balance(std::int32_t iA)
         {
             a.child1 = iGive;
         }
-        give.parentOrNext = iA;
+        m_links[iGive].parentOrNext = iA;
         a.aabb = Combine(stay.aabb, give.aabb);
         up.aabb = Combine(a.aabb, keep.aabb);
 
-        a.height = 1 + std::max(stay.height, give.height);
-        up.height = 1 + std::max(a.height, keep.height);
+        aLinks.height = 1 + std::max(m_links[iStay].height, m_links[iGive].height);
+        upLinks.height = 1 + std::max(aLinks.height, m_links[iKeep].height);
         UniteLayers(a); // `up`'s are set by the caller's walk up, which refits it next
     };
 
@@ -430,7 +433,7 @@ int DynamicTree::GetHeight() const
     {
         return 0;
     }
-    return m_nodes[m_root].height;
+    return m_links[m_root].height;
 }
 
 bool DynamicTree::Validate() const
@@ -440,9 +443,13 @@ bool DynamicTree::Validate() const
 
     // The free list: in range, marked free, no cycle.
     std::int32_t freeCount = 0;
-    for (std::int32_t i = m_freeList; i != kNullProxy; i = m_nodes[i].parentOrNext)
+    if (m_links.size() != m_nodes.size())
     {
-        if (!inRange(i) || m_nodes[i].height != -1 || freeCount > capacity)
+        return false;
+    }
+    for (std::int32_t i = m_freeList; i != kNullProxy; i = m_links[i].parentOrNext)
+    {
+        if (!inRange(i) || m_links[i].height != -1 || freeCount > capacity)
         {
             return false;
         }
@@ -457,7 +464,7 @@ bool DynamicTree::Validate() const
     {
         return m_nodeCount == 0;
     }
-    if (!inRange(m_root) || m_nodes[m_root].parentOrNext != kNullProxy)
+    if (!inRange(m_root) || m_links[m_root].parentOrNext != kNullProxy)
     {
         return false;
     }
@@ -475,18 +482,19 @@ bool DynamicTree::Validate() const
             return false;
         }
         const Node& node = m_nodes[i];
+        const NodeLinks& links = m_links[i];
         // Marks (TreeUpdate::EnlargeAndRebuild): only internal nodes, only while a box has
         // grown since the last Rebuild, and a marked node's parent is marked too (the root
         // aside), so that Rebuild's walk down the marked nodes reaches every one.
         if (node.enlarged &&
             (node.IsLeaf() || !m_grown ||
-             (node.parentOrNext != kNullProxy && !m_nodes[node.parentOrNext].enlarged)))
+             (links.parentOrNext != kNullProxy && !m_nodes[links.parentOrNext].enlarged)))
         {
             return false;
         }
         if (node.IsLeaf())
         {
-            if (node.child2 != kNullProxy || node.height != 0)
+            if (node.child2 != kNullProxy || links.height != 0)
             {
                 return false;
             }
@@ -494,7 +502,7 @@ bool DynamicTree::Validate() const
         }
         for (const std::int32_t child : {node.child1, node.child2})
         {
-            if (!inRange(child) || m_nodes[child].parentOrNext != i || m_nodes[child].height < 0)
+            if (!inRange(child) || m_links[child].parentOrNext != i || m_links[child].height < 0)
             {
                 return false;
             }
@@ -502,7 +510,7 @@ bool DynamicTree::Validate() const
         }
         const Node& c1 = m_nodes[node.child1];
         const Node& c2 = m_nodes[node.child2];
-        if (node.height != 1 + std::max(c1.height, c2.height))
+        if (links.height != 1 + std::max(m_links[node.child1].height, m_links[node.child2].height))
         {
             return false;
         }

@@ -57,7 +57,7 @@ int TopLevels(const TaskSystem* tasks)
 void DynamicTree::EnlargeAncestors(std::int32_t leaf)
 {
     const AABB box = m_nodes[leaf].aabb;
-    std::int32_t index = m_nodes[leaf].parentOrNext;
+    std::int32_t index = m_links[leaf].parentOrNext;
     while (index != kNullProxy)
     {
         Node& node = m_nodes[index];
@@ -68,7 +68,7 @@ void DynamicTree::EnlargeAncestors(std::int32_t leaf)
         }
         node.aabb = Combine(node.aabb, box);
         node.enlarged = true;
-        index = node.parentOrNext;
+        index = m_links[index].parentOrNext;
     }
     m_grown = true;
 }
@@ -79,8 +79,8 @@ void DynamicTree::SetFatBoxForRebuild(std::int32_t proxyId, const AABB& fat)
     m_nodes[proxyId].moved = true;
     // A marked node's ancestors are all marked, or being marked by the thread that marked it
     // (EnlargeAncestors too marks up to the root or to a marked node), so the walk stops at one.
-    for (std::int32_t index = m_nodes[proxyId].parentOrNext; index != kNullProxy;
-         index = m_nodes[index].parentOrNext)
+    for (std::int32_t index = m_links[proxyId].parentOrNext; index != kNullProxy;
+         index = m_links[index].parentOrNext)
     {
         const std::atomic_ref<bool> enlarged(m_nodes[index].enlarged);
         if (enlarged.load(std::memory_order_relaxed))
@@ -152,7 +152,7 @@ void DynamicTree::RebuildGrown(TaskSystem* tasks)
         }
         m_root = RootOf(0, count, 0);
     }
-    m_nodes[m_root].parentOrNext = kNullProxy;
+    m_links[m_root].parentOrNext = kNullProxy;
 }
 
 void DynamicTree::SplitTop(int begin, int end, int depth, int offset, int levels)
@@ -170,9 +170,12 @@ void DynamicTree::SplitTop(int begin, int end, int depth, int offset, int levels
 
 int DynamicTree::CountEnlarged() const
 {
-    return static_cast<int>(std::count_if(m_nodes.begin(), m_nodes.end(),
-                                          [](const Node& node)
-                                          { return node.height > 0 && node.enlarged; }));
+    int count = 0;
+    for (std::size_t i = 0; i < m_nodes.size(); ++i)
+    {
+        count += m_links[i].height > 0 && m_nodes[i].enlarged ? 1 : 0;
+    }
+    return count;
 }
 
 int DynamicTree::SplitRange(int begin, int end, int depth)
@@ -238,10 +241,10 @@ void DynamicTree::LinkNode(std::int32_t index, std::int32_t child1, std::int32_t
     node.child1 = child1;
     node.child2 = child2;
     node.aabb = Combine(m_nodes[child1].aabb, m_nodes[child2].aabb);
-    node.height = 1 + std::max(m_nodes[child1].height, m_nodes[child2].height);
+    m_links[index].height = 1 + std::max(m_links[child1].height, m_links[child2].height);
     UniteLayers(node);
-    m_nodes[child1].parentOrNext = index;
-    m_nodes[child2].parentOrNext = index;
+    m_links[child1].parentOrNext = index;
+    m_links[child2].parentOrNext = index;
 }
 
 } // namespace meff::detail
