@@ -146,8 +146,9 @@ class DynamicTree
     /// Checks parent links, heights, boxes and layer unions of the whole tree; for tests.
     bool Validate() const;
 
-    /// The part of a node that a walk (Query, RayCast, BoxCast) reads: 32 bytes, aligned so
-    /// that one never straddles two cache lines. The rest is in NodeLinks, at the same index.
+    /// The part of a node that a walk (Query, RayCast, BoxCast) reads: 32 bytes (64 with
+    /// MEFF_DOUBLE), aligned so that one never straddles two cache lines. The rest is in
+    /// NodeLinks, at the same index.
     struct alignas(32) Node
     {
         AABB aabb;
