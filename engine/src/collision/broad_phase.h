@@ -180,6 +180,8 @@ class DynamicTree
     void Walk(const AABB& aabb, const ProxyLayers* layers, Callback&& callback) const;
     /// Sets an internal node's layers to the union of its two children's.
     void UniteLayers(Node& node);
+    /// Sets an internal node's box, height and layers from its two children's.
+    void Refit(std::int32_t index);
     std::int32_t AllocateNode();
     void FreeNode(std::int32_t node);
     void InsertLeaf(std::int32_t leaf);

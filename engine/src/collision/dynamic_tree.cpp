@@ -274,13 +274,7 @@ void DynamicTree::InsertLeaf(std::int32_t leaf)
     while (index != kNullProxy)
     {
         index = Balance(index);
-
-        Node& node = m_nodes[index];
-        m_links[index].height =
-            1 + std::max(m_links[node.child1].height, m_links[node.child2].height);
-        node.aabb = Combine(m_nodes[node.child1].aabb, m_nodes[node.child2].aabb);
-        UniteLayers(node);
-
+        Refit(index);
         index = m_links[index].parentOrNext;
     }
 }
@@ -323,13 +317,7 @@ void DynamicTree::RemoveLeaf(std::int32_t leaf)
     while (index != kNullProxy)
     {
         index = Balance(index);
-
-        Node& node = m_nodes[index];
-        node.aabb = Combine(m_nodes[node.child1].aabb, m_nodes[node.child2].aabb);
-        m_links[index].height =
-            1 + std::max(m_links[node.child1].height, m_links[node.child2].height);
-        UniteLayers(node);
-
+        Refit(index);
         index = m_links[index].parentOrNext;
     }
 }
@@ -425,6 +413,14 @@ void DynamicTree::UniteLayers(Node& node)
     const Node& c2 = m_nodes[node.child2];
     node.categoryBits = c1.categoryBits | c2.categoryBits;
     node.maskBits = c1.maskBits | c2.maskBits;
+}
+
+void DynamicTree::Refit(std::int32_t index)
+{
+    Node& node = m_nodes[index];
+    node.aabb = Combine(m_nodes[node.child1].aabb, m_nodes[node.child2].aabb);
+    m_links[index].height = 1 + std::max(m_links[node.child1].height, m_links[node.child2].height);
+    UniteLayers(node);
 }
 
 int DynamicTree::GetHeight() const

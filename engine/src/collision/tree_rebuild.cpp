@@ -237,12 +237,9 @@ std::int32_t DynamicTree::BuildRange(int begin, int end, int depth, int offset)
 
 void DynamicTree::LinkNode(std::int32_t index, std::int32_t child1, std::int32_t child2)
 {
-    Node& node = m_nodes[index];
-    node.child1 = child1;
-    node.child2 = child2;
-    node.aabb = Combine(m_nodes[child1].aabb, m_nodes[child2].aabb);
-    m_links[index].height = 1 + std::max(m_links[child1].height, m_links[child2].height);
-    UniteLayers(node);
+    m_nodes[index].child1 = child1;
+    m_nodes[index].child2 = child2;
+    Refit(index);
     m_links[child1].parentOrNext = index;
     m_links[child2].parentOrNext = index;
 }
