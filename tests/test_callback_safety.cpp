@@ -3,14 +3,16 @@
 // The user's callbacks (issue 36): installing a pre-solve callback that enables every contact,
 // or a custom filter that allows every pair, changes no result in any back end; a callback may
 // not change the world (itself included) while a step runs, and a refusal names the callback
-// it came from.
+// it came from; nor may a query's callback, or DebugDraw's methods, while they walk the world.
 #include <catch2/catch.hpp>
 
 #include "error_checks.h"
 #include "world_fixtures.h"
+#include "meff/debug_draw.h"
 #include "meff/world.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -164,3 +166,146 @@ TEST_CASE("Misuse inside the custom filter is refused, named as from the custom 
                                           "World::Step (from the custom filter)"));
     world.Step(Real(1) / 60);
 }
+
+namespace
+{
+
+/// A DebugDraw that calls `onDraw` from each of its methods.
+class CallingDraw final : public DebugDraw
+{
+  public:
+    explicit CallingDraw(std::function<void()> onDraw) : m_onDraw(std::move(onDraw)) {}
+    void DrawPolygon(std::span<const Vec2>, const DrawColor&) override { m_onDraw(); }
+    void DrawSolidPolygon(std::span<const Vec2>, const DrawColor&) override { m_onDraw(); }
+    void DrawCircle(Vec2, Real, const DrawColor&) override { m_onDraw(); }
+    void DrawSolidCircle(Vec2, Real, Vec2, const DrawColor&) override { m_onDraw(); }
+    void DrawSegment(Vec2, Vec2, const DrawColor&) override { m_onDraw(); }
+    void DrawTransform(const Transform&) override { m_onDraw(); }
+    void DrawPoint(Vec2, Real, const DrawColor&) override { m_onDraw(); }
+
+  private:
+    std::function<void()> m_onDraw;
+};
+
+} // namespace
+
+TEST_CASE("A query's callback, or DebugDraw's methods, cannot change the world they walk",
+          "[callbacks][queries][lifecycle]")
+{
+    // Destroying a body from an overlap callback freed the tree nodes the query was walking
+    // (AddressSanitizer: heap-use-after-free); every call that changes the world is refused
+    // from there, as from the pre-solve callback, and the world is left as it was.
+    World world = Pile(SolverKind::Colour);
+    Hashes(world, 60);
+    const std::vector<BodyId> bodies = world.GetBodies();
+    const BodyId ground = bodies.front();
+    const BodyId box = bodies[bodies.size() / 2];
+    const Vec2 boxCentre = world.GetPosition(box);
+    const std::uint64_t before = world.GetStateHash();
+
+    std::vector<std::string> refusals;
+    int calls = 0;
+    // Each call that would change the world, tried from inside the walk.
+    const auto tryChanges = [&]
+    {
+        ++calls;
+        if (calls > 1)
+        {
+            return; // once per query is enough
+        }
+        const auto expectRefused = [&refusals](auto&& call)
+        { refusals.push_back(meff::test::ErrorMessageOf(call)); };
+        expectRefused([&] { world.DestroyBody(box); });
+        expectRefused([&] { world.DestroyBody(ground); });
+        expectRefused([&] { static_cast<void>(world.CreateBody({})); });
+        expectRefused([&] { world.SetTransform(box, {0, 100}, 0); });
+        expectRefused([&] { world.Step(Real(1) / 60); });
+        expectRefused([&] { world.RestoreSnapshot(world.SaveSnapshot()); });
+    };
+    constexpr std::size_t kTries = 6; // the calls tryChanges makes
+    const AABB everything{{-1000, -1000}, {1000, 1000}};
+    const QueryFilter all{};
+
+    SECTION("OverlapAABB")
+    {
+        world.OverlapAABB(everything, all,
+                          [&](ShapeId)
+                          {
+                              tryChanges();
+                              return true;
+                          });
+    }
+    SECTION("OverlapPoint")
+    {
+        world.OverlapPoint(boxCentre, all,
+                           [&](ShapeId)
+                           {
+                               tryChanges();
+                               return true;
+                           });
+    }
+    SECTION("CastRay")
+    {
+        world.CastRay({-100, boxCentre.y}, {200, 0}, all,
+                      [&](ShapeId, Vec2, Vec2, Real)
+                      {
+                          tryChanges();
+                          return Real(1);
+                      });
+    }
+    SECTION("CastShape")
+    {
+        world.CastShape(Circle{{0, 0}, Real(0.25)}, Transform({-100, boxCentre.y}, Rot(0)),
+                        {200, 0}, all,
+                        [&](ShapeId, Vec2, Vec2, Real)
+                        {
+                            tryChanges();
+                            return Real(1);
+                        });
+    }
+    SECTION("CollideMover")
+    {
+        // Standing on the ground, clear of the pile: 2 cm above the segment.
+        const Capsule mover{{-10, Real(0.32)}, {-10, Real(0.72)}, Real(0.3)};
+        world.CollideMover(mover, all,
+                           [&](ShapeId, const CollisionPlane&)
+                           {
+                               tryChanges();
+                               return true;
+                           });
+    }
+    SECTION("Draw")
+    {
+        CallingDraw draw(tryChanges);
+        world.Draw(draw);
+    }
+
+    REQUIRE(calls > 0);
+    REQUIRE(refusals.size() == kTries);
+    for (const std::string& refusal : refusals)
+    {
+        CHECK_THAT(refusal, Catch::Contains("called while a query or World::Draw walks the world "
+                                            "(from its callback)"));
+    }
+    CHECK(world.GetStateHash() == before); // nothing changed
+    CHECK(world.GetBodies() == bodies);
+    // After the walk, the same calls are accepted again.
+    MEFF_CHECK_NO_ERROR(world.DestroyBody(box));
+    MEFF_CHECK_NO_ERROR(world.Step(Real(1) / 60));
+}
+
+#if MEFF_EXCEPTIONS
+TEST_CASE("A query left by an exception from its callback leaves the world changeable",
+          "[callbacks][queries][lifecycle]")
+{
+    World world = Pile(SolverKind::Colour);
+    const BodyId box = world.GetBodies().back();
+    struct Stop
+    {
+    };
+    CHECK_THROWS_AS(world.OverlapAABB({{-1000, -1000}, {1000, 1000}}, {},
+                                      [](ShapeId) -> bool { throw Stop{}; }),
+                    Stop);
+    MEFF_CHECK_NO_ERROR(world.DestroyBody(box));
+}
+#endif

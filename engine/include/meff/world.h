@@ -398,10 +398,12 @@ class World
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
 
     // Queries (world_query.cpp). They go through the broad phase, so a query only visits the
-    // part of the tree near what it asks about, not every shape. Do not create, destroy or move
-    // anything, or step, from inside a callback: the broad phase being walked would change
-    // under the query. Each walk of the tree keeps its own stack, so queries write nothing in the
-    // world: several threads may query one world at once while none changes it. Bad arguments
+    // part of the tree near what it asks about, not every shape. A callback must not create,
+    // destroy or move anything, or step: the broad phase being walked would change under the
+    // query, so such calls from a callback (or from DebugDraw's methods during Draw) are refused
+    // (InvalidArgument "... called while a query or World::Draw walks the world ..."). Each walk of
+    // the tree keeps its own stack, so queries write nothing in the world but an atomic count of
+    // the walks: several threads may query one world at once while none changes it. Bad arguments
     // (non-finite numbers, an inverted box, a degenerate shape) throw InvalidArgument naming the
     // argument. Sensor shapes are found like any other (as Box2D 2.4.1): filter them with
     // QueryFilter or the callback.
@@ -497,7 +499,8 @@ class World
     // Drawing
     /// Describes the world to `draw` (shapes, joints and, from the last step's reports,
     /// contacts and impulses), as `flags` asks. Draws nothing itself. Drawing contacts builds
-    /// the reports if they are not built yet (see GetContactReports): not thread-safe.
+    /// the reports if they are not built yet (see GetContactReports): not thread-safe. DebugDraw's
+    /// methods must not change the world: such calls are refused, as from a query's callback.
     void Draw(DebugDraw& draw, const DrawFlags& flags = {}) const;
 
   private:

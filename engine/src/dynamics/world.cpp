@@ -315,6 +315,13 @@ bool detail::RequireNotStepping(const WorldState& world, const char* call)
                                       (world.callback != nullptr ? world.callback : "a callback") +
                                       "); the callback must not change the world"));
     }
+    if (world.walks.Any())
+    {
+        return Refuse(InvalidArgument(std::string(call) +
+                                      ": called while a query or World::Draw walks the world "
+                                      "(from its callback); the callback must not change the "
+                                      "world"));
+    }
     return true;
 }
 

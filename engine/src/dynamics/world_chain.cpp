@@ -152,10 +152,8 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
 void World::DestroyChain(ChainId id)
 {
     WorldState& world = State();
-    if (world.stepping)
+    if (!RequireNotStepping(world, "World::DestroyChain"))
     {
-        ReportError(InvalidArgument("World::DestroyChain: called during World::Step (from the "
-                                    "pre-solve callback); the callback must not change the world"));
         return;
     }
     ChainSlot* const found = ResolveChain(world, id);

@@ -206,6 +206,7 @@ void DrawSlideAxis(DebugDraw& draw, const Joint& joint, const Transform& xfA, Ve
 void World::Draw(DebugDraw& draw, const DrawFlags& flags) const
 {
     const WorldState& world = State();
+    const InWalk walk(world); // DebugDraw's methods must not change what is drawn
     if (flags.contacts || flags.contactImpulses)
     {
         // As GetContactReports: built when first needed (the state is not const, this view is).

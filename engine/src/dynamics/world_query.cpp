@@ -9,7 +9,8 @@
 // and shape casts, which Box2D 2.4.1 lacks, follow Box2D v3's b2World_OverlapPoint and
 // b2World_CastShape: the broad phase finds candidates, an exact test per shape decides.
 //
-// Every query only reads the world.
+// Every query only reads the world; while one walks it, calls that would change it (from the
+// query's callback) are refused (RequireNotStepping).
 #include "collision/broad_phase.h"
 #include "core/report_error.h"
 #include "dynamics/world_state.h"
@@ -152,6 +153,7 @@ struct ClosestHit
 void CastProxy(const WorldState& world, const DistanceProxy& proxy, const AABB& startBox,
                const Transform& start, Vec2 translation, QueryFilter filter, CastCallback callback)
 {
+    const InWalk walk(world); // the callback must not change what is walked
     const Tolerances& tolerances = world.tolerances;
 
     // The broad phase is searched with the path of the start box's centre, every fat box grown
@@ -203,6 +205,7 @@ void World::CastRay(Vec2 origin, Vec2 translation, QueryFilter filter, CastCallb
         return;
     }
     const WorldState& world = State();
+    const InWalk walk(world); // the callback must not change what is walked
 
     const RayCastInput input{origin, origin + translation, 1};
     world.broadPhase.RayCast(
@@ -245,6 +248,7 @@ void World::OverlapAABB(const AABB& box, QueryFilter filter, OverlapCallback cal
         return;
     }
     const WorldState& world = State();
+    const InWalk walk(world); // the callback must not change what is walked
     world.broadPhase.Query(box, {filter.categoryBits, filter.maskBits},
                            [&](std::int32_t proxyId)
                            {
@@ -260,6 +264,7 @@ void World::OverlapPoint(Vec2 point, QueryFilter filter, OverlapCallback callbac
         return;
     }
     const WorldState& world = State();
+    const InWalk walk(world); // the callback must not change what is walked
     // A shape containing the point has it inside its tight box, so inside its fat box.
     world.broadPhase.Query(AABB{point, point}, {filter.categoryBits, filter.maskBits},
                            [&](std::int32_t proxyId)
@@ -320,6 +325,7 @@ void World::CollideMover(
         return;
     }
     const WorldState& world = State();
+    const InWalk walk(world); // the callback must not change what is walked
     const DistanceProxy moverProxy = MakeProxy(mover);
     const Transform identity{}; // the mover is in world coordinates
     world.broadPhase.Query(

@@ -24,6 +24,7 @@
 #include "meff/profile.h"
 #include "meff/settings.h"
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -39,6 +40,27 @@ struct ChainSlot
     std::int32_t body = kNullIndex;
     std::vector<ShapeId> segments;
     bool loop = false; ///< Chain::loop (World::IsChainLoop)
+};
+
+/// How many queries (World::OverlapAABB, CastRay, ...) and Draw calls are walking a world now:
+/// their callbacks are the user's code, which must not change what is being walked
+/// (RequireNotStepping). Atomic, since several threads may query one world at once. Not state:
+/// a copy (a snapshot) starts at 0, and an assignment (a restore) keeps the destination's count.
+class WalkCount
+{
+  public:
+    WalkCount() = default;
+    WalkCount(const WalkCount&) noexcept {}
+    WalkCount& operator=(const WalkCount&) noexcept { return *this; }
+    ~WalkCount() = default;
+
+    void Enter() const noexcept { m_count.fetch_add(1, std::memory_order_relaxed); }
+    void Leave() const noexcept { m_count.fetch_sub(1, std::memory_order_relaxed); }
+    /// On the thread whose callback asks, exact: its own walk entered before calling it.
+    [[nodiscard]] bool Any() const noexcept { return m_count.load(std::memory_order_relaxed) > 0; }
+
+  private:
+    mutable std::atomic<int> m_count{0};
 };
 
 struct WorldState
@@ -119,13 +141,17 @@ struct WorldState
     /// The user's callback running now ("the pre-solve callback", "the custom filter"), or
     /// null: the world must not be changed either, and a refusal names it.
     const char* callback = nullptr;
+    WalkCount walks; ///< queries and Draw calls walking the world now (their callbacks run)
 };
 
 /// Every call that changes the world (bodies, shapes, joints, settings, the callbacks and
 /// threads themselves, a snapshot's restore, Step) is refused while a step walks it: from the
 /// pre-solve callback or the custom filter, whose messages name it. A callback that replaced
 /// itself was destroyed while it ran. Throws InvalidArgument "CALL: called during World::Step
-/// (from CALLBACK); ...". Returns false after reporting it (core/report_error.h).
+/// (from CALLBACK); ...". So is every such call while a query or Draw walks the world (from
+/// their callbacks: a body destroyed there freed the tree nodes the walk was on): "CALL: called
+/// while a query or World::Draw walks the world (from its callback); ...". Returns false after
+/// reporting it (core/report_error.h).
 [[nodiscard]] bool RequireNotStepping(const WorldState& world, const char* call);
 
 /// Marks `world` as inside the user's callback `name` for its lifetime (WorldState::callback).
@@ -143,6 +169,19 @@ class InUserCallback
   private:
     WorldState& m_world;
     const char* m_outer;
+};
+
+/// Marks `world` as walked by a query or Draw for its lifetime (WorldState::walks).
+class InWalk
+{
+  public:
+    explicit InWalk(const WorldState& world) : m_walks(world.walks) { m_walks.Enter(); }
+    ~InWalk() { m_walks.Leave(); }
+    InWalk(const InWalk&) = delete;
+    InWalk& operator=(const InWalk&) = delete;
+
+  private:
+    const WalkCount& m_walks;
 };
 
 /// What a solver back end sees of the world (solvers/solver.h).
