@@ -294,6 +294,47 @@ TEST_CASE("A query's callback, or DebugDraw's methods, cannot change the world t
     MEFF_CHECK_NO_ERROR(world.Step(Real(1) / 60));
 }
 
+TEST_CASE("Only the worlds being walked refuse: a query inside another world's query callback",
+          "[callbacks][queries][lifecycle]")
+{
+    World outer = Pile(SolverKind::Colour);
+    World inner = Pile(SolverKind::Colour);
+    World other = Pile(SolverKind::Colour);
+    const BodyId outerBox = outer.GetBodies().back();
+    const BodyId innerBox = inner.GetBodies().back();
+    const AABB everything{{-1000, -1000}, {1000, 1000}};
+    std::string fromInnerToOuter, fromInnerToInner, fromOuterToOther;
+    bool once = false;
+    outer.OverlapAABB(
+        everything, {},
+        [&](ShapeId)
+        {
+            if (once)
+            {
+                return true;
+            }
+            once = true;
+            inner.OverlapAABB(everything, {},
+                              [&](ShapeId)
+                              {
+                                  // Both walks are open: the outer world is walked too.
+                                  fromInnerToOuter = meff::test::ErrorMessageOf(
+                                      [&] { outer.DestroyBody(outerBox); });
+                                  fromInnerToInner = meff::test::ErrorMessageOf(
+                                      [&] { inner.DestroyBody(innerBox); });
+                                  return false;
+                              });
+            // A world no walk is on may change.
+            fromOuterToOther = meff::test::ErrorMessageOf([&] { other.SetGravity({0, -5}); });
+            return true;
+        });
+    CHECK_THAT(fromInnerToOuter, Catch::Contains("walks the world"));
+    CHECK_THAT(fromInnerToInner, Catch::Contains("walks the world"));
+    CHECK(fromOuterToOther == "accepted");
+    MEFF_CHECK_NO_ERROR(outer.DestroyBody(outerBox));
+    MEFF_CHECK_NO_ERROR(inner.DestroyBody(innerBox));
+}
+
 #if MEFF_EXCEPTIONS
 TEST_CASE("A query left by an exception from its callback leaves the world changeable",
           "[callbacks][queries][lifecycle]")

@@ -402,8 +402,8 @@ class World
     // destroy or move anything, or step: the broad phase being walked would change under the
     // query, so such calls from a callback (or from DebugDraw's methods during Draw) are refused
     // (InvalidArgument "... called while a query or World::Draw walks the world ..."). Each walk of
-    // the tree keeps its own stack, so queries write nothing in the world but an atomic count of
-    // the walks: several threads may query one world at once while none changes it. Bad arguments
+    // the tree keeps its own stack, so queries write nothing in the world (each thread notes its
+    // own walks): several threads may query one world at once while none changes it. Bad arguments
     // (non-finite numbers, an inverted box, a degenerate shape) throw InvalidArgument naming the
     // argument. Sensor shapes are found like any other (as Box2D 2.4.1): filter them with
     // QueryFilter or the callback.

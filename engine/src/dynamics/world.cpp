@@ -307,6 +307,34 @@ namespace
 
 } // namespace
 
+namespace
+{
+/// This thread's innermost walk (InWalk), or null.
+thread_local const detail::InWalk* t_innermostWalk = nullptr;
+} // namespace
+
+detail::InWalk::InWalk(const WorldState& world) : m_world(world), m_outer(t_innermostWalk)
+{
+    t_innermostWalk = this;
+}
+
+detail::InWalk::~InWalk()
+{
+    t_innermostWalk = m_outer;
+}
+
+bool detail::InWalk::Walking(const WorldState& world)
+{
+    for (const InWalk* walk = t_innermostWalk; walk != nullptr; walk = walk->m_outer)
+    {
+        if (&walk->m_world == &world)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 bool detail::RequireNotStepping(const WorldState& world, const char* call)
 {
     if (world.stepping || world.callback != nullptr)
@@ -315,7 +343,7 @@ bool detail::RequireNotStepping(const WorldState& world, const char* call)
                                       (world.callback != nullptr ? world.callback : "a callback") +
                                       "); the callback must not change the world"));
     }
-    if (world.walks.Any())
+    if (InWalk::Walking(world))
     {
         return Refuse(InvalidArgument(std::string(call) +
                                       ": called while a query or World::Draw walks the world "

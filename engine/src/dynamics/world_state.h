@@ -24,7 +24,6 @@
 #include "meff/profile.h"
 #include "meff/settings.h"
 
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -40,27 +39,6 @@ struct ChainSlot
     std::int32_t body = kNullIndex;
     std::vector<ShapeId> segments;
     bool loop = false; ///< Chain::loop (World::IsChainLoop)
-};
-
-/// How many queries (World::OverlapAABB, CastRay, ...) and Draw calls are walking a world now:
-/// their callbacks are the user's code, which must not change what is being walked
-/// (RequireNotStepping). Atomic, since several threads may query one world at once. Not state:
-/// a copy (a snapshot) starts at 0, and an assignment (a restore) keeps the destination's count.
-class WalkCount
-{
-  public:
-    WalkCount() = default;
-    WalkCount(const WalkCount&) noexcept {}
-    WalkCount& operator=(const WalkCount&) noexcept { return *this; }
-    ~WalkCount() = default;
-
-    void Enter() const noexcept { m_count.fetch_add(1, std::memory_order_relaxed); }
-    void Leave() const noexcept { m_count.fetch_sub(1, std::memory_order_relaxed); }
-    /// On the thread whose callback asks, exact: its own walk entered before calling it.
-    [[nodiscard]] bool Any() const noexcept { return m_count.load(std::memory_order_relaxed) > 0; }
-
-  private:
-    mutable std::atomic<int> m_count{0};
 };
 
 struct WorldState
@@ -141,7 +119,6 @@ struct WorldState
     /// The user's callback running now ("the pre-solve callback", "the custom filter"), or
     /// null: the world must not be changed either, and a refusal names it.
     const char* callback = nullptr;
-    WalkCount walks; ///< queries and Draw calls walking the world now (their callbacks run)
 };
 
 /// Every call that changes the world (bodies, shapes, joints, settings, the callbacks and
@@ -171,17 +148,24 @@ class InUserCallback
     const char* m_outer;
 };
 
-/// Marks `world` as walked by a query or Draw for its lifetime (WorldState::walks).
+/// Marks `world` as walked by a query or Draw on this thread for the walk's lifetime: the walks
+/// a thread is inside form a chain (a query from another query's callback, perhaps of another
+/// world), innermost first. Kept per thread, not in the world, so that queries write nothing
+/// shared and several threads may query one world at once.
 class InWalk
 {
   public:
-    explicit InWalk(const WorldState& world) : m_walks(world.walks) { m_walks.Enter(); }
-    ~InWalk() { m_walks.Leave(); }
+    explicit InWalk(const WorldState& world);
+    ~InWalk();
     InWalk(const InWalk&) = delete;
     InWalk& operator=(const InWalk&) = delete;
 
+    /// Whether this thread is inside a walk of `world` (RequireNotStepping).
+    [[nodiscard]] static bool Walking(const WorldState& world);
+
   private:
-    const WalkCount& m_walks;
+    const WorldState& m_world;
+    const InWalk* m_outer;
 };
 
 /// What a solver back end sees of the world (solvers/solver.h).
