@@ -201,6 +201,7 @@ TEST_CASE("A query's callback, or DebugDraw's methods, cannot change the world t
     const BodyId ground = bodies.front();
     const BodyId box = bodies[bodies.size() / 2];
     const Vec2 boxCentre = world.GetPosition(box);
+    const JointId hinge = world.CreateJoint(world.MakeRevoluteJointDef(ground, box, boxCentre));
     const std::uint64_t before = world.GetStateHash();
 
     std::vector<std::string> refusals;
@@ -221,8 +222,12 @@ TEST_CASE("A query's callback, or DebugDraw's methods, cannot change the world t
         expectRefused([&] { world.SetTransform(box, {0, 100}, 0); });
         expectRefused([&] { world.Step(Real(1) / 60); });
         expectRefused([&] { world.RestoreSnapshot(world.SaveSnapshot()); });
+        expectRefused([&] { static_cast<void>(world.CreateShape(box, {}, Circle{{}, 1})); });
+        expectRefused(
+            [&] { static_cast<void>(world.CreateJoint(world.MakeWeldJointDef(ground, box, {}))); });
+        expectRefused([&] { world.DestroyJoint(hinge); });
     };
-    constexpr std::size_t kTries = 6; // the calls tryChanges makes
+    constexpr std::size_t kTries = 9; // the calls tryChanges makes
     const AABB everything{{-1000, -1000}, {1000, 1000}};
     const QueryFilter all{};
 
@@ -290,8 +295,77 @@ TEST_CASE("A query's callback, or DebugDraw's methods, cannot change the world t
     CHECK(world.GetStateHash() == before); // nothing changed
     CHECK(world.GetBodies() == bodies);
     // After the walk, the same calls are accepted again.
+    MEFF_CHECK_NO_ERROR(world.DestroyJoint(hinge));
     MEFF_CHECK_NO_ERROR(world.DestroyBody(box));
     MEFF_CHECK_NO_ERROR(world.Step(Real(1) / 60));
+}
+
+TEST_CASE("A query's callback may push what it finds: the same as pushing after the query",
+          "[callbacks][queries]")
+{
+    // Impulses, velocities and waking change no tree node, list or pool a walk reads: allowed
+    // from a callback, they give the world that collecting the ids and pushing after gives.
+    World during = Pile(SolverKind::Colour);
+    World after = Pile(SolverKind::Colour);
+    Hashes(during, 60);
+    Hashes(after, 60);
+    const AABB blast{{-2, 0}, {2, 4}};
+    const auto push = [](World& world, ShapeId shape)
+    {
+        const BodyId body = world.GetBody(shape);
+        world.ApplyLinearImpulse(body, {0, 2}, world.GetWorldCenter(body), true);
+        world.SetAngularVelocity(body, 1);
+    };
+    during.OverlapAABB(blast, {},
+                       [&](ShapeId shape)
+                       {
+                           push(during, shape);
+                           return true;
+                       });
+    std::vector<ShapeId> found;
+    after.OverlapAABB(blast, {},
+                      [&](ShapeId shape)
+                      {
+                          found.push_back(shape);
+                          return true;
+                      });
+    REQUIRE(found.size() > 3);
+    for (const ShapeId shape : found)
+    {
+        push(after, shape);
+    }
+    CHECK(during.GetStateHash() == after.GetStateHash());
+    CHECK(Hashes(during, 60) == Hashes(after, 60));
+}
+
+TEST_CASE("A query from the pre-solve callback: its callback is inside the step",
+          "[callbacks][queries][lifecycle]")
+{
+    World world = Pile(SolverKind::Colour);
+    const BodyId box = world.GetBodies().back();
+    std::string refused;
+    world.SetPreSolveCallback(
+        [&](const PreSolveContact&)
+        {
+            if (refused.empty())
+            {
+                world.OverlapAABB({{-1000, -1000}, {1000, 1000}}, {},
+                                  [&](ShapeId)
+                                  {
+                                      refused = meff::test::ErrorMessageOf(
+                                          [&] { world.DestroyBody(box); });
+                                      return false;
+                                  });
+            }
+            return true;
+        });
+    for (int i = 0; i < 120 && refused.empty(); ++i)
+    {
+        world.Step(Real(1) / 60);
+    }
+    CHECK_THAT(refused, Catch::Contains("called during World::Step (from the pre-solve callback)"));
+    world.SetPreSolveCallback({});
+    MEFF_CHECK_NO_ERROR(world.DestroyBody(box));
 }
 
 TEST_CASE("Only the worlds being walked refuse: a query inside another world's query callback",

@@ -299,7 +299,8 @@ class World
     // Stepping
     /// Advances the world by dt seconds (> 0 and finite). Throws SimulationError if a body's
     /// state becomes non-finite; the world is then frozen but readable. Called during a step
-    /// (from the pre-solve callback), it throws InvalidArgument instead of recursing; an
+    /// (from the pre-solve callback) or from a query's callback, it throws InvalidArgument
+    /// instead of recursing; an
     /// exception that leaves a step half done (thrown by the callback) also freezes the world.
     /// RestoreSnapshot thaws a frozen world.
     void Step(Real dt);
@@ -384,7 +385,8 @@ class World
     /// Contacts that stopped touching in the last step. Destroying a touching shape or body
     /// between steps adds its end events at once, and they stay, first in the list, through
     /// the next step: a game reading events once per step sees them. Their ids may be
-    /// invalid by then (compare them, do not look them up). Sensor end events do the same.
+    /// invalid by then (compare them, do not look them up). Sensor end events do the same: so
+    /// a destroy invalidates the spans these return; copy them before destroying what they name.
     std::span<const ContactEvent> GetContactEndEvents() const;
     /// Shapes that started / stopped overlapping a sensor, in the order Box2D 2.4.1 calls
     /// BeginContact/EndContact for sensor fixtures. Sensor contacts never appear among the
@@ -398,10 +400,12 @@ class World
     int GetContactCount() const; ///< contacts whose fat boxes overlap (touching or not)
 
     // Queries (world_query.cpp). They go through the broad phase, so a query only visits the
-    // part of the tree near what it asks about, not every shape. A callback must not create,
-    // destroy or move anything, or step: the broad phase being walked would change under the
-    // query, so such calls from a callback (or from DebugDraw's methods during Draw) are refused
-    // (InvalidArgument "... called while a query or World::Draw walks the world ..."). Each walk of
+    // part of the tree near what it asks about, not every shape. A callback may push what it
+    // finds (impulses, velocities, waking) but not create, destroy or move anything, restore a
+    // snapshot or step: the broad phase being walked would change under the query, so such calls
+    // from a callback (or from DebugDraw's methods during Draw) are refused (InvalidArgument
+    // "... called while a query or World::Draw walks the world ..."); collect the ids and make
+    // them after the query. Each walk of
     // the tree keeps its own stack, so queries write nothing in the world (each thread notes its
     // own walks): several threads may query one world at once while none changes it. Bad arguments
     // (non-finite numbers, an inverted box, a degenerate shape) throw InvalidArgument naming the
@@ -500,7 +504,7 @@ class World
     /// Describes the world to `draw` (shapes, joints and, from the last step's reports,
     /// contacts and impulses), as `flags` asks. Draws nothing itself. Drawing contacts builds
     /// the reports if they are not built yet (see GetContactReports): not thread-safe. DebugDraw's
-    /// methods must not change the world: such calls are refused, as from a query's callback.
+    /// methods are refused what a query's callback is (above).
     void Draw(DebugDraw& draw, const DrawFlags& flags = {}) const;
 
   private:

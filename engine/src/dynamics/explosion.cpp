@@ -58,7 +58,8 @@ void World::Explode(const ExplosionDef& def)
     if (!RequireFinite(def.position, "World::Explode: ExplosionDef::position") ||
         !RequireNonNegative(def.radius, "World::Explode: ExplosionDef::radius") ||
         !RequireNonNegative(def.falloff, "World::Explode: ExplosionDef::falloff") ||
-        !RequireFinite(def.impulsePerLength, "World::Explode: ExplosionDef::impulsePerLength"))
+        !RequireFinite(def.impulsePerLength, "World::Explode: ExplosionDef::impulsePerLength") ||
+        !RequireNotStepping(State(), "World::Explode"))
     {
         return;
     }
@@ -112,12 +113,6 @@ void World::Explode(const ExplosionDef& def)
             def.impulsePerLength * ProjectedWidth(proxy, {-direction.y, direction.x}) * scale;
         const BodyId id{shape.body, body.generation};
         pushes.push_back({id, magnitude * Mul(body.xf.q, direction), Mul(body.xf, closest)});
-    }
-    // ApplyLinearImpulse's refusal from a callback, checked once: an explosion there pushes
-    // nothing and is reported once.
-    if (!pushes.empty() && !RequireNotStepping(world, "World::ApplyLinearImpulse"))
-    {
-        return;
     }
     for (const Push& push : pushes)
     {

@@ -102,7 +102,7 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
         return;
     }
     detail::WorldState& world = State();
-    if (!detail::RequireNotStepping(world, "World::RestoreSnapshot"))
+    if (!detail::RequireNotWalked(world, "World::RestoreSnapshot"))
     {
         return;
     }

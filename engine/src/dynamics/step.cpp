@@ -104,7 +104,7 @@ void World::Step(Real dt)
         ReportError(InvalidArgument("World::Step: dt " + refusal->reason));
         return;
     }
-    if (!RequireNotStepping(world, "World::Step"))
+    if (!RequireNotWalked(world, "World::Step"))
     {
         return;
     }

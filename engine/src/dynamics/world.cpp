@@ -290,9 +290,39 @@ World::World(const WorldDef& def)
     SetSolverSettings(m_state->solver);
 }
 
-World::~World() = default;
+namespace
+{
+
+/// A World cannot be destroyed or assigned while a step, a callback or a walk of this thread is
+/// inside it (they would go on reading freed memory), and neither can refuse: the message, then
+/// std::abort() (core/report_error.h).
+void RequireNotInUse(const std::unique_ptr<detail::WorldState>& state, const char* call) noexcept
+{
+    if (state != nullptr &&
+        (state->stepping || state->callback != nullptr || detail::InWalk::Walking(*state)))
+    {
+        detail::CallErrorHandler((std::string(call) +
+                                  ": called while World::Step, a callback, a query or World::Draw "
+                                  "runs inside this world; the world it reads cannot go away")
+                                     .c_str());
+        detail::AbortAfterError();
+    }
+}
+
+} // namespace
+
+World::~World()
+{
+    RequireNotInUse(m_state, "World::~World");
+}
 World::World(World&&) noexcept = default;
-World& World::operator=(World&&) noexcept = default;
+World& World::operator=(World&& other) noexcept
+{
+    RequireNotInUse(m_state, "World::operator=");
+    RequireNotInUse(other.m_state, "World::operator=");
+    m_state = std::move(other.m_state);
+    return *this;
+}
 
 namespace
 {
@@ -343,12 +373,21 @@ bool detail::RequireNotStepping(const WorldState& world, const char* call)
                                       (world.callback != nullptr ? world.callback : "a callback") +
                                       "); the callback must not change the world"));
     }
+    return true;
+}
+
+bool detail::RequireNotWalked(const WorldState& world, const char* call)
+{
+    if (!RequireNotStepping(world, call))
+    {
+        return false;
+    }
     if (InWalk::Walking(world))
     {
         return Refuse(InvalidArgument(std::string(call) +
                                       ": called while a query or World::Draw walks the world "
-                                      "(from its callback); the callback must not change the "
-                                      "world"));
+                                      "(from its callback); the callback must not add, remove or "
+                                      "move what the walk reads"));
     }
     return true;
 }
@@ -377,7 +416,7 @@ const WorldState& World::State() const
 BodyId World::CreateBody(const BodyDef& def)
 {
     WorldState& world = State();
-    if (!RequireNotStepping(world, "World::CreateBody") ||
+    if (!RequireNotWalked(world, "World::CreateBody") ||
         !RequireFinite(def.position, "BodyDef::position") ||
         !RequireFinite(def.angle, "BodyDef::angle") ||
         !RequireFinite(def.linearVelocity, "BodyDef::linearVelocity") ||
@@ -424,7 +463,7 @@ BodyId World::CreateBody(const BodyDef& def)
 void World::DestroyBody(BodyId id)
 {
     WorldState& world = State();
-    if (!RequireNotStepping(world, "World::DestroyBody"))
+    if (!RequireNotWalked(world, "World::DestroyBody"))
     {
         return;
     }
@@ -551,7 +590,7 @@ Vec2 World::GetLocalPoint(BodyId id, Vec2 worldPoint) const
 void World::SetTransform(BodyId id, Vec2 position, Real angle)
 {
     WorldState& world = State();
-    if (!RequireNotStepping(world, "World::SetTransform"))
+    if (!RequireNotWalked(world, "World::SetTransform"))
     {
         return;
     }
@@ -868,7 +907,7 @@ namespace
 
 ShapeId AddShape(WorldState& world, BodyId bodyId, const ShapeDef& def, Shape prototype)
 {
-    if (!RequireNotStepping(world, "World::CreateShape"))
+    if (!RequireNotWalked(world, "World::CreateShape"))
     {
         return {};
     }
@@ -1012,7 +1051,7 @@ ShapeId World::CreateShape(BodyId body, const ShapeDef& def, const ChainSegment&
 void World::DestroyShape(ShapeId id)
 {
     WorldState& world = State();
-    if (!RequireNotStepping(world, "World::DestroyShape"))
+    if (!RequireNotWalked(world, "World::DestroyShape"))
     {
         return;
     }
@@ -1199,7 +1238,7 @@ JointId AddJoint(WorldState& world, Joint joint)
 /// Both ids live, and the pair allowed for this joint type (meff/validity.h).
 [[nodiscard]] bool RequireTwoBodies(WorldState& world, JointType type, BodyId a, BodyId b)
 {
-    if (!RequireNotStepping(world, "World::CreateJoint"))
+    if (!RequireNotWalked(world, "World::CreateJoint"))
     {
         return false;
     }
@@ -1317,7 +1356,7 @@ JointId World::CreateJoint(const PulleyJointDef& def)
 JointId World::CreateJoint(const GearJointDef& def)
 {
     WorldState& world = State();
-    if (!RequireNotStepping(world, "World::CreateJoint"))
+    if (!RequireNotWalked(world, "World::CreateJoint"))
     {
         return {};
     }
@@ -1483,7 +1522,7 @@ std::vector<JointId> GearsOf(const WorldState& world, JointId id)
 void World::DestroyJoint(JointId id)
 {
     WorldState& world = State();
-    if (!RequireNotStepping(world, "World::DestroyJoint"))
+    if (!RequireNotWalked(world, "World::DestroyJoint"))
     {
         return;
     }
@@ -1987,8 +2026,7 @@ const SolverSettings& World::GetSolverSettings() const
 }
 void World::SetSolverSettings(const SolverSettings& settings)
 {
-    if (!RequireNotStepping(State(), "World::SetSolverSettings") ||
-        !RequireSolverSettings(settings))
+    if (!RequireNotWalked(State(), "World::SetSolverSettings") || !RequireSolverSettings(settings))
     {
         return;
     }
@@ -2023,7 +2061,7 @@ bool World::GetContinuous() const
 }
 void World::SetContinuous(bool continuous)
 {
-    if (!RequireNotStepping(State(), "World::SetContinuous"))
+    if (!RequireNotWalked(State(), "World::SetContinuous"))
     {
         return;
     }

@@ -152,7 +152,7 @@ ChainId World::CreateChain(BodyId body, const ShapeDef& def, const Chain& chain)
 void World::DestroyChain(ChainId id)
 {
     WorldState& world = State();
-    if (!RequireNotStepping(world, "World::DestroyChain"))
+    if (!RequireNotWalked(world, "World::DestroyChain"))
     {
         return;
     }

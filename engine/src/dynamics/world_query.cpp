@@ -9,8 +9,8 @@
 // and shape casts, which Box2D 2.4.1 lacks, follow Box2D v3's b2World_OverlapPoint and
 // b2World_CastShape: the broad phase finds candidates, an exact test per shape decides.
 //
-// Every query only reads the world; while one walks it, calls that would change it (from the
-// query's callback) are refused (RequireNotStepping).
+// Every query only reads the world; while one walks it, calls that would add, remove or move
+// what it reads (from the query's callback) are refused (RequireNotWalked).
 #include "collision/broad_phase.h"
 #include "core/report_error.h"
 #include "dynamics/world_state.h"

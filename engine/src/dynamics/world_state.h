@@ -125,11 +125,17 @@ struct WorldState
 /// threads themselves, a snapshot's restore, Step) is refused while a step walks it: from the
 /// pre-solve callback or the custom filter, whose messages name it. A callback that replaced
 /// itself was destroyed while it ran. Throws InvalidArgument "CALL: called during World::Step
-/// (from CALLBACK); ...". So is every such call while a query or Draw walks the world (from
-/// their callbacks: a body destroyed there freed the tree nodes the walk was on): "CALL: called
-/// while a query or World::Draw walks the world (from its callback); ...". Returns false after
-/// reporting it (core/report_error.h).
+/// (from CALLBACK); ...". Returns false after reporting it (core/report_error.h).
 [[nodiscard]] bool RequireNotStepping(const WorldState& world, const char* call);
+
+/// RequireNotStepping, and also refused while a query or Draw on this thread walks the world
+/// (InWalk): the calls that add, remove or move what a walk reads (bodies, shapes, joints,
+/// tree nodes, the broad phase's rules), a snapshot's restore and Step. A body destroyed from
+/// an overlap callback had freed the tree nodes the query was on. Impulses, velocities and the
+/// other settings stay allowed there (pushing what an overlap query finds is a common use).
+/// Throws InvalidArgument "CALL: called while a query or World::Draw walks the
+/// world (from its callback); ...".
+[[nodiscard]] bool RequireNotWalked(const WorldState& world, const char* call);
 
 /// Marks `world` as inside the user's callback `name` for its lifetime (WorldState::callback).
 class InUserCallback
@@ -160,7 +166,7 @@ class InWalk
     InWalk(const InWalk&) = delete;
     InWalk& operator=(const InWalk&) = delete;
 
-    /// Whether this thread is inside a walk of `world` (RequireNotStepping).
+    /// Whether this thread is inside a walk of `world` (RequireNotWalked).
     [[nodiscard]] static bool Walking(const WorldState& world);
 
   private:
