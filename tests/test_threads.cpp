@@ -6,6 +6,7 @@
 // one thread, every step.
 #include <catch2/catch.hpp>
 
+#include "error_checks.h"
 #include "tasks/parallel_ranges.h"
 #include "world_fixtures.h"
 #include "meff/scene.h"
@@ -19,6 +20,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -758,4 +760,74 @@ TEST_CASE("The task system is configuration: kept across RestoreSnapshot, outsid
         built.world.Step(dt);
     }
     CHECK(built.world.GetStateHash() == afterFive);
+}
+
+TEST_CASE("Several threads may query one world at once: each finds what one thread finds, and "
+          "each thread's refusals are its own",
+          "[threads][queries]")
+{
+    // Queries write nothing in the world (a thread notes its own walks), so threads querying
+    // together find the same shapes in the same order as one thread alone; under
+    // ThreadSanitizer this is the test that no walk writes shared state.
+    World world = test::MakePile(60, 6, Real(0.9), Real(0.2));
+    for (int i = 0; i < 120; ++i)
+    {
+        world.Step(Real(1) / 60);
+    }
+    const BodyId box = world.GetBodies().back();
+    const auto queryAll = [&world](std::vector<std::int32_t>& found)
+    {
+        for (int q = 0; q < 50; ++q)
+        {
+            const Real x = Real(-1) + Real(0.1) * Real(q);
+            world.OverlapAABB({{x, 0}, {x + 2, 30}}, {},
+                              [&](ShapeId shape)
+                              {
+                                  found.push_back(shape.index);
+                                  return true;
+                              });
+            world.CastRay({x, 40}, {0, -45}, {},
+                          [&](ShapeId shape, Vec2, Vec2, Real)
+                          {
+                              found.push_back(shape.index);
+                              return Real(1);
+                          });
+        }
+    };
+    std::vector<std::int32_t> expected;
+    queryAll(expected);
+    REQUIRE(expected.size() > 500);
+
+    constexpr int kThreads = 4;
+    std::vector<std::vector<std::int32_t>> found(kThreads);
+    std::vector<int> refusals(kThreads, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+    {
+        threads.emplace_back(
+            [&, t]
+            {
+                queryAll(found[std::size_t(t)]);
+                // A refusal on this thread, from inside its own walk, leaves the others' walks
+                // alone (each thread's chain of walks is its own).
+                world.OverlapAABB({{-100, -100}, {100, 100}}, {},
+                                  [&](ShapeId)
+                                  {
+                                      const std::string message = meff::test::ErrorMessageOf(
+                                          [&] { world.DestroyBody(box); });
+                                      refusals[std::size_t(t)] +=
+                                          message.find("walks the world") != std::string::npos;
+                                      return false;
+                                  });
+            });
+    }
+    for (std::thread& thread : threads)
+    {
+        thread.join();
+    }
+    for (int t = 0; t < kThreads; ++t)
+    {
+        CHECK(found[std::size_t(t)] == expected);
+        CHECK(refusals[std::size_t(t)] == 1);
+    }
 }
