@@ -25,8 +25,9 @@ class TaskSystem
   public:
     virtual ~TaskSystem() = default;
 
-    /// How many threads take part in ParallelFor, the calling thread included (≥ 1): worker
-    /// indices run from 0 to ThreadCount() − 1. It must not change while a world uses it.
+    /// How many threads take part in ParallelFor, the calling thread included (1 to 1024):
+    /// worker indices run from 0 to ThreadCount() − 1. It must not change while a world uses it
+    /// (World::Step refuses to step when it has).
     virtual int ThreadCount() const = 0;
 
     /// Runs task(begin, end, worker) over ranges that together cover [0, count) exactly once,
@@ -34,7 +35,10 @@ class TaskSystem
     /// `worker` is the index, in [0, ThreadCount()), of the thread running that range: no two
     /// ranges run at the same time with one index, so per-worker scratch needs no lock. Ranges
     /// may run in any order and on any thread, the calling thread included. The task does not
-    /// throw. Called from one thread at a time (the thread stepping the world).
+    /// throw. Called from one thread at a time (the thread stepping the world). A world checks
+    /// the ranges it is given (World::SetTaskSystem): a range outside [0, count), a worker index
+    /// outside [0, ThreadCount()) or in use by a range running at the same moment, or an index
+    /// run other than once, stops the step with an Error.
     virtual void ParallelFor(int count, int minRange,
                              FunctionRef<void(int begin, int end, int worker)> task) = 0;
 

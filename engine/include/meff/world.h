@@ -361,7 +361,10 @@ class World
     /// 2.4.1, whatever task system it is lent (UsesThreads says which).
     /// Configuration, not state: RestoreSnapshot keeps the current one, and it is outside
     /// snapshots and the state hash. Throws InvalidArgument during a step or when its
-    /// ThreadCount() is below 1.
+    /// ThreadCount() is outside 1 to 1024; Step throws it when the count has changed since.
+    /// Every range its ParallelFor runs is checked against task_system.h's contract: one that
+    /// breaks it stops the step with an Error naming TaskSystem::ParallelFor, and the world is
+    /// frozen as after any failed step.
     void SetTaskSystem(TaskSystem* tasks);
     /// The task system the world steps on; null: the calling thread.
     TaskSystem* GetTaskSystem() const;

@@ -89,6 +89,7 @@ WorldSnapshot World::SaveSnapshot() const
     // snapshot must not keep alive whatever they captured.
     copy->preSolve = nullptr;
     copy->customFilter = nullptr;
+    copy->checkedTasks = nullptr;
     copy->tasks = nullptr;
     snapshot.m_state = std::move(copy);
     return snapshot;
@@ -109,10 +110,12 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
     // Configuration, not state: the current callbacks and task system stay.
     PreSolveCallback preSolve = std::move(world.preSolve);
     CustomFilterCallback customFilter = std::move(world.customFilter);
+    std::shared_ptr<detail::CheckedTasks> checkedTasks = std::move(world.checkedTasks);
     TaskSystem* const tasks = world.tasks;
     world = *snapshot.m_state;
     world.preSolve = std::move(preSolve);
     world.customFilter = std::move(customFilter);
+    world.checkedTasks = std::move(checkedTasks);
     world.tasks = tasks;
     world.stepping = false; // a snapshot saved from the callback was saved mid-step
     world.callback = nullptr;

@@ -110,10 +110,23 @@ void World::Step(Real dt)
     }
     if (world.failed)
     {
-        ReportError(Error("World::Step: an earlier step failed (a non-finite state, or an "
-                          "exception from the pre-solve callback); the world is frozen (read it, "
-                          "then rebuild it or restore a snapshot)"));
+        ReportError(Error("World::Step: an earlier step failed (a non-finite state, an "
+                          "exception from a callback, or a task system that broke its contract); "
+                          "the world is frozen (read it, then rebuild it or restore a snapshot)"));
         return;
+    }
+    if (world.checkedTasks != nullptr)
+    {
+        // Per-worker scratch is sized by the count the world was given (CheckedTasks).
+        const int given = world.checkedTasks->ThreadCount();
+        if (const int now = world.checkedTasks->User().ThreadCount(); now != given)
+        {
+            ReportError(InvalidArgument("World::Step: the task system's ThreadCount() is " +
+                                        std::to_string(now) + ", was " + std::to_string(given) +
+                                        " at World::SetTaskSystem; it must not change "
+                                        "while a world uses it (give it to the world again)"));
+            return;
+        }
     }
     const SteppingGuard stepping(world);
 

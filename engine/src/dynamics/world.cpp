@@ -2130,18 +2130,28 @@ void World::SetTaskSystem(TaskSystem* tasks)
     {
         return;
     }
-    if (tasks != nullptr && tasks->ThreadCount() < 1)
+    if (tasks == nullptr)
     {
-        ReportError(InvalidArgument("World::SetTaskSystem: ThreadCount() is " +
-                                    std::to_string(tasks->ThreadCount()) + ", must be at least 1"));
+        world.checkedTasks = nullptr;
+        world.tasks = nullptr;
         return;
     }
-    world.tasks = tasks;
+    // The engine sizes per-worker scratch by it: a count of 2^31 - 1 asked for 16 GB.
+    if (const int threads = tasks->ThreadCount(); threads < 1 || threads > kMaxTaskThreads)
+    {
+        ReportError(InvalidArgument("World::SetTaskSystem: ThreadCount() is " +
+                                    std::to_string(threads) + ", must be from 1 to " +
+                                    std::to_string(kMaxTaskThreads)));
+        return;
+    }
+    world.checkedTasks = std::make_shared<CheckedTasks>(*tasks);
+    world.tasks = world.checkedTasks.get();
 }
 
 TaskSystem* World::GetTaskSystem() const
 {
-    return State().tasks;
+    const WorldState& world = State();
+    return world.checkedTasks == nullptr ? nullptr : &world.checkedTasks->User();
 }
 
 bool World::UsesThreads() const

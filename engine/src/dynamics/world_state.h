@@ -19,6 +19,7 @@
 #include "solvers/shared/contact_solver.h"
 #include "solvers/shared/island.h"
 #include "solvers/solver.h"
+#include "tasks/checked_tasks.h"
 #include "meff/callbacks.h"
 #include "meff/events.h"
 #include "meff/profile.h"
@@ -26,6 +27,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace meff::detail
@@ -102,8 +104,11 @@ struct WorldState
     std::size_t stepSensorEndEventCount = 0;
     PreSolveCallback preSolve;         ///< the user's, or empty; kept across RestoreSnapshot
     CustomFilterCallback customFilter; ///< the user's, or empty; kept across RestoreSnapshot
-    /// The user's threads (World::SetTaskSystem), not owned, or null; configuration, not state:
-    /// kept across RestoreSnapshot, outside snapshots and the state hash.
+    /// The user's threads (World::SetTaskSystem) behind the checks of their contract, or null;
+    /// configuration, not state: kept across RestoreSnapshot, outside snapshots and the state
+    /// hash. Shared so that WorldState stays copyable (a snapshot leaves it out).
+    std::shared_ptr<CheckedTasks> checkedTasks;
+    /// checkedTasks, as the stages take it.
     TaskSystem* tasks = nullptr;
     /// The threads the shared stages may use: the user's where the back end's collision policy
     /// allows them (not Box2D's, which steps on one thread, bit for bit Box2D 2.4.1).

@@ -11,6 +11,7 @@
 // condition variable. A job allocates nothing: the task is a FunctionRef on the caller's
 // stack, which outlives the job because the caller waits for its last piece.
 #include "core/report_error.h"
+#include "tasks/checked_tasks.h"
 #include "meff/error.h"
 #include "meff/task_system.h"
 
@@ -213,9 +214,10 @@ class ThreadPool final : public TaskSystem
 
 std::unique_ptr<TaskSystem> MakeThreadPool(int threads)
 {
-    if (threads < 1 || threads > 1024)
+    if (threads < 1 || threads > detail::kMaxTaskThreads)
     {
-        detail::ReportError(InvalidArgument("MakeThreadPool: threads must be from 1 to 1024, got " +
+        detail::ReportError(InvalidArgument("MakeThreadPool: threads must be from 1 to " +
+                                            std::to_string(detail::kMaxTaskThreads) + ", got " +
                                             std::to_string(threads)));
         return nullptr;
     }

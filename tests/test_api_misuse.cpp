@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 the meff authors
+// Misuse of the library's API (docs/hostile-input.md, "The library"): a task system that breaks
+// its contract, ... is refused with an error that names it, never a crash or a silently wrong
+// simulation, and the world stays usable afterwards.
+#include <catch2/catch.hpp>
+
+#include "error_checks.h"
+#include "meff/task_system.h"
+#include "meff/world.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+using namespace meff;
+
+namespace
+{
+
+constexpr Real kDt = Real(1) / 60;
+
+/// A ground and `columns` × `rows` boxes and circles of 1 m resting on it and on each other:
+/// hundreds of contacts from the first step, enough for the colour and soft-step back ends to
+/// hand the narrow phase, the contact lanes and the bodies to the task system in several ranges.
+World RestingGrid(SolverKind kind, int columns = 30, int rows = 20)
+{
+    World world(WorldDef{.solver = {.kind = kind}});
+    const BodyId ground = world.CreateBody({});
+    world.CreateShape(ground, ShapeDef{}, MakeOffsetBox(100, 1, {0, -1}, 0));
+    for (int i = 0; i < columns; ++i)
+    {
+        for (int j = 0; j < rows; ++j)
+        {
+            const BodyId body = world.CreateBody(
+                {.type = BodyType::Dynamic,
+                 .position = {Real(i) * Real(1.01) - Real(columns) / 2, Real(0.5) + Real(j)}});
+            if ((i + j) % 3 == 0)
+            {
+                world.CreateShape(body, ShapeDef{}, Circle{{0, 0}, Real(0.5)});
+            }
+            else
+            {
+                world.CreateShape(body, ShapeDef{}, MakeBox(Real(0.5), Real(0.5)));
+            }
+        }
+    }
+    return world;
+}
+
+void StepTimes(World& world, int steps)
+{
+    for (int i = 0; i < steps; ++i)
+    {
+        world.Step(kDt);
+    }
+}
+
+/// How a job system stand-in breaks task_system.h's contract.
+enum class Breach
+{
+    None,
+    RunsARangeTwice,
+    SkipsARange,
+    WorkerIndexTooLarge,
+    NegativeWorkerIndex,
+    RangeBeyondCount,
+};
+
+/// A job system on the calling thread that cuts each job into ranges of minRange, names worker
+/// r mod 3 for range r, and breaks the contract as told once it has run `honestJobs` jobs.
+class BreachingTasks final : public TaskSystem
+{
+  public:
+    explicit BreachingTasks(Breach breach, int honestJobs = 0)
+        : m_breach(breach), m_honestJobs(honestJobs)
+    {
+    }
+    int ThreadCount() const override { return threadCount; }
+    void ParallelFor(int count, int minRange,
+                     FunctionRef<void(int begin, int end, int worker)> task) override
+    {
+        const Breach breach = m_honestJobs-- > 0 ? Breach::None : m_breach;
+        for (int begin = 0, r = 0; begin < count; begin += minRange, ++r)
+        {
+            const int end = std::min(count, begin + minRange);
+            const int worker = breach == Breach::WorkerIndexTooLarge   ? 3
+                               : breach == Breach::NegativeWorkerIndex ? -1
+                                                                       : r % 3;
+            if (breach == Breach::SkipsARange && r == 1)
+            {
+                continue;
+            }
+            task(begin, breach == Breach::RangeBeyondCount && end == count ? end + 1 : end, worker);
+            if (breach == Breach::RunsARangeTwice && r == 0)
+            {
+                task(begin, end, worker);
+            }
+        }
+    }
+
+    int threadCount = 3; ///< what ThreadCount() answers
+
+  private:
+    Breach m_breach;
+    int m_honestJobs;
+};
+
+} // namespace
+
+TEST_CASE("A task system's thread count outside 1 to 1024, or changed while a world uses it, is "
+          "refused",
+          "[misuse][threads]")
+{
+    World world = RestingGrid(SolverKind::Colour, 4, 4);
+    BreachingTasks tasks(Breach::None);
+    // A count of 2^31 - 1 was accepted, and the first step asked for 16 GB of per-worker
+    // scratch (AddressSanitizer: out of memory).
+    for (const int count : {0, -1, 1025, std::numeric_limits<int>::max()})
+    {
+        tasks.threadCount = count;
+        MEFF_CHECK_ERROR_WITH(world.SetTaskSystem(&tasks),
+                              Catch::Equals("World::SetTaskSystem: ThreadCount() is " +
+                                            std::to_string(count) + ", must be from 1 to 1024"));
+        CHECK(world.GetTaskSystem() == nullptr);
+    }
+    tasks.threadCount = 3;
+    world.SetTaskSystem(&tasks);
+    CHECK(world.GetTaskSystem() == &tasks);
+    world.Step(kDt);
+    // Dropping to 0 after SetTaskSystem divided by zero in the user's own pool and left the
+    // engine's per-worker scratch sized for 3; now the step is refused before it begins.
+    const std::uint64_t hash = world.GetStateHash();
+    tasks.threadCount = 0;
+    MEFF_CHECK_ERROR_WITH(world.Step(kDt),
+                          Catch::StartsWith("World::Step: the task system's ThreadCount() is 0, "
+                                            "was 3 at World::SetTaskSystem"));
+    CHECK(world.GetStepCount() == 1);
+    CHECK(world.GetStateHash() == hash);
+    tasks.threadCount = 2;
+    world.SetTaskSystem(&tasks); // given again: its new count is the world's
+    world.Step(kDt);
+    CHECK(world.GetStepCount() == 2);
+}
+
+#if MEFF_EXCEPTIONS
+// A breach is found when the job returns, halfway through a step: it is thrown (meff::Error),
+// which leaves the step half done and the world frozen. (Without exceptions the error handler
+// gets the message and the program ends: the step can be neither finished nor undone.)
+TEST_CASE("A task system that runs a range twice, skips one, or gives a worker index or a range "
+          "outside its bounds stops the step with an error, and the world can be restored",
+          "[misuse][threads]")
+{
+    // Before: running a range twice or skipping one went unsaid (the state differed from the
+    // one-thread world's), a skipped range then read an unwritten index (libstdc++'s assertion,
+    // vector<Body>), and a worker index of 3 or -1 or a range one past the count wrote outside
+    // the engine's per-worker scratch and pair batches.
+    const struct
+    {
+        Breach breach;
+        const char* problem;
+    } cases[] = {
+        {Breach::RunsARangeTwice, "indices, some of them not exactly once"},
+        {Breach::SkipsARange, "indices, some of them not exactly once"},
+        {Breach::WorkerIndexTooLarge, "gave a worker index outside [0, ThreadCount()) (range "},
+        {Breach::NegativeWorkerIndex, "gave a worker index outside [0, ThreadCount()) (range "},
+        {Breach::RangeBeyondCount, "gave a range outside the job's indices (range ["},
+    };
+    for (const SolverKind kind : {SolverKind::Colour, SolverKind::SoftStep})
+    {
+        World reference = RestingGrid(kind);
+        StepTimes(reference, 3);
+        const WorldSnapshot snapshot = reference.SaveSnapshot();
+        StepTimes(reference, 3);
+        for (const auto& c : cases)
+        {
+            CAPTURE(SolverKindName(kind), c.problem);
+            World world = RestingGrid(kind);
+            StepTimes(world, 3);
+            BreachingTasks tasks(c.breach, 5);
+            world.SetTaskSystem(&tasks);
+            std::string message;
+            try
+            {
+                StepTimes(world, 3);
+            }
+            catch (const Error& error)
+            {
+                message = error.what();
+            }
+            CHECK_THAT(message, Catch::StartsWith("TaskSystem::ParallelFor: a job of ") &&
+                                    Catch::Contains(c.problem) &&
+                                    Catch::EndsWith("the step is left half done and the world "
+                                                    "is frozen (restore a snapshot)"));
+            CHECK_THROWS_WITH(world.Step(kDt), Catch::Contains("an earlier step failed"));
+            world.SetTaskSystem(nullptr);
+            world.RestoreSnapshot(snapshot);
+            StepTimes(world, 3);
+            CHECK(world.GetStateHash() == reference.GetStateHash());
+        }
+    }
+}
+#endif
