@@ -6,13 +6,16 @@
 #include <catch2/catch.hpp>
 
 #include "error_checks.h"
+#include "test_random.h"
 #include "meff/task_system.h"
 #include "meff/world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 using namespace meff;
 
@@ -202,3 +205,35 @@ TEST_CASE("A task system that runs a range twice, skips one, or gives a worker i
     }
 }
 #endif
+
+TEST_CASE("A hand-built polygon whose centroid lies outside it is refused; MakePolygon's pass",
+          "[misuse][geometry]")
+{
+    // A one-sided segment (a chain's) and a rounded polygon's manifolds tell which side the
+    // polygon is on by its centroid: this box with its centroid moved out below fell through
+    // the chain it rested on, unsaid.
+    Polygon box = MakeBox(Real(0.5), Real(0.5));
+    box.centroid = {0, -2};
+    World world;
+    const BodyId body = world.CreateBody({.type = BodyType::Dynamic, .position = {0, 1}});
+    MEFF_CHECK_ERROR_WITH(
+        world.CreateShape(body, ShapeDef{}, box),
+        Catch::Equals("Polygon::centroid: must be inside the polygon (its area centroid (build "
+                      "polygons with MakePolygon or MakeBox)), got (0, -2), outside edge 0"));
+    CHECK(world.GetShapes(body).empty());
+
+    // Thin and far-off polygons from MakePolygon keep passing: their centroids, rounded to the
+    // coordinates' precision, may land on an edge, which the check allows for.
+    test::Random random(7);
+    for (int i = 0; i < 2000; ++i)
+    {
+        const Real size = Real(std::pow(10.0, random.Uniform(-1, 4)));
+        const Real thin = size * Real(std::pow(10.0, random.Uniform(-5, 0)));
+        const Vec2 at{random.Uniform(-1e6f, 1e6f), random.Uniform(-1e6f, 1e6f)};
+        const Vec2 points[] = {at, at + Vec2{size, random.Uniform(-1, 1) * size},
+                               at + Vec2{random.Uniform(0, 1) * size, thin}};
+        const std::string message = test::ErrorMessageOf([&] { MakePolygon(points); });
+        CAPTURE(size, thin, at.x, at.y);
+        CHECK_THAT(message, !Catch::Contains("centroid"));
+    }
+}

@@ -103,8 +103,8 @@ std::optional<Refusal> CheckPositive(Real value, const char* field);
 std::optional<Refusal> CheckCircle(const Circle& circle);
 /// 3 to 8 finite vertices, counter-clockwise and strictly convex, every edge longer than
 /// kEpsilon (m) and not so long that its squared length overflows, each normal the unit
-/// outward normal of its edge, a finite centroid, and a normal, finite area. What MakePolygon
-/// and MakeBox return always passes.
+/// outward normal of its edge, a normal, finite area, and a finite centroid inside it. What
+/// MakePolygon and MakeBox return always passes.
 std::optional<Refusal> CheckPolygon(const Polygon& polygon);
 /// A finite radius >= 0 (above Tolerances::polygonSkin it rounds the polygon).
 std::optional<Refusal> CheckPolygonRadius(const Polygon& polygon);

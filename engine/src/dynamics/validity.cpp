@@ -251,7 +251,27 @@ std::optional<Refusal> CheckPolygon(const Polygon& polygon)
     {
         return Refuse("Polygon::vertices", OutOfRange(area, exactArea, "area", "m²"));
     }
-    return CheckFinite(polygon.centroid, "Polygon::centroid");
+    if (std::optional<Refusal> refusal = CheckFinite(polygon.centroid, "Polygon::centroid"))
+    {
+        return refusal;
+    }
+    // The manifolds of one-sided segments and of rounded polygons tell which side the polygon
+    // is on by its centroid: one outside it turned their contacts off, or round, unsaid. Inside
+    // up to a few roundings of the coordinates (a sliver's own centroid rounds to its edge).
+    const Vec2 c = polygon.centroid;
+    for (int i = 0; i < polygon.count; ++i)
+    {
+        const Vec2 v = polygon.vertices[i];
+        const Real scale = std::abs(c.x) + std::abs(c.y) + std::abs(v.x) + std::abs(v.y);
+        if (!(Dot(polygon.normals[i], c - v) <= 8 * kEpsilon * scale))
+        {
+            return Refuse("Polygon::centroid", "must be inside the polygon (its area centroid" +
+                                                   std::string(kBuildPolygons) + "), got " +
+                                                   NumberText(c) + ", outside edge " +
+                                                   std::to_string(i));
+        }
+    }
+    return std::nullopt;
 }
 
 std::optional<Refusal> CheckPolygonRadius(const Polygon& polygon)
