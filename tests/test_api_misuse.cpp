@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 the meff authors
-// Misuse of the library's API (docs/hostile-input.md, "The library"): a task system that breaks
-// its contract, ... is refused with an error that names it, never a crash or a silently wrong
-// simulation, and the world stays usable afterwards.
+// Misuse of the library's API (docs/hostile-input.md, "Task systems", "Shapes"): a task system
+// that breaks its contract, a hand-built polygon whose centroid is outside it, an exception
+// thrown by the user's code in the middle of a step: each is refused or reported with an error
+// that names it, never a crash or a silently wrong simulation, and the world stays usable.
 #include <catch2/catch.hpp>
 
 #include "error_checks.h"
@@ -13,7 +14,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -84,6 +87,10 @@ class BreachingTasks final : public TaskSystem
     void ParallelFor(int count, int minRange,
                      FunctionRef<void(int begin, int end, int worker)> task) override
     {
+        if (beforeJob)
+        {
+            beforeJob();
+        }
         const Breach breach = m_honestJobs-- > 0 ? Breach::None : m_breach;
         for (int begin = 0, r = 0; begin < count; begin += minRange, ++r)
         {
@@ -104,6 +111,8 @@ class BreachingTasks final : public TaskSystem
     }
 
     int threadCount = 3; ///< what ThreadCount() answers
+    /// Called before each job (it may throw, as a game's job system might).
+    std::function<bool()> beforeJob;
 
   private:
     Breach m_breach;
@@ -148,6 +157,78 @@ TEST_CASE("A task system's thread count outside 1 to 1024, or changed while a wo
 }
 
 #if MEFF_EXCEPTIONS
+TEST_CASE("An exception from the pre-solve callback, the custom filter or the task system leaves "
+          "the world frozen, readable and restorable",
+          "[misuse][callbacks]")
+{
+    for (const SolverKind kind : {SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep})
+    {
+        World reference = RestingGrid(kind);
+        StepTimes(reference, 2);
+        const WorldSnapshot snapshot = reference.SaveSnapshot();
+        StepTimes(reference, 5);
+        for (int thrower = 0; thrower < 3; ++thrower)
+        {
+            if (thrower == 2 && kind == SolverKind::Box2D)
+            {
+                continue; // it steps on the calling thread whatever task system it is lent
+            }
+            CAPTURE(SolverKindName(kind), thrower);
+            World world = RestingGrid(kind);
+            StepTimes(world, 2);
+            int calls = 0;
+            const auto maybeThrow = [&calls]
+            {
+                if (++calls == 3)
+                {
+                    throw std::runtime_error("the game's code");
+                }
+                return true;
+            };
+            BreachingTasks tasks(Breach::None);
+            if (thrower == 0)
+            {
+                world.SetPreSolveCallback([&](const PreSolveContact&) { return maybeThrow(); });
+            }
+            else if (thrower == 1)
+            {
+                // Asked about new pairs: the grid is moved sideways onto fresh neighbours.
+                world.SetCustomFilterCallback([&](ShapeId, ShapeId) { return maybeThrow(); });
+                for (const BodyId body : world.GetBodies())
+                {
+                    world.SetLinearVelocity(body, {5, 0});
+                }
+            }
+            else
+            {
+                world.SetTaskSystem(&tasks);
+                world.SetPreSolveCallback([&](const PreSolveContact&) { return true; });
+                tasks.beforeJob = maybeThrow;
+            }
+            CHECK_THROWS_WITH(StepTimes(world, 30), "the game's code");
+            world.SetPreSolveCallback({});
+            world.SetCustomFilterCallback({});
+            world.SetTaskSystem(nullptr);
+            CHECK_THROWS_WITH(world.Step(kDt), Catch::Contains("an earlier step failed"));
+            // Readable: queries, reports, a snapshot.
+            int found = 0;
+            world.OverlapAABB({{-100, -100}, {100, 100}}, {},
+                              [&found](ShapeId)
+                              {
+                                  ++found;
+                                  return true;
+                              });
+            CHECK(found == 601);
+            CHECK(world.GetContactReports().size() < 10000);
+            const WorldSnapshot frozen = world.SaveSnapshot();
+            CHECK(!frozen.IsEmpty());
+            world.RestoreSnapshot(snapshot);
+            StepTimes(world, 5);
+            CHECK(world.GetStateHash() == reference.GetStateHash());
+        }
+    }
+}
+
 // A breach is found when the job returns, halfway through a step: it is thrown (meff::Error),
 // which leaves the step half done and the world frozen. (Without exceptions the error handler
 // gets the message and the program ends: the step can be neither finished nor undone.)
