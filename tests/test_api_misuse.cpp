@@ -318,3 +318,41 @@ TEST_CASE("A hand-built polygon whose centroid lies outside it is refused; MakeP
         CHECK_THAT(message, !Catch::Contains("centroid"));
     }
 }
+
+TEST_CASE("SaveSnapshot from the pre-solve callback is refused: half a step is no state to step "
+          "on from",
+          "[misuse][snapshot]")
+{
+    // A snapshot saved in continuous collision's sub-step kept the last step's end-event count
+    // over this step's shorter list; the step after RestoreSnapshot erased past the list's end
+    // (AddressSanitizer: negative-size-param).
+    for (const SolverKind kind : {SolverKind::Box2D, SolverKind::Colour, SolverKind::SoftStep})
+    {
+        CAPTURE(SolverKindName(kind));
+        World world = RestingGrid(kind, 4, 4);
+        const BodyId bullet = world.CreateBody({.type = BodyType::Dynamic,
+                                                .position = {0, 30},
+                                                .linearVelocity = {0, -300},
+                                                .bullet = true});
+        world.CreateShape(bullet, ShapeDef{}, Circle{{0, 0}, Real(0.1)});
+        std::vector<std::string> refusals;
+        world.SetPreSolveCallback(
+            [&](const PreSolveContact&)
+            {
+                refusals.push_back(test::ErrorMessageOf([&] { world.SaveSnapshot(); }));
+                return true;
+            });
+        StepTimes(world, 20);
+        REQUIRE(!refusals.empty());
+        CHECK_THAT(refusals.front(),
+                   Catch::Equals("World::SaveSnapshot: called during World::Step (from the "
+                                 "pre-solve callback); a half-done step cannot be stepped on "
+                                 "from: save the snapshot before or after Step"));
+        world.SetPreSolveCallback({});
+        const WorldSnapshot snapshot = world.SaveSnapshot(); // between steps: as ever
+        const std::uint64_t hash = world.GetStateHash();
+        StepTimes(world, 10);
+        world.RestoreSnapshot(snapshot);
+        CHECK(world.GetStateHash() == hash);
+    }
+}

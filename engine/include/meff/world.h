@@ -339,8 +339,8 @@ class World
     /// It must not modify the world — no Create/Destroy/Set/Apply/Step calls — and should only
     /// read meff's data (the contact it is given, const getters of this world), and must not
     /// throw (the step would be left half done, and the world frozen). Step, the Create and
-    /// Destroy calls, SetTransform and RestoreSnapshot throw InvalidArgument when called from
-    /// it. It is configuration, not state: RestoreSnapshot keeps the current callback.
+    /// Destroy calls, SetTransform, SaveSnapshot and RestoreSnapshot throw InvalidArgument when
+    /// called from it. It is configuration, not state: RestoreSnapshot keeps the current callback.
     void SetPreSolveCallback(PreSolveCallback callback);
     /// Installs (or, with an empty function, removes) the custom collision filter. It is
     /// called INSIDE World::Step where Box2D 2.4.1 calls its contact filter: when a pair of
@@ -495,7 +495,8 @@ class World
     /// show two runs identical.
     std::uint64_t GetStateHash() const;
     /// Copies the whole world state. Stepping on from RestoreSnapshot(s) is bit-identical to
-    /// stepping on from the moment s was saved.
+    /// stepping on from the moment s was saved. Throws InvalidArgument during a step (from the
+    /// pre-solve callback or the custom filter): half a step is no state to step on from.
     WorldSnapshot SaveSnapshot() const;
     /// Returns the world to a snapshot of itself. Ids saved with the snapshot are valid again;
     /// ids created later are not. Throws InvalidArgument for an empty snapshot.

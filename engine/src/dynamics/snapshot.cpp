@@ -10,6 +10,7 @@
 #include "meff/world.h"
 
 #include <cstring>
+#include <string>
 #include <utility>
 
 namespace meff
@@ -83,8 +84,21 @@ std::uint64_t World::GetStateHash() const
 
 WorldSnapshot World::SaveSnapshot() const
 {
+    const detail::WorldState& world = State();
+    if (world.stepping)
+    {
+        // Half a step is no state to step on from: one saved from the pre-solve callback kept
+        // the last step's end-event count over this step's shorter list, and the step after
+        // its restore erased past the list's end (AddressSanitizer: negative-size-param).
+        detail::ReportError(InvalidArgument(
+            std::string("World::SaveSnapshot: called during World::Step (from ") +
+            (world.callback != nullptr ? world.callback : "a callback") +
+            "); a half-done step cannot be stepped on from: save the snapshot before or after "
+            "Step"));
+        return {};
+    }
     WorldSnapshot snapshot;
-    auto copy = std::make_shared<detail::WorldState>(State());
+    auto copy = std::make_shared<detail::WorldState>(world);
     // The callbacks are configuration, not state (RestoreSnapshot keeps the current ones): a
     // snapshot must not keep alive whatever they captured.
     copy->preSolve = nullptr;
@@ -117,7 +131,7 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
     world.customFilter = std::move(customFilter);
     world.checkedTasks = std::move(checkedTasks);
     world.tasks = tasks;
-    world.stepping = false; // a snapshot saved from the callback was saved mid-step
+    world.stepping = false; // as the snapshot's (SaveSnapshot refuses during a step)
     world.callback = nullptr;
 }
 
