@@ -340,4 +340,11 @@ TEST_CASE("The mover queries refuse a bad capsule and translation", "[mover][err
                        world.MoveCharacter(flat, {1, 0}, kDt);
                    }),
                Catch::StartsWith("World::MoveCharacter: mover: Capsule::radius"));
+    // Moved by 1e30 m/s for a step, the capsule's ends round together: named as this call's,
+    // not as a bad argument of CollideMover, which MoveCharacter calls.
+    CHECK_THAT(message(
+                   [&] {
+                       world.MoveCharacter(CharacterAt({0, 0}), {0, Real(1e30)}, kDt);
+                   }),
+               Catch::StartsWith("World::MoveCharacter: mover moved by velocity · dt: Capsule::"));
 }

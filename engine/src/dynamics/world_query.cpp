@@ -392,6 +392,13 @@ CharacterMove World::MoveCharacter(const Capsule& mover, Vec2 velocity, Real dt,
         return {};
     }
     const Capsule target{mover.center1 + step, mover.center2 + step, mover.radius};
+    // Checked here, under this call's name: moved far enough, the capsule's ends round together
+    // or leave the float range, which CollideMover would report as its own argument's fault.
+    if (!RequireValidCastShape(target, State().tolerances,
+                               "World::MoveCharacter: mover moved by velocity · dt"))
+    {
+        return {};
+    }
     std::array<CollisionPlane, kMaxMoverPlanes> planes;
     int count = 0;
     CollideMover(target, filter,
