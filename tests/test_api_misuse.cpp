@@ -317,6 +317,28 @@ TEST_CASE("A hand-built polygon whose centroid lies outside it is refused; MakeP
         CAPTURE(size, thin, at.x, at.y);
         CHECK_THAT(message, !Catch::Contains("centroid"));
     }
+    // A sliver along the diagonal, centred on the origin, its middle vertices near the origin:
+    // the centroid's rounding grows with the polygon's extent (ComputeCentroid works from the
+    // first vertex), not with the small coordinates of the edge it is tested against.
+    int slivers = 0;
+    for (const Real length : {Real(1), Real(10), Real(1000)})
+    {
+        for (int k = 2; k <= 256; k *= 2)
+        {
+            const Real w = Real(k) * kEpsilon * length;
+            for (const Vec2 d :
+                 {Vec2{0, 0}, Vec2{Real(1e-3), Real(3e-3)}, Vec2{Real(-0.37), Real(0.11)}})
+            {
+                const Vec2 points[] = {Vec2{-length, -length} + d, Vec2{w, -w} + d,
+                                       Vec2{length, Real(1.01) * length} + d, Vec2{-w, w} + d};
+                const std::string message = test::ErrorMessageOf([&] { MakePolygon(points); });
+                CAPTURE(length, w, d.x, d.y);
+                CHECK_THAT(message, !Catch::Contains("centroid"));
+                slivers += message == "accepted" ? 1 : 0;
+            }
+        }
+    }
+    CHECK(slivers == 3 * 8 * 3); // every sliver is a polygon: the loop above is not vacuous
 }
 
 TEST_CASE("SaveSnapshot from the pre-solve callback is refused: half a step is no state to step "

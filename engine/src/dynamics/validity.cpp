@@ -257,13 +257,18 @@ std::optional<Refusal> CheckPolygon(const Polygon& polygon)
     }
     // The manifolds of one-sided segments and of rounded polygons tell which side the polygon
     // is on by its centroid: one outside it turned their contacts off, or round, unsaid. Inside
-    // up to a few roundings of the coordinates (a sliver's own centroid rounds to its edge).
+    // up to a few roundings of the coordinates (a sliver's own centroid rounds to its edge):
+    // of the largest, since the centroid is summed from the first vertex across the polygon.
     const Vec2 c = polygon.centroid;
+    Real reach = std::abs(c.x) + std::abs(c.y);
     for (int i = 0; i < polygon.count; ++i)
     {
-        const Vec2 v = polygon.vertices[i];
-        const Real scale = std::abs(c.x) + std::abs(c.y) + std::abs(v.x) + std::abs(v.y);
-        if (!(Dot(polygon.normals[i], c - v) <= 8 * kEpsilon * scale))
+        reach = Max(reach, std::abs(polygon.vertices[i].x) + std::abs(polygon.vertices[i].y));
+    }
+    const Real tolerance = 16 * kEpsilon * reach;
+    for (int i = 0; i < polygon.count; ++i)
+    {
+        if (!(Dot(polygon.normals[i], c - polygon.vertices[i]) <= tolerance))
         {
             return Refuse("Polygon::centroid", "must be inside the polygon (its area centroid" +
                                                    std::string(kBuildPolygons) + "), got " +

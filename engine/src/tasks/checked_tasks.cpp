@@ -27,6 +27,22 @@ void CheckedTasks::Refuse(const char* what, int begin, int end, int worker)
                 std::to_string(end) + "), worker " + std::to_string(worker) + ")";
 }
 
+namespace
+{
+/// Clears a worker index's busy flag when the range that took it ends, normally or not.
+class ReleaseOnExit
+{
+  public:
+    explicit ReleaseOnExit(std::atomic<bool>& busy) : m_busy(busy) {}
+    ~ReleaseOnExit() { m_busy.store(false, std::memory_order_release); }
+    ReleaseOnExit(const ReleaseOnExit&) = delete;
+    ReleaseOnExit& operator=(const ReleaseOnExit&) = delete;
+
+  private:
+    std::atomic<bool>& m_busy;
+};
+} // namespace
+
 void CheckedTasks::ParallelFor(int count, int minRange,
                                FunctionRef<void(int begin, int end, int worker)> task)
 {
@@ -52,8 +68,12 @@ void CheckedTasks::ParallelFor(int count, int minRange,
                    end, worker);
             return;
         }
-        task(begin, end, worker);
-        busy.store(false, std::memory_order_release);
+        {
+            // Freed however the task leaves (an allocation's bad_alloc in a task fails the step;
+            // a later step on this world must not find the index still taken).
+            const ReleaseOnExit release(busy);
+            task(begin, end, worker);
+        }
         const auto b = static_cast<std::uint64_t>(begin);
         const auto e = static_cast<std::uint64_t>(end);
         m_ran.fetch_add(end - begin, std::memory_order_relaxed);
