@@ -300,8 +300,8 @@ class World
     /// Advances the world by dt seconds (> 0 and finite). Throws SimulationError if a body's
     /// state becomes non-finite; the world is then frozen but readable. Called during a step
     /// (from the pre-solve callback) or from a query's callback, it throws InvalidArgument
-    /// instead of recursing; an
-    /// exception that leaves a step half done (thrown by the callback) also freezes the world.
+    /// instead of recursing; an exception that leaves a step half done (thrown by the callback)
+    /// also freezes the world.
     /// RestoreSnapshot thaws a frozen world.
     void Step(Real dt);
     /// How many steps the world has taken.
@@ -408,12 +408,11 @@ class World
     // snapshot or step: the broad phase being walked would change under the query, so such calls
     // from a callback (or from DebugDraw's methods during Draw) are refused (InvalidArgument
     // "... called while a query or World::Draw walks the world ..."); collect the ids and make
-    // them after the query. Each walk of
-    // the tree keeps its own stack, so queries write nothing in the world (each thread notes its
-    // own walks): several threads may query one world at once while none changes it. Bad arguments
-    // (non-finite numbers, an inverted box, a degenerate shape) throw InvalidArgument naming the
-    // argument. Sensor shapes are found like any other (as Box2D 2.4.1): filter them with
-    // QueryFilter or the callback.
+    // them after the query. Each walk of the tree keeps its own stack, so queries write nothing
+    // in the world (each thread notes its own walks): several threads may query one world at
+    // once while none changes it. Bad arguments (non-finite numbers, an inverted box, a
+    // degenerate shape) throw InvalidArgument naming the argument. Sensor shapes are found like any
+    // other (as Box2D 2.4.1): filter them with QueryFilter or the callback.
 
     /// The closest shape the ray origin → origin + translation hits, as Box2D 2.4.1's
     /// b2World::RayCast with a callback returning every fraction (the same shape, point,

@@ -232,7 +232,7 @@ void MakeContacts(WorldState& world, int batches)
         }
     }
     const WorldState& read = world;
-    ForEachIndex(world.tasks, static_cast<int>(made.size()), kMinContactsPerInitTask,
+    ForEachIndex(world.Tasks(), static_cast<int>(made.size()), kMinContactsPerInitTask,
                  [&world, &read, &made](int i)
                  {
                      const NewContact& contact = made[static_cast<std::size_t>(i)];
@@ -641,7 +641,7 @@ void Collide(WorldState& world)
     scratch.collideWork.resize(world.contacts.size());
     const Real recycleDistance = RecycleDistance(world);
     ForRangesBeside(
-        world.tasks, static_cast<int>(world.contacts.size()), kMinContactsPerTask,
+        world.Tasks(), static_cast<int>(world.contacts.size()), kMinContactsPerTask,
         [&world, &scratch] { ListContacts(world, scratch.collideOrder); },
         [&world, &scratch, recycleDistance](int begin, int end, int)
         {

@@ -94,13 +94,13 @@ void EqualizeCapacity(std::vector<PairBatch>& lists, int batches, PairBatchCapac
 /// again in the serial pass (a proxy buffered twice, moved then touched, finds its pairs twice).
 void FindNewContactsInBatches(WorldState& world)
 {
-    world.broadPhase.RebuildTree(world.tasks);
+    world.broadPhase.RebuildTree(world.Tasks());
     const int moves = world.broadPhase.GetMoveCount();
     const int batches = (moves + kMovesPerBatch - 1) / kMovesPerBatch;
     std::vector<PairBatch>& lists = world.scratch.pairBatches;
     ReserveBatches(lists, batches, world.scratch.pairBatchCapacity);
     const WorldState& read = world;
-    ForEachIndex(world.tasks, batches, 1,
+    ForEachIndex(world.Tasks(), batches, 1,
                  [&read, &lists, moves](int b)
                  { FindBatchPairs(read, b, moves, lists[static_cast<std::size_t>(b)]); });
     EqualizeCapacity(lists, batches, world.scratch.pairBatchCapacity);

@@ -10,7 +10,6 @@
 #include "meff/world.h"
 
 #include <cstring>
-#include <string>
 #include <utility>
 
 namespace meff
@@ -85,16 +84,13 @@ std::uint64_t World::GetStateHash() const
 WorldSnapshot World::SaveSnapshot() const
 {
     const detail::WorldState& world = State();
-    if (world.stepping)
+    // Half a step is no state to step on from: one saved from the pre-solve callback kept the
+    // last step's end-event count over this step's shorter list, and the step after its restore
+    // erased past the list's end (AddressSanitizer: negative-size-param).
+    if (!detail::RequireNotStepping(world, "World::SaveSnapshot",
+                                    "a half-done step cannot be stepped on from: save the "
+                                    "snapshot before or after Step"))
     {
-        // Half a step is no state to step on from: one saved from the pre-solve callback kept
-        // the last step's end-event count over this step's shorter list, and the step after
-        // its restore erased past the list's end (AddressSanitizer: negative-size-param).
-        detail::ReportError(InvalidArgument(
-            std::string("World::SaveSnapshot: called during World::Step (from ") +
-            (world.callback != nullptr ? world.callback : "a callback") +
-            "); a half-done step cannot be stepped on from: save the snapshot before or after "
-            "Step"));
         return {};
     }
     WorldSnapshot snapshot;
@@ -104,7 +100,6 @@ WorldSnapshot World::SaveSnapshot() const
     copy->preSolve = nullptr;
     copy->customFilter = nullptr;
     copy->checkedTasks = nullptr;
-    copy->tasks = nullptr;
     snapshot.m_state = std::move(copy);
     return snapshot;
 }
@@ -125,12 +120,10 @@ void World::RestoreSnapshot(const WorldSnapshot& snapshot)
     PreSolveCallback preSolve = std::move(world.preSolve);
     CustomFilterCallback customFilter = std::move(world.customFilter);
     std::shared_ptr<detail::CheckedTasks> checkedTasks = std::move(world.checkedTasks);
-    TaskSystem* const tasks = world.tasks;
     world = *snapshot.m_state;
     world.preSolve = std::move(preSolve);
     world.customFilter = std::move(customFilter);
     world.checkedTasks = std::move(checkedTasks);
-    world.tasks = tasks;
     world.stepping = false; // as the snapshot's (SaveSnapshot refuses during a step)
     world.callback = nullptr;
 }

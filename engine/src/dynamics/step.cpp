@@ -278,7 +278,7 @@ void SynchronizeShapesOnThreads(WorldState& world)
     scratch.newBoxes.resize(scratch.movedBodies.size());
     scratch.shapeNewBox.resize(world.shapes.size());
     const bool swept = SweepsBoxes(world);
-    ForEachIndex(world.tasks, static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
+    ForEachIndex(world.Tasks(), static_cast<int>(scratch.movedBodies.size()), kMinBodiesPerSyncTask,
                  [&world, &scratch, swept](int i)
                  {
                      const Body& body = world.bodies[scratch.movedBodies[std::size_t(i)]];

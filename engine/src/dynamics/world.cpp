@@ -298,8 +298,7 @@ namespace
 /// std::abort() (core/report_error.h).
 void RequireNotInUse(const std::unique_ptr<detail::WorldState>& state, const char* call) noexcept
 {
-    if (state != nullptr &&
-        (state->stepping || state->callback != nullptr || detail::InWalk::Walking(*state)))
+    if (state != nullptr && (detail::InStep(*state) || detail::InWalk::Walking(*state)))
     {
         detail::CallErrorHandler((std::string(call) +
                                   ": called while World::Step, a callback, a query or World::Draw "
@@ -365,13 +364,13 @@ bool detail::InWalk::Walking(const WorldState& world)
     return false;
 }
 
-bool detail::RequireNotStepping(const WorldState& world, const char* call)
+bool detail::RequireNotStepping(const WorldState& world, const char* call, const char* why)
 {
-    if (world.stepping || world.callback != nullptr)
+    if (InStep(world))
     {
         return Refuse(InvalidArgument(std::string(call) + ": called during World::Step (from " +
                                       (world.callback != nullptr ? world.callback : "a callback") +
-                                      "); the callback must not change the world"));
+                                      "); " + why));
     }
     return true;
 }
@@ -2133,7 +2132,6 @@ void World::SetTaskSystem(TaskSystem* tasks)
     if (tasks == nullptr)
     {
         world.checkedTasks = nullptr;
-        world.tasks = nullptr;
         return;
     }
     // The engine sizes per-worker scratch by it: a count of 2^31 - 1 asked for 16 GB.
@@ -2145,7 +2143,6 @@ void World::SetTaskSystem(TaskSystem* tasks)
         return;
     }
     world.checkedTasks = std::make_shared<CheckedTasks>(*tasks);
-    world.tasks = world.checkedTasks.get();
 }
 
 TaskSystem* World::GetTaskSystem() const

@@ -108,11 +108,11 @@ struct WorldState
     /// configuration, not state: kept across RestoreSnapshot, outside snapshots and the state
     /// hash. Shared so that WorldState stays copyable (a snapshot leaves it out).
     std::shared_ptr<CheckedTasks> checkedTasks;
-    /// checkedTasks, as the stages take it.
-    TaskSystem* tasks = nullptr;
+    /// checkedTasks, as the stages take it (null: the calling thread).
+    TaskSystem* Tasks() const { return checkedTasks.get(); }
     /// The threads the shared stages may use: the user's where the back end's collision policy
     /// allows them (not Box2D's, which steps on one thread, bit for bit Box2D 2.4.1).
-    TaskSystem* StageTasks() const { return collision.threadedStages ? tasks : nullptr; }
+    TaskSystem* StageTasks() const { return collision.threadedStages ? Tasks() : nullptr; }
 
     Real invDt0 = 0; ///< 1/dt of the previous step, for warm-start scaling
     std::uint64_t stepCount = 0;
@@ -126,12 +126,20 @@ struct WorldState
     const char* callback = nullptr;
 };
 
+/// Inside World::Step, or inside one of the user's callbacks it calls.
+inline bool InStep(const WorldState& world)
+{
+    return world.stepping || world.callback != nullptr;
+}
+
 /// Every call that changes the world (bodies, shapes, joints, settings, the callbacks and
 /// threads themselves, a snapshot's restore, Step) is refused while a step walks it: from the
 /// pre-solve callback or the custom filter, whose messages name it. A callback that replaced
 /// itself was destroyed while it ran. Throws InvalidArgument "CALL: called during World::Step
 /// (from CALLBACK); ...". Returns false after reporting it (core/report_error.h).
-[[nodiscard]] bool RequireNotStepping(const WorldState& world, const char* call);
+/// `why` ends the message; SaveSnapshot, which changes nothing, says its own.
+[[nodiscard]] bool RequireNotStepping(const WorldState& world, const char* call,
+                                      const char* why = "the callback must not change the world");
 
 /// RequireNotStepping, and also refused while a query or Draw on this thread walks the world
 /// (InWalk): the calls that add, remove or move what a walk reads (bodies, shapes, joints,
@@ -184,7 +192,7 @@ inline SolverWorld SolverView(WorldState& world, SolvedContactSink& solvedContac
 {
     return SolverWorld{world.bodies.Slots(), world.contacts,   world.joints.Slots(), world.bodyList,
                        world.gravity,        world.allowSleep, world.stepCount,      solvedContacts,
-                       world.tasks,          &world.failed};
+                       world.Tasks(),        &world.failed};
 }
 
 /// Wakes body `bodyIndex` (see WakeBody(Body&)): the helper for any world change — a joint
